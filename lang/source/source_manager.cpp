@@ -1,0 +1,108 @@
+#include "lang/source/source_manager.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace sled::lang {
+namespace {
+
+// Counts characters, not bytes: UTF-8 continuation bytes do not start a character.
+std::uint32_t CountCharacters(std::string_view text) {
+  std::uint32_t count = 0;
+  for (unsigned char c : text) {
+    if ((c & 0xC0u) != 0x80u) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+SourceBuffer::SourceBuffer(std::string path, std::string text)
+    : path_(std::move(path)), text_(std::move(text)) {
+  line_starts_.push_back(0);
+  for (std::uint32_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+}
+
+LineColumn SourceBuffer::Locate(std::uint32_t offset) const {
+  offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+  auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
+  const auto line_index = static_cast<std::uint32_t>(it - line_starts_.begin()) - 1;
+  const std::uint32_t start = line_starts_[line_index];
+  return {line_index + 1,
+          CountCharacters(std::string_view(text_).substr(start, offset - start)) + 1};
+}
+
+std::string_view SourceBuffer::Line(std::uint32_t line) const {
+  if (line == 0 || line > line_starts_.size()) return {};
+  const std::uint32_t start = line_starts_[line - 1];
+  std::uint32_t end = line < line_starts_.size() ? line_starts_[line] - 1
+                                                 : static_cast<std::uint32_t>(text_.size());
+  if (end > start && text_[end - 1] == '\r') --end;
+  return std::string_view(text_).substr(start, end - start);
+}
+
+std::uint32_t SourceBuffer::OffsetOf(std::uint32_t line, std::uint32_t column) const {
+  if (line == 0) return 0;
+  if (line > line_starts_.size()) return static_cast<std::uint32_t>(text_.size());
+  const std::uint32_t start = line_starts_[line - 1];
+  const std::string_view rest = Line(line);
+  std::uint32_t offset = 0;
+  std::uint32_t characters = 1;
+  while (offset < rest.size() && characters < column) {
+    ++offset;
+    while (offset < rest.size() && (static_cast<unsigned char>(rest[offset]) & 0xC0u) == 0x80u) {
+      ++offset;
+    }
+    ++characters;
+  }
+  return start + offset;
+}
+
+SourceManager::SourceManager() = default;
+
+FileId SourceManager::Add(std::string path, std::string text) {
+  buffers_.push_back(std::make_unique<SourceBuffer>(std::move(path), std::move(text)));
+  return FileId{static_cast<std::uint32_t>(buffers_.size())};
+}
+
+std::optional<FileId> SourceManager::Load(const std::string& path) {
+  auto text = ReadFile(path);
+  if (!text) return std::nullopt;
+  return Add(path, std::move(*text));
+}
+
+std::optional<FileId> SourceManager::Find(std::string_view path) const {
+  for (std::size_t i = 0; i < buffers_.size(); ++i) {
+    if (buffers_[i]->path() == path) return FileId{static_cast<std::uint32_t>(i + 1)};
+  }
+  return std::nullopt;
+}
+
+const SourceBuffer& SourceManager::buffer(FileId id) const {
+  if (id.value == 0 || id.value > buffers_.size()) {
+    throw std::logic_error("lang::SourceManager: no buffer with id " + std::to_string(id.value));
+  }
+  return *buffers_[id.value - 1];
+}
+
+std::string_view SourceManager::Text(const SourceRange& range) const {
+  if (!range.valid()) return {};
+  const std::string_view text = buffer(range.file).text();
+  if (range.begin > text.size()) return {};
+  return text.substr(range.begin, range.end - range.begin);
+}
+
+std::optional<std::string> ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream contents;
+  contents << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return contents.str();
+}
+
+}  // namespace sled::lang

@@ -1,0 +1,747 @@
+#include "lang/syntax/parser.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "lang/syntax/grammar.h"
+#include "lang/syntax/syntax_tree.h"
+
+namespace sled::lang {
+namespace {
+
+namespace pegtl = tao::pegtl;
+namespace g = grammar;
+using syntax::Node;
+using syntax::NodeType;
+
+// Which grammar rules become syntax-tree nodes.
+template <typename Rule>
+inline constexpr NodeType kNodeOf = NodeType::kNone;
+// clang-format off
+template <> inline constexpr NodeType kNodeOf<g::header> = NodeType::kHeader;
+template <> inline constexpr NodeType kNodeOf<g::row> = NodeType::kRow;
+template <> inline constexpr NodeType kNodeOf<g::keyword_name> = NodeType::kKeyword;
+template <> inline constexpr NodeType kNodeOf<g::target> = NodeType::kTarget;
+template <> inline constexpr NodeType kNodeOf<g::word_clause> = NodeType::kWordClause;
+template <> inline constexpr NodeType kNodeOf<g::colon_clause> = NodeType::kColonClause;
+template <> inline constexpr NodeType kNodeOf<g::clause_word> = NodeType::kClauseWord;
+template <> inline constexpr NodeType kNodeOf<g::statement_value> = NodeType::kStatementValue;
+template <> inline constexpr NodeType kNodeOf<g::block> = NodeType::kBlock;
+template <> inline constexpr NodeType kNodeOf<g::arrow> = NodeType::kArrow;
+template <> inline constexpr NodeType kNodeOf<g::sum> = NodeType::kSum;
+template <> inline constexpr NodeType kNodeOf<g::product> = NodeType::kProduct;
+template <> inline constexpr NodeType kNodeOf<g::power> = NodeType::kPower;
+template <> inline constexpr NodeType kNodeOf<g::negate> = NodeType::kNegate;
+template <> inline constexpr NodeType kNodeOf<g::op_power> = NodeType::kOperator;
+template <> inline constexpr NodeType kNodeOf<g::op_times> = NodeType::kOperator;
+template <> inline constexpr NodeType kNodeOf<g::op_divide> = NodeType::kOperator;
+template <> inline constexpr NodeType kNodeOf<g::op_plus> = NodeType::kOperator;
+template <> inline constexpr NodeType kNodeOf<g::op_minus> = NodeType::kOperator;
+template <> inline constexpr NodeType kNodeOf<g::quantity> = NodeType::kQuantity;
+template <> inline constexpr NodeType kNodeOf<g::number> = NodeType::kNumber;
+template <> inline constexpr NodeType kNodeOf<g::unit> = NodeType::kUnit;
+template <> inline constexpr NodeType kNodeOf<g::unit_symbol> = NodeType::kUnitSymbol;
+template <> inline constexpr NodeType kNodeOf<g::unit_power> = NodeType::kUnitPower;
+template <> inline constexpr NodeType kNodeOf<g::unit_div> = NodeType::kUnitDivide;
+template <> inline constexpr NodeType kNodeOf<g::vector> = NodeType::kVector;
+template <> inline constexpr NodeType kNodeOf<g::paren> = NodeType::kParen;
+template <> inline constexpr NodeType kNodeOf<g::call> = NodeType::kCall;
+template <> inline constexpr NodeType kNodeOf<g::named_argument> = NodeType::kNamedArgument;
+template <> inline constexpr NodeType kNodeOf<g::argument_name> = NodeType::kArgumentName;
+template <> inline constexpr NodeType kNodeOf<g::positional_argument> = NodeType::kPositionalArgument;
+template <> inline constexpr NodeType kNodeOf<g::path> = NodeType::kPath;
+template <> inline constexpr NodeType kNodeOf<g::string_literal> = NodeType::kString;
+template <> inline constexpr NodeType kNodeOf<g::boolean> = NodeType::kBoolean;
+// clang-format on
+
+// What an error message calls a rule when the parser expected it and did not find it. Only
+// rules that fail where they start are named, so the farthest failure is a real position.
+template <typename Rule>
+inline constexpr const char* kExpectedName = nullptr;
+// clang-format off
+template <> inline constexpr const char* kExpectedName<g::equals> = "`=`";
+template <> inline constexpr const char* kExpectedName<g::colon> = "`:`";
+template <> inline constexpr const char* kExpectedName<g::comma> = "`,`";
+template <> inline constexpr const char* kExpectedName<g::arrow_op> = "`->`";
+template <> inline constexpr const char* kExpectedName<g::open_brace> = "`{`";
+template <> inline constexpr const char* kExpectedName<g::close_brace> = "`}`";
+template <> inline constexpr const char* kExpectedName<g::open_paren> = "`(`";
+template <> inline constexpr const char* kExpectedName<g::close_paren> = "`)`";
+template <> inline constexpr const char* kExpectedName<g::close_quote> = "`\"`";
+template <> inline constexpr const char* kExpectedName<g::primary> = "a value";
+template <> inline constexpr const char* kExpectedName<g::keyword_name> = "a statement";
+template <> inline constexpr const char* kExpectedName<g::line_end> = "end of line";
+// clang-format on
+
+// Rules whose nesting is limited, so hostile input cannot exhaust the stack.
+template <typename Rule>
+inline constexpr bool kCountsDepth = false;
+template <>
+inline constexpr bool kCountsDepth<g::value> = true;
+template <>
+inline constexpr bool kCountsDepth<g::unary> = true;
+template <>
+inline constexpr bool kCountsDepth<g::block> = true;
+
+struct DepthExceeded {
+  std::uint32_t offset;
+};
+
+struct ParseState {
+  const char* base = nullptr;
+  std::vector<std::unique_ptr<Node>> stack;
+  std::vector<SourceRange> comments;
+  FileId file;
+  int depth = 0;
+  int max_depth = 64;
+
+  // The farthest point the current statement reached, and what was expected there.
+  std::uint32_t farthest = 0;
+  std::vector<const char*> expected;
+
+  struct Problem {
+    DiagnosticKind kind;
+    std::uint32_t begin;
+    std::uint32_t end;
+    std::string message;
+    std::string label;
+    std::string help;
+  };
+  std::vector<Problem> problems;
+
+  std::uint32_t Offset(const char* p) const { return static_cast<std::uint32_t>(p - base); }
+};
+
+// The PEGTL control: builds the syntax tree, tracks the farthest failure and limits depth.
+template <typename Rule>
+struct Control : pegtl::normal<Rule> {
+  template <typename Input>
+  static void start(const Input& in, ParseState& state) {
+    if constexpr (kCountsDepth<Rule>) {
+      if (++state.depth > state.max_depth) throw DepthExceeded{state.Offset(in.current())};
+    }
+    if constexpr (kNodeOf<Rule> != NodeType::kNone) {
+      auto node = std::make_unique<Node>();
+      node->type = kNodeOf<Rule>;
+      node->begin = state.Offset(in.current());
+      state.stack.push_back(std::move(node));
+    }
+  }
+
+  template <typename Input>
+  static void success(const Input& in, ParseState& state) {
+    if constexpr (kCountsDepth<Rule>) --state.depth;
+    if constexpr (kNodeOf<Rule> != NodeType::kNone) {
+      auto node = std::move(state.stack.back());
+      state.stack.pop_back();
+      node->end = state.Offset(in.current());
+      state.stack.back()->children.push_back(std::move(node));
+    }
+  }
+
+  template <typename Input>
+  static void failure(const Input& in, ParseState& state) {
+    if constexpr (kCountsDepth<Rule>) --state.depth;
+    if constexpr (kNodeOf<Rule> != NodeType::kNone) state.stack.pop_back();
+    if constexpr (kExpectedName<Rule> != nullptr) {
+      const std::uint32_t at = state.Offset(in.current());
+      if (at > state.farthest) {
+        state.farthest = at;
+        state.expected.clear();
+      }
+      if (at == state.farthest && std::find(state.expected.begin(), state.expected.end(),
+                                            kExpectedName<Rule>) == state.expected.end()) {
+        state.expected.push_back(kExpectedName<Rule>);
+      }
+    }
+  }
+};
+
+// Actions record trivia and recovery; they run only on the path the parse finally takes
+// through a rule, but a backtracked alternative may have run them too, so reports are deduped.
+template <typename Rule>
+struct Action : pegtl::nothing<Rule> {};
+
+template <>
+struct Action<g::comment> {
+  template <typename ActionInput>
+  static void apply(const ActionInput& in, ParseState& state) {
+    const std::uint32_t begin = state.Offset(in.begin());
+    if (!state.comments.empty() && state.comments.back().begin >= begin) return;
+    state.comments.push_back({state.file, begin, state.Offset(in.end())});
+  }
+};
+
+template <>
+struct Action<g::item_start> {
+  template <typename ActionInput>
+  static void apply(const ActionInput& in, ParseState& state) {
+    state.farthest = state.Offset(in.begin());
+    state.expected.clear();
+  }
+};
+
+std::string DescribeFound(std::string_view text, std::uint32_t at) {
+  if (at >= text.size()) return "end of file";
+  const char c = text[at];
+  if (c == '\n' || c == '\r') return "end of line";
+  auto is_word = [](char x) {
+    return std::isalnum(static_cast<unsigned char>(x)) || x == '_' || x == '.';
+  };
+  if (is_word(c)) {
+    std::size_t end = at;
+    while (end < text.size() && end - at < 40 && is_word(text[end])) ++end;
+    return fmt::format("`{}`", text.substr(at, end - at));
+  }
+  if (static_cast<unsigned char>(c) >= 0x80) {
+    // Decode one UTF-8 sequence so the message shows the character and its code point.
+    const auto lead = static_cast<unsigned char>(c);
+    const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
+    std::uint32_t code = length == 1 ? lead : lead & (0x7Fu >> length);
+    std::size_t i = 1;
+    for (; i < length && at + i < text.size(); ++i) {
+      const auto next = static_cast<unsigned char>(text[at + i]);
+      if ((next & 0xC0u) != 0x80u) break;
+      code = (code << 6) | (next & 0x3Fu);
+    }
+    if (length == 1 || i != length) return fmt::format("the byte 0x{:02X}", lead);
+    return fmt::format("`{}` (U+{:04X})", text.substr(at, length), code);
+  }
+  if (static_cast<unsigned char>(c) < 0x20) {
+    return fmt::format("the control character 0x{:02X}", static_cast<unsigned char>(c));
+  }
+  return fmt::format("`{}`", c);
+}
+
+std::string JoinExpected(const std::vector<const char*>& expected) {
+  std::string out;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    if (i > 0) out += (i + 1 == expected.size()) ? " or " : ", ";
+    out += expected[i];
+  }
+  return out;
+}
+
+template <>
+struct Action<g::skip> {
+  template <typename ActionInput>
+  static void apply(const ActionInput& in, ParseState& state) {
+    const std::string_view text(state.base, state.Offset(in.input().end()));
+    std::uint32_t at = std::max(state.farthest, state.Offset(in.begin()));
+    ParseState::Problem problem;
+    problem.begin = at;
+    const char c = at < text.size() ? text[at] : '\0';
+    const bool control = at < text.size() && static_cast<unsigned char>(c) < 0x20 && c != '\n' &&
+                         c != '\r' && c != '\t';
+    const bool non_ascii = at < text.size() && static_cast<unsigned char>(c) >= 0x80;
+    if (control || non_ascii) {
+      problem.kind = DiagnosticKind::kInvalidCharacter;
+      std::uint32_t end = at + 1;
+      while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u) {
+        ++end;
+      }
+      problem.end = end;
+      problem.message =
+          fmt::format("unexpected {} outside a string or comment", DescribeFound(text, at));
+      problem.label = "not part of the language";
+      problem.help = "names, units and keywords use ASCII letters, digits and `_`";
+    } else if (std::find(state.expected.begin(), state.expected.end(),
+                         kExpectedName<g::close_quote>) != state.expected.end()) {
+      problem.kind = DiagnosticKind::kUnclosedDelimiter;
+      problem.end = at;
+      problem.message = "string is not closed before the end of the line";
+      problem.label = "expected `\"` here";
+      problem.help = "strings cannot span lines; close the string with `\"`";
+    } else {
+      problem.kind = DiagnosticKind::kSyntaxError;
+      // When the parser had to cross a line break to find the offending token, the mistake is
+      // almost always at the end of the line before (a missing `)` or `,`): report it there.
+      std::uint32_t before = at;
+      while (before > 0 && (text[before - 1] == ' ' || text[before - 1] == '\t' ||
+                            text[before - 1] == '\r' || text[before - 1] == '\n')) {
+        --before;
+      }
+      if (text.substr(before, at - before).find('\n') != std::string_view::npos &&
+          before > state.Offset(in.begin())) {
+        at = before;
+        problem.begin = at;
+      }
+      problem.end = at;
+      const std::string found = DescribeFound(text, at);
+      problem.message = state.expected.empty() ? fmt::format("unexpected {}", found)
+                                               : fmt::format("expected {}, found {}",
+                                                             JoinExpected(state.expected), found);
+      problem.label = state.expected.empty() ? "not understood" : "unexpected here";
+      problem.help = "the rest of this statement was skipped";
+    }
+    // A word or a symbol is underlined whole.
+    if (problem.kind == DiagnosticKind::kSyntaxError && at < text.size() && text[at] != '\n') {
+      std::uint32_t end = at;
+      auto is_word = [](char x) {
+        return std::isalnum(static_cast<unsigned char>(x)) || x == '_' || x == '.';
+      };
+      while (end < text.size() && is_word(text[end])) ++end;
+      problem.end = end > at ? end : at + 1;
+    }
+    state.problems.push_back(std::move(problem));
+  }
+};
+
+template <>
+struct Action<g::stray_close> {
+  template <typename ActionInput>
+  static void apply(const ActionInput& in, ParseState& state) {
+    state.problems.push_back({DiagnosticKind::kUnmatchedClosing, state.Offset(in.begin()),
+                              state.Offset(in.end()), "`}` closes no block",
+                              "nothing to close here", "remove it, or check the `{` above"});
+  }
+};
+
+template <>
+struct Action<g::missing_close_brace> {
+  template <typename ActionInput>
+  static void apply(const ActionInput& in, ParseState& state) {
+    (void)in;
+    // The label goes on the `{` that is still open: the innermost block on the node stack.
+    std::uint32_t open = 0;
+    for (auto it = state.stack.rbegin(); it != state.stack.rend(); ++it) {
+      if ((*it)->type == NodeType::kBlock) {
+        open = (*it)->begin;
+        break;
+      }
+    }
+    state.problems.push_back({DiagnosticKind::kUnclosedDelimiter, open, open + 1,
+                              "`{` is never closed",
+                              "this block is still open at the end of "
+                              "the file",
+                              "add the missing `}`"});
+  }
+};
+
+// --- Syntax tree to AST ---------------------------------------------------------------------
+
+class Converter {
+ public:
+  Converter(std::string_view text, FileId file, DiagnosticConsumer& diagnostics)
+      : text_(text), file_(file), diagnostics_(diagnostics) {}
+
+  SourceRange Range(const Node& node) const { return {file_, node.begin, node.end}; }
+  std::string_view Text(const Node& node) const {
+    return text_.substr(node.begin, node.end - node.begin);
+  }
+
+  void ConvertBlockItems(const Node& parent, ast::Block& block) {
+    for (const auto& child : parent.children) {
+      if (child->type == NodeType::kHeader) block.statements.push_back(ConvertHeader(*child));
+      if (child->type == NodeType::kRow) block.statements.push_back(ConvertRow(*child));
+    }
+  }
+
+  std::unique_ptr<ast::Block> ConvertBlock(const Node& node) {
+    auto block = std::make_unique<ast::Block>();
+    block->range = Range(node);
+    ConvertBlockItems(node, *block);
+    return block;
+  }
+
+  ast::Statement ConvertRow(const Node& node) {
+    ast::Statement statement;
+    statement.kind = ast::StatementKind::kRow;
+    statement.range = Range(node);
+    // The row's children are sums; the row itself is the arrow chain.
+    ast::Expr arrow;
+    arrow.kind = ast::ExprKind::kArrow;
+    arrow.range = Range(node);
+    for (const auto& child : node.children) arrow.operands.push_back(ConvertExpr(*child));
+    statement.values.push_back(std::move(arrow));
+    return statement;
+  }
+
+  ast::Statement ConvertHeader(const Node& node) {
+    ast::Statement statement;
+    statement.range = Range(node);
+    for (const auto& child : node.children) {
+      switch (child->type) {
+        case NodeType::kKeyword:
+          statement.keyword = std::string(Text(*child));
+          statement.keyword_range = Range(*child);
+          break;
+        case NodeType::kTarget:
+          statement.target = ConvertExpr(*child->children.at(0));
+          break;
+        case NodeType::kWordClause: {
+          ast::Clause clause;
+          clause.word = std::string(Text(*child->children.at(0)));
+          clause.word_range = Range(*child->children.at(0));
+          clause.value = ConvertExpr(*child->children.at(1));
+          statement.clauses.push_back(std::move(clause));
+          break;
+        }
+        case NodeType::kColonClause: {
+          ast::Clause clause;
+          clause.word = ":";
+          clause.word_range = {file_, child->begin, child->begin + 1};
+          clause.value = ConvertExpr(*child->children.at(0));
+          statement.clauses.push_back(std::move(clause));
+          break;
+        }
+        case NodeType::kStatementValue:
+          statement.has_value = true;
+          statement.values.push_back(ConvertExpr(*child->children.at(0)));
+          break;
+        case NodeType::kBlock:
+          statement.block = ConvertBlock(*child);
+          break;
+        default:
+          break;
+      }
+    }
+    return statement;
+  }
+
+  ast::Expr ConvertExpr(const Node& node) {
+    ast::Expr expr;
+    expr.range = Range(node);
+    switch (node.type) {
+      case NodeType::kArrow:
+      case NodeType::kSum:
+      case NodeType::kProduct:
+        if (node.children.size() == 1) return ConvertExpr(*node.children[0]);
+        if (node.type == NodeType::kArrow) {
+          expr.kind = ast::ExprKind::kArrow;
+          for (const auto& child : node.children) expr.operands.push_back(ConvertExpr(*child));
+          return expr;
+        }
+        return ConvertLeftAssociative(node);
+      case NodeType::kPower:
+        if (node.children.size() == 1) return ConvertExpr(*node.children[0]);
+        expr.kind = ast::ExprKind::kBinary;
+        expr.op = '^';
+        expr.operands.push_back(ConvertExpr(*node.children.at(0)));
+        expr.operands.push_back(ConvertExpr(*node.children.at(2)));
+        return expr;
+      case NodeType::kNegate:
+        expr.kind = ast::ExprKind::kUnary;
+        expr.op = '-';
+        expr.operands.push_back(ConvertExpr(*node.children.at(1)));
+        return expr;
+      case NodeType::kQuantity:
+        expr = ConvertNumber(*node.children.at(0));
+        expr.range = Range(node);
+        if (node.children.size() > 1) expr.unit = ConvertUnit(*node.children[1]);
+        return expr;
+      case NodeType::kVector:
+        expr.kind = ast::ExprKind::kVector;
+        for (const auto& child : node.children) {
+          if (child->type == NodeType::kUnit) {
+            expr.unit = ConvertUnit(*child);
+          } else {
+            expr.operands.push_back(ConvertExpr(*child));
+          }
+        }
+        return expr;
+      case NodeType::kParen:
+        expr.kind = ast::ExprKind::kParen;
+        expr.operands.push_back(ConvertExpr(*node.children.at(0)));
+        return expr;
+      case NodeType::kCall:
+        expr.kind = ast::ExprKind::kCall;
+        for (const auto& child : node.children) {
+          if (child->type == NodeType::kPath) {
+            expr.path = SplitPath(Text(*child));
+          } else if (child->type == NodeType::kNamedArgument) {
+            ast::Argument argument;
+            argument.name = std::string(Text(*child->children.at(0)));
+            argument.name_range = Range(*child->children.at(0));
+            argument.value = std::make_unique<ast::Expr>(ConvertExpr(*child->children.at(1)));
+            expr.arguments.push_back(std::move(argument));
+          } else if (child->type == NodeType::kPositionalArgument) {
+            ast::Argument argument;
+            argument.value = std::make_unique<ast::Expr>(ConvertExpr(*child->children.at(0)));
+            expr.arguments.push_back(std::move(argument));
+          }
+        }
+        return expr;
+      case NodeType::kPath:
+        expr.kind = ast::ExprKind::kPath;
+        expr.path = SplitPath(Text(node));
+        return expr;
+      case NodeType::kString:
+        expr.kind = ast::ExprKind::kString;
+        expr.text = Unescape(Text(node).substr(1, node.end - node.begin - 2));
+        return expr;
+      case NodeType::kBoolean:
+        expr.kind = ast::ExprKind::kBool;
+        expr.text = std::string(Text(node));
+        return expr;
+      case NodeType::kStatementValue:
+      case NodeType::kPositionalArgument:
+        return ConvertExpr(*node.children.at(0));
+      default:
+        throw std::logic_error(fmt::format("lang::Parse: unexpected syntax node {} at byte {}",
+                                           static_cast<int>(node.type), node.begin));
+    }
+  }
+
+ private:
+  // a op b op c ... as ((a op b) op c).
+  ast::Expr ConvertLeftAssociative(const Node& node) {
+    ast::Expr left = ConvertExpr(*node.children.at(0));
+    for (std::size_t i = 1; i + 1 < node.children.size(); i += 2) {
+      ast::Expr combined;
+      combined.kind = ast::ExprKind::kBinary;
+      combined.op = Text(*node.children[i]).at(0);
+      combined.range = {file_, node.begin, node.children[i + 1]->end};
+      combined.operands.push_back(std::move(left));
+      combined.operands.push_back(ConvertExpr(*node.children[i + 1]));
+      left = std::move(combined);
+    }
+    return left;
+  }
+
+  ast::Expr ConvertNumber(const Node& node) {
+    ast::Expr expr;
+    expr.kind = ast::ExprKind::kNumber;
+    expr.range = Range(node);
+    expr.text = std::string(Text(node));
+    const char* first = expr.text.data();
+    const char* last = first + expr.text.size();
+    auto [end, error] = std::from_chars(first, last, expr.number);
+    if (error != std::errc() || end != last || !std::isfinite(expr.number)) {
+      diagnostics_.Consume([&] {
+        auto d = MakeDiagnostic(DiagnosticKind::kInvalidNumber, Range(node),
+                                fmt::format("number `{}` is out of range", expr.text),
+                                "not representable as a double");
+        d.help = "numbers must lie within about 1e-308 to 1e308 in magnitude";
+        return d;
+      }());
+      expr.number = 0.0;
+    }
+    return expr;
+  }
+
+  ast::Unit ConvertUnit(const Node& node) {
+    ast::Unit unit;
+    unit.range = Range(node);
+    int sign = 1;
+    for (const auto& child : node.children) {
+      if (child->type == NodeType::kUnitDivide) {
+        sign = -1;
+      } else if (child->type == NodeType::kUnitSymbol) {
+        unit.factors.push_back({std::string(Text(*child)), sign, Range(*child)});
+        // `*` after `/` multiplies again: N/m*s is N*s/m, as in arithmetic.
+        sign = 1;
+      } else if (child->type == NodeType::kUnitPower) {
+        const std::string_view digits = Text(*child).substr(1);
+        int exponent = 0;
+        const bool negative = !digits.empty() && digits[0] == '-';
+        const std::string_view magnitude = negative ? digits.substr(1) : digits;
+        auto [end, error] =
+            std::from_chars(magnitude.data(), magnitude.data() + magnitude.size(), exponent);
+        if (error != std::errc() || end != magnitude.data() + magnitude.size()) exponent = 1000;
+        if (negative) exponent = -exponent;
+        auto& factor = unit.factors.back();
+        factor.exponent *= exponent;
+        factor.range.end = child->end;
+      }
+    }
+    return unit;
+  }
+
+  static std::vector<std::string> SplitPath(std::string_view text) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t dot = text.find('.', start);
+      parts.emplace_back(text.substr(start, dot - start));
+      if (dot == std::string_view::npos) break;
+      start = dot + 1;
+    }
+    return parts;
+  }
+
+  static std::string Unescape(std::string_view raw) {
+    std::string out;
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i] == '\\' && i + 1 < raw.size()) {
+        ++i;
+        out += raw[i] == 'n' ? '\n' : raw[i] == 't' ? '\t' : raw[i];
+      } else {
+        out += raw[i];
+      }
+    }
+    return out;
+  }
+
+  std::string_view text_;
+  FileId file_;
+  DiagnosticConsumer& diagnostics_;
+};
+
+// --- Trivia: comments and blank lines -------------------------------------------------------
+
+class TriviaAssigner {
+ public:
+  TriviaAssigner(std::string_view text, std::vector<SourceRange> comments)
+      : text_(text), comments_(std::move(comments)) {}
+
+  void AssignBlock(ast::Block& block, std::uint32_t content_begin, std::uint32_t end) {
+    std::uint32_t previous_end = content_begin;
+    for (ast::Statement& statement : block.statements) {
+      std::uint32_t first = statement.range.begin;
+      while (next_ < comments_.size() && comments_[next_].begin < statement.range.begin) {
+        if (statement.leading_comments.empty()) first = comments_[next_].begin;
+        statement.leading_comments.push_back(MakeComment(comments_[next_++]));
+      }
+      statement.blank_line_before = CountNewlines(previous_end, first) >= 2;
+      if (statement.block) {
+        AssignBlock(*statement.block, statement.block->range.begin + 1, statement.block->range.end);
+      }
+      previous_end = statement.range.end;
+      if (next_ < comments_.size() && comments_[next_].begin >= statement.range.end &&
+          comments_[next_].begin < end &&
+          CountNewlines(statement.range.end, comments_[next_].begin) == 0) {
+        statement.trailing_comment = MakeComment(comments_[next_++]);
+        previous_end = statement.trailing_comment->range.end;
+      }
+    }
+    while (next_ < comments_.size() && comments_[next_].begin < end) {
+      block.closing_comments.push_back(MakeComment(comments_[next_++]));
+    }
+  }
+
+ private:
+  ast::Comment MakeComment(const SourceRange& range) const {
+    std::string_view body = text_.substr(range.begin + 2, range.end - range.begin - 2);
+    while (!body.empty() && (body.back() == ' ' || body.back() == '\t' || body.back() == '\r')) {
+      body.remove_suffix(1);
+    }
+    return {std::string(body), range};
+  }
+
+  int CountNewlines(std::uint32_t from, std::uint32_t to) const {
+    int count = 0;
+    for (std::uint32_t i = from; i < to && i < text_.size(); ++i) count += text_[i] == '\n';
+    return count;
+  }
+
+  std::string_view text_;
+  std::vector<SourceRange> comments_;
+  std::size_t next_ = 0;
+};
+
+void MarkRecoveredBlocks(ast::Block& block, const std::vector<ParseState::Problem>& problems);
+
+void MarkStatement(ast::Statement& statement, const std::vector<ParseState::Problem>& problems) {
+  if (statement.block) MarkRecoveredBlocks(*statement.block, problems);
+}
+
+// A block that contains a skipped statement is marked, so the checker does not pile
+// "missing attribute" errors on top of the syntax error that caused them.
+void MarkRecoveredBlocks(ast::Block& block, const std::vector<ParseState::Problem>& problems) {
+  for (const auto& problem : problems) {
+    if (problem.begin >= block.range.begin && problem.begin < block.range.end) {
+      block.had_syntax_errors = true;
+    }
+  }
+  for (ast::Statement& statement : block.statements) MarkStatement(statement, problems);
+}
+
+void Report(const ParseState& state, DiagnosticConsumer& diagnostics) {
+  // Backtracking can run an action twice for the same place; report each place once.
+  std::vector<std::pair<std::uint32_t, DiagnosticKind>> seen;
+  for (const auto& problem : state.problems) {
+    const auto key = std::make_pair(problem.begin, problem.kind);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+    seen.push_back(key);
+    auto diagnostic = MakeDiagnostic(problem.kind, {state.file, problem.begin, problem.end},
+                                     problem.message, problem.label);
+    diagnostic.help = problem.help;
+    diagnostics.Consume(std::move(diagnostic));
+  }
+}
+
+template <typename Rule>
+std::unique_ptr<Node> RunGrammar(const SourceBuffer& buffer, FileId file, int max_depth,
+                                 ParseState& state, DiagnosticConsumer& diagnostics) {
+  const std::string_view text = buffer.text();
+  state.base = text.data();
+  state.file = file;
+  state.max_depth = max_depth;
+  state.stack.push_back(std::make_unique<Node>());
+  pegtl::memory_input<pegtl::tracking_mode::lazy> in(text.data(), text.data() + text.size(),
+                                                     buffer.path());
+  try {
+    if (!pegtl::parse<Rule, Action, Control>(in, state)) return nullptr;
+  } catch (const DepthExceeded& exceeded) {
+    diagnostics.Consume([&] {
+      auto d = MakeDiagnostic(
+          DiagnosticKind::kNestingTooDeep, {file, exceeded.offset, exceeded.offset + 1},
+          fmt::format("blocks and expressions are nested more than {} deep", max_depth),
+          "too deep here");
+      d.help = "split the expression or flatten the blocks";
+      return d;
+    }());
+    return nullptr;
+  }
+  state.stack.resize(1);
+  return std::move(state.stack.front());
+}
+
+}  // namespace
+
+ast::File Parse(const SourceManager& sources, FileId file, const ParseOptions& options) {
+  if (!options.diagnostics) throw std::logic_error("lang::Parse: options.diagnostics is null");
+  const SourceBuffer& buffer = sources.buffer(file);
+  ast::File result;
+  result.file = file;
+  result.body.range = {file, 0, static_cast<std::uint32_t>(buffer.text().size())};
+
+  ParseState state;
+  auto root = RunGrammar<g::file>(buffer, file, options.max_depth, state, *options.diagnostics);
+  Report(state, *options.diagnostics);
+  if (!root) {
+    result.body.had_syntax_errors = true;
+    return result;
+  }
+  Converter converter(buffer.text(), file, *options.diagnostics);
+  converter.ConvertBlockItems(*root, result.body);
+  MarkRecoveredBlocks(result.body, state.problems);
+  TriviaAssigner trivia(buffer.text(), std::move(state.comments));
+  trivia.AssignBlock(result.body, 0, result.body.range.end + 1);
+  return result;
+}
+
+namespace {
+namespace value_grammar {
+struct whole_value : pegtl::seq<g::ws, g::value, g::ws, pegtl::eof> {};
+}  // namespace value_grammar
+}  // namespace
+
+std::optional<ast::Expr> ParseValue(const SourceManager& sources, FileId file,
+                                    const ParseOptions& options) {
+  if (!options.diagnostics) throw std::logic_error("lang::ParseValue: options.diagnostics is null");
+  const SourceBuffer& buffer = sources.buffer(file);
+  ParseState state;
+  auto root = RunGrammar<value_grammar::whole_value>(buffer, file, options.max_depth, state,
+                                                     *options.diagnostics);
+  if (!root || root->children.empty()) {
+    const std::uint32_t at =
+        std::min<std::uint32_t>(state.farthest, static_cast<std::uint32_t>(buffer.text().size()));
+    auto d = MakeDiagnostic(DiagnosticKind::kSyntaxError, {file, at, at + 1},
+                            state.expected.empty()
+                                ? std::string("this is not a value")
+                                : fmt::format("expected {}, found {}", JoinExpected(state.expected),
+                                              DescribeFound(buffer.text(), at)));
+    options.diagnostics->Consume(std::move(d));
+    return std::nullopt;
+  }
+  Converter converter(buffer.text(), file, *options.diagnostics);
+  return converter.ConvertExpr(*root->children.at(0));
+}
+
+}  // namespace sled::lang
