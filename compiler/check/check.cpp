@@ -1,0 +1,344 @@
+// The checker's entry point, its scopes and name resolution, and imports.
+#include "compiler/check/check.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "compiler/check/context.h"
+#include "lang/syntax/parser.h"
+
+#ifndef SLED_SOURCE_ROOT
+#define SLED_SOURCE_ROOT "."
+#endif
+
+namespace sled::compiler {
+
+std::string DefaultStdlibRoot() {
+  if (const char* from_environment = std::getenv("SLED_STDLIB")) return from_environment;
+  return std::string(SLED_SOURCE_ROOT) + "/stdlib";
+}
+
+CheckedScenario Check(lang::SourceManager& sources, const lang::ast::File& file,
+                      const CheckOptions& options) {
+  if (!options.diagnostics) throw std::logic_error("compiler::Check: options.diagnostics is null");
+  internal::Checker checker(sources, options);
+  return checker.Run(file);
+}
+
+namespace internal {
+namespace {
+
+const std::vector<std::pair<EntityKind, std::string_view>> kEntityNames = {
+    {EntityKind::kGround, "ground"},     {EntityKind::kModule, "module"},
+    {EntityKind::kBody, "body"},         {EntityKind::kSegment, "segment"},
+    {EntityKind::kJoint, "joint"},       {EntityKind::kEllipsoid, "ellipsoid"},
+    {EntityKind::kVehicle, "vehicle"},   {EntityKind::kPlane, "plane"},
+    {EntityKind::kFunction, "function"}, {EntityKind::kBelt, "belt"},
+    {EntityKind::kHarness, "harness"},   {EntityKind::kAirbag, "airbag"},
+    {EntityKind::kSpring, "spring"},     {EntityKind::kConstraint, "constraint"},
+    {EntityKind::kParameter, "parameter"},
+};
+
+std::string JoinPath(const std::vector<std::string>& parts, std::size_t from, char separator) {
+  std::string out;
+  for (std::size_t i = from; i < parts.size(); ++i) {
+    if (!out.empty()) out += separator;
+    out += parts[i];
+  }
+  return out;
+}
+
+// Module names available under a folder, as dotted paths, for "did you mean" on imports.
+std::vector<std::string> ModulesUnder(const std::string& root, const std::string& prefix) {
+  std::vector<std::string> names;
+  std::error_code error;
+  for (auto it = std::filesystem::recursive_directory_iterator(root, error);
+       !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
+    if (it->path().extension() != ".sled") continue;
+    std::string relative = std::filesystem::relative(it->path(), root, error).string();
+    relative = relative.substr(0, relative.size() - 5);
+    std::replace(relative.begin(), relative.end(), '/', '.');
+    names.push_back(prefix + relative);
+  }
+  return names;
+}
+
+}  // namespace
+
+std::string_view EntityKindName(EntityKind kind) {
+  for (const auto& [entity_kind, name] : kEntityNames) {
+    if (entity_kind == kind) return name;
+  }
+  return "name";
+}
+
+std::optional<EntityKind> EntityKindFromName(std::string_view name) {
+  for (const auto& [entity_kind, entity_name] : kEntityNames) {
+    if (entity_name == name) return entity_kind;
+  }
+  return std::nullopt;
+}
+
+Checker::Checker(lang::SourceManager& sources, const CheckOptions& options)
+    : sources_(sources), options_(options), diagnostics_(*options.diagnostics) {}
+
+void Checker::Report(DiagnosticKind kind, SourceRange range, std::string message,
+                     std::string label, std::string help) {
+  auto diagnostic = lang::MakeDiagnostic(kind, range, std::move(message), std::move(label));
+  diagnostic.help = std::move(help);
+  diagnostics_.Consume(std::move(diagnostic));
+}
+
+Scope* Checker::NewScope(Scope* parent, std::string prefix, std::string directory) {
+  auto scope = std::make_unique<Scope>();
+  scope->parent = parent;
+  scope->prefix = std::move(prefix);
+  scope->directory = std::move(directory);
+  scopes_.push_back(std::move(scope));
+  return scopes_.back().get();
+}
+
+bool Checker::Declare(Scope& scope, const std::string& name, Entity entity) {
+  auto [it, inserted] = scope.names.emplace(name, entity);
+  if (!inserted) {
+    auto diagnostic = lang::MakeDiagnostic(
+        DiagnosticKind::kDuplicateName, entity.range,
+        fmt::format("`{}` is declared twice", scope.prefix + name), "declared again here");
+    diagnostic.labels.push_back({it->second.range, "first declared here", false});
+    diagnostic.help = "names must be unique in a body, a module or a scenario; rename one";
+    diagnostics_.Consume(std::move(diagnostic));
+    return false;
+  }
+  return true;
+}
+
+std::vector<std::string> Checker::NamesOfKinds(Scope& scope, const std::vector<EntityKind>& kinds) {
+  auto wanted = [&](EntityKind kind) {
+    return kinds.empty() || std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+  };
+  std::vector<std::string> names;
+  for (Scope* s = &scope; s; s = s->parent) {
+    for (const auto& [name, entity] : s->names) {
+      if (wanted(entity.kind)) names.push_back(name);
+      for (Scope* inner = entity.inner; inner; inner = inner->fallback) {
+        for (const auto& [inner_name, inner_entity] : inner->names) {
+          if (wanted(inner_entity.kind)) names.push_back(name + "." + inner_name);
+        }
+      }
+    }
+  }
+  return names;
+}
+
+Entity* Checker::Resolve(Scope& scope, const ast::Expr& path,
+                         const std::vector<EntityKind>& kinds, bool quiet) {
+  const std::string kind_text =
+      kinds.size() == 1 ? std::string(EntityKindName(kinds[0])) : std::string("name");
+  if (path.kind != ast::ExprKind::kPath) {
+    if (!quiet) {
+      Report(DiagnosticKind::kWrongValueKind, path.range,
+             fmt::format("expected the name of a {}, found {}", kind_text,
+                         path.kind == ast::ExprKind::kNumber   ? "a number"
+                         : path.kind == ast::ExprKind::kVector ? "a vector"
+                         : path.kind == ast::ExprKind::kString ? "a string"
+                                                               : "an expression"),
+             "not a name");
+    }
+    return nullptr;
+  }
+  Entity* found = nullptr;
+  for (Scope* s = &scope; s && !found; s = s->parent) {
+    auto it = s->names.find(path.path[0]);
+    if (it != s->names.end()) found = &it->second;
+  }
+  for (std::size_t i = 1; found && i < path.path.size(); ++i) {
+    Entity* next = nullptr;
+    for (Scope* inner = found->inner; inner && !next; inner = inner->fallback) {
+      auto it = inner->names.find(path.path[i]);
+      if (it != inner->names.end()) next = &it->second;
+    }
+    found = next;
+  }
+  if (!found) {
+    if (!quiet) {
+      const std::string text = path.PathText();
+      Report(DiagnosticKind::kUnknownName, path.range,
+             fmt::format("unknown {} `{}`", kind_text, text), fmt::format("no {} named `{}`",
+                                                                          kind_text, text),
+             lang::DidYouMean(text, NamesOfKinds(scope, kinds)));
+    }
+    return nullptr;
+  }
+  found->used = true;
+  if (!kinds.empty() && std::find(kinds.begin(), kinds.end(), found->kind) == kinds.end()) {
+    if (!quiet) {
+      std::string expected;
+      for (std::size_t i = 0; i < kinds.size(); ++i) {
+        if (i > 0) expected += i + 1 == kinds.size() ? " or " : ", ";
+        expected += EntityKindName(kinds[i]);
+      }
+      auto diagnostic = lang::MakeDiagnostic(
+          DiagnosticKind::kWrongKindOfName, path.range,
+          fmt::format("`{}` is a {}, but a {} belongs here", path.PathText(),
+                      EntityKindName(found->kind), expected),
+          fmt::format("this is a {}", EntityKindName(found->kind)));
+      if (found->range.valid()) {
+        diagnostic.labels.push_back({found->range, "declared here", false});
+      }
+      diagnostic.help = lang::DidYouMean(path.PathText(), NamesOfKinds(scope, kinds));
+      diagnostics_.Consume(std::move(diagnostic));
+    }
+    return nullptr;
+  }
+  return found;
+}
+
+void Checker::Import(Scope& scope, const ast::Statement& statement) {
+  if (!statement.target || statement.target->kind != ast::ExprKind::kPath ||
+      statement.has_value || statement.block) {
+    Report(DiagnosticKind::kMalformedStatement, statement.range,
+           "an import names a module: `import std.humans.male50 as occupant`", "not an import");
+    return;
+  }
+  const std::vector<std::string>& parts = statement.target->path;
+  std::string alias = parts.back();
+  if (const ast::Clause* as = statement.FindClause("as")) {
+    if (as->value.kind != ast::ExprKind::kPath || as->value.path.size() != 1) {
+      Report(DiagnosticKind::kMalformedStatement, as->value.range,
+             "`as` takes one plain name", "not a plain name");
+      return;
+    }
+    alias = as->value.path[0];
+  }
+  for (const ast::Clause& clause : statement.clauses) {
+    if (clause.word != "as") {
+      Report(DiagnosticKind::kMalformedStatement, clause.word_range,
+             fmt::format("an import takes no `{}` clause", clause.word), "not allowed here");
+    }
+  }
+
+  const bool standard = parts[0] == "std";
+  const std::string root = standard ? (options_.stdlib_root.empty() ? DefaultStdlibRoot()
+                                                                    : options_.stdlib_root)
+                                    : scope.directory;
+  const std::string relative = JoinPath(parts, standard ? 1 : 0, '/');
+  const std::string file_path = (root.empty() ? std::string(".") : root) + "/" + relative + ".sled";
+
+  if (std::find(import_stack_.begin(), import_stack_.end(), file_path) != import_stack_.end()) {
+    Report(DiagnosticKind::kImportCycle, statement.target->range,
+           fmt::format("module `{}` imports itself through a cycle", statement.target->PathText()),
+           "this import closes the cycle",
+           "move what both modules need into a third module that neither imports");
+    return;
+  }
+
+  Scope* module_scope = nullptr;
+  auto cached = module_scopes_.find(file_path);
+  if (cached != module_scopes_.end()) {
+    module_scope = cached->second;
+  } else {
+    std::optional<lang::FileId> id = sources_.Find(file_path);
+    if (!id) id = sources_.Load(file_path);
+    if (!id || (!standard && relative.empty())) {
+      Report(DiagnosticKind::kUnknownModule, statement.target->range,
+             fmt::format("no module `{}`", statement.target->PathText()),
+             fmt::format("`{}` does not exist", file_path),
+             lang::DidYouMean(statement.target->PathText(),
+                              standard ? ModulesUnder(root, "std.") : ModulesUnder(root, "")));
+      return;
+    }
+    lang::ParseOptions parse_options;
+    parse_options.diagnostics = &diagnostics_;
+    modules_.push_back(std::make_unique<ast::File>(lang::Parse(sources_, *id, parse_options)));
+    const ast::File& module = *modules_.back();
+    module_scope = NewScope(nullptr, "", std::filesystem::path(file_path).parent_path().string());
+    module_scopes_[file_path] = module_scope;
+    import_stack_.push_back(file_path);
+    DeclareFileContents(*module_scope, module.body, BlockKind::kModule);
+    import_stack_.pop_back();
+  }
+
+  // A module with exactly one body is that body: its alias names the instance.
+  std::vector<const ast::Statement*> bodies;
+  const ast::File* module_file = nullptr;
+  for (const auto& module : modules_) {
+    if (sources_.buffer(module->file).path() == file_path) module_file = module.get();
+  }
+  if (module_file) {
+    for (const ast::Statement& child : module_file->body.statements) {
+      if (child.keyword == "body" && child.kind == ast::StatementKind::kHeader) {
+        bodies.push_back(&child);
+      }
+    }
+  }
+  const std::string qualified = scope.prefix + alias;
+  if (bodies.size() == 1) {
+    const int index = static_cast<int>(scenario_.bodies.size());
+    CheckBodyDeclarations(*module_scope, *bodies[0], qualified, statement.range);
+    Scope* body_scope = bodies_.back().scope;
+    body_scope->fallback = module_scope;
+    Declare(scope, alias, Entity{EntityKind::kBody, index, statement.range, body_scope});
+    return;
+  }
+  // Otherwise the alias is a namespace; each body is instanced under alias.body.
+  Scope* instance_scope = NewScope(nullptr, qualified + ".", module_scope->directory);
+  instance_scope->fallback = module_scope;
+  for (const ast::Statement* body : bodies) {
+    if (!body->target || body->target->kind != ast::ExprKind::kPath) continue;
+    const std::string& body_name = body->target->path[0];
+    const int index = static_cast<int>(scenario_.bodies.size());
+    CheckBodyDeclarations(*module_scope, *body, qualified + "." + body_name, statement.range);
+    Declare(*instance_scope, body_name,
+            Entity{EntityKind::kBody, index, body->range, bodies_.back().scope});
+  }
+  Declare(scope, alias, Entity{EntityKind::kModule, -1, statement.range, instance_scope});
+}
+
+CheckedScenario Checker::Run(const ast::File& file) {
+  const std::string directory =
+      std::filesystem::path(sources_.buffer(file.file).path()).parent_path().string();
+  scene_scope_ = NewScope(nullptr, "", directory);
+  Declare(*scene_scope_, "ground", Entity{EntityKind::kGround, -1, {}, nullptr, true});
+  import_stack_.push_back(sources_.buffer(file.file).path());
+
+  // A file with a scenario is a scene; one without is a module, checked body by body.
+  bool has_scenario = false;
+  for (const ast::Statement& statement : file.body.statements) {
+    has_scenario |= statement.keyword == "scenario";
+  }
+  DeclareFileContents(*scene_scope_, file.body,
+                      has_scenario ? BlockKind::kFile : BlockKind::kModule);
+  if (!has_scenario) {
+    // Each body of a module is checked as an instance under its own name.
+    for (const ast::Statement& statement : file.body.statements) {
+      if (statement.keyword != "body" || !statement.target ||
+          statement.target->kind != ast::ExprKind::kPath) {
+        continue;
+      }
+      const int index = static_cast<int>(scenario_.bodies.size());
+      const std::string& name = statement.target->path[0];
+      CheckBodyDeclarations(*scene_scope_, statement, name, statement.range);
+      Declare(*scene_scope_, name,
+              Entity{EntityKind::kBody, index, statement.target->range, bodies_.back().scope,
+                     true});
+    }
+  }
+
+  // Every name is known now: check what the declarations say.
+  for (const Pending& pending : functions_) {
+    DefineFunction(*pending.scope, *pending.statement, pending.index);
+  }
+  CheckBodyDetails();
+  CheckSceneElements();
+  if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
+  CheckInitialConditions();
+  CheckOutputs();
+  if (options_.lints) RunLints();
+  return std::move(scenario_);
+}
+
+}  // namespace internal
+}  // namespace sled::compiler

@@ -1,0 +1,439 @@
+// Scene-level declarations: what a scenario or module block declares, and the checking of
+// vehicles, surfaces, contacts, restraints, springs and constraints once every name is known.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/check/context.h"
+
+namespace sled::compiler::internal {
+namespace {
+
+Vec3 Subtract(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 Cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double Norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+
+// The name a declaration gives, or empty after reporting that it has none.
+std::string NameOf(Checker& checker, const ast::Statement& statement) {
+  if (statement.target && statement.target->kind == ast::ExprKind::kPath &&
+      statement.target->path.size() == 1) {
+    return statement.target->path[0];
+  }
+  checker.Report(DiagnosticKind::kMalformedStatement,
+                 statement.target ? statement.target->range : statement.keyword_range,
+                 fmt::format("`{}` needs a plain name: `{} NAME ...`", statement.keyword,
+                             statement.keyword),
+                 statement.target ? "not a plain name" : "name missing");
+  return {};
+}
+
+}  // namespace
+
+std::optional<FrameRef> Checker::ResolveFrame(Scope& scope, const ast::Expr& expr) {
+  Entity* entity =
+      Resolve(scope, expr, {EntityKind::kGround, EntityKind::kVehicle, EntityKind::kSegment});
+  if (!entity) return std::nullopt;
+  switch (entity->kind) {
+    case EntityKind::kVehicle:
+      return FrameRef{FrameRef::Kind::kVehicle, entity->index};
+    case EntityKind::kSegment:
+      return FrameRef{FrameRef::Kind::kSegment, entity->index};
+    default:
+      return FrameRef{};
+  }
+}
+
+std::string Checker::FrameName(const FrameRef& frame) const {
+  switch (frame.kind) {
+    case FrameRef::Kind::kVehicle:
+      return scenario_.vehicles.at(static_cast<std::size_t>(frame.index)).name;
+    case FrameRef::Kind::kSegment:
+      return scenario_.segments.at(static_cast<std::size_t>(frame.index)).name;
+    case FrameRef::Kind::kGround:
+      break;
+  }
+  return "ground";
+}
+
+void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind) {
+  BoundBlock bound = Bind(kind, &block, block.range);
+  if (kind == BlockKind::kScenario) scenario_bound_ = bound;
+  auto declare = [&](const ast::Statement& statement, EntityKind entity_kind, int index,
+                     std::vector<Pending>& pending) {
+    const std::string name = NameOf(*this, statement);
+    if (name.empty()) return false;
+    Declare(scope, name, Entity{entity_kind, index, statement.target->range});
+    pending.push_back({&statement, &scope, index});
+    return true;
+  };
+  for (const ast::Statement* statement : bound.declarations) {
+    const std::string& keyword = statement->keyword;
+    if (keyword == "scenario") {
+      if (scenario_statement_) {
+        auto diagnostic = lang::MakeDiagnostic(DiagnosticKind::kMultipleScenarios,
+                                               statement->keyword_range,
+                                               "a file holds one scenario; this is a second",
+                                               "second scenario");
+        diagnostic.labels.push_back({scenario_statement_->keyword_range, "first here", false});
+        diagnostic.help = "split the scenarios into files of their own";
+        diagnostics_.Consume(std::move(diagnostic));
+        continue;
+      }
+      scenario_statement_ = statement;
+      if (statement->target && statement->target->kind == ast::ExprKind::kString) {
+        scenario_.title = statement->target->text;
+      }
+      if (!statement->block) {
+        Report(DiagnosticKind::kMalformedStatement, statement->range,
+               "a scenario has a block: `scenario \"title\" { ... }`", "no block");
+        continue;
+      }
+      DeclareFileContents(scope, *statement->block, BlockKind::kScenario);
+    } else if (keyword == "import") {
+      Import(scope, *statement);
+    } else if (keyword == "param" || keyword == "let") {
+      const std::string name = NameOf(*this, *statement);
+      if (name.empty()) continue;
+      if (statement->values.size() != 1 || !statement->clauses.empty() || statement->block) {
+        Report(DiagnosticKind::kMalformedStatement, statement->range,
+               fmt::format("write `{} {} = value`", keyword, name), "not a single value");
+        continue;
+      }
+      auto parameter = std::make_unique<Parameter>();
+      parameter->name = scope.prefix + name;
+      parameter->expr = &statement->values[0];
+      parameter->scope = &scope;
+      parameter->is_param = keyword == "param";
+      parameter->range = statement->target->range;
+      const int index = static_cast<int>(parameters_.size());
+      parameters_.push_back(std::move(parameter));
+      Declare(scope, name, Entity{EntityKind::kParameter, index, statement->target->range});
+    } else if (keyword == "body") {
+      if (kind == BlockKind::kModule) continue;  // instanced when imported
+      const std::string name = NameOf(*this, *statement);
+      if (name.empty()) continue;
+      const int index = static_cast<int>(scenario_.bodies.size());
+      CheckBodyDeclarations(scope, *statement, scope.prefix + name, statement->target->range);
+      Declare(scope, name,
+              Entity{EntityKind::kBody, index, statement->target->range, bodies_.back().scope});
+    } else if (keyword == "function") {
+      const int index = static_cast<int>(scenario_.functions.size());
+      scenario_.functions.emplace_back();
+      function_valid_.push_back(false);
+      declare(*statement, EntityKind::kFunction, index, functions_);
+    } else if (keyword == "vehicle") {
+      const int index = static_cast<int>(scenario_.vehicles.size());
+      scenario_.vehicles.emplace_back();
+      if (declare(*statement, EntityKind::kVehicle, index, vehicles_)) {
+        scenario_.vehicles.back().name = scope.prefix + statement->target->path[0];
+        scenario_.vehicles.back().range = statement->target->range;
+      }
+    } else if (keyword == "plane") {
+      const int index = static_cast<int>(scenario_.planes.size());
+      scenario_.planes.emplace_back();
+      if (declare(*statement, EntityKind::kPlane, index, planes_)) {
+        scenario_.planes.back().name = scope.prefix + statement->target->path[0];
+        scenario_.planes.back().range = statement->target->range;
+      }
+    } else if (keyword == "ellipsoid") {
+      const int index = static_cast<int>(scenario_.ellipsoids.size());
+      scenario_.ellipsoids.emplace_back();
+      if (declare(*statement, EntityKind::kEllipsoid, index, ellipsoids_)) {
+        scenario_.ellipsoids.back().name = scope.prefix + statement->target->path[0];
+        scenario_.ellipsoids.back().range = statement->target->range;
+      }
+    } else if (keyword == "belt") {
+      const int index = static_cast<int>(scenario_.belts.size());
+      scenario_.belts.emplace_back();
+      if (declare(*statement, EntityKind::kBelt, index, belts_)) {
+        scenario_.belts.back().name = scope.prefix + statement->target->path[0];
+        scenario_.belts.back().range = statement->target->range;
+      }
+    } else if (keyword == "harness") {
+      const int index = static_cast<int>(scenario_.harnesses.size());
+      scenario_.harnesses.emplace_back();
+      if (declare(*statement, EntityKind::kHarness, index, harnesses_)) {
+        scenario_.harnesses.back().name = scope.prefix + statement->target->path[0];
+        scenario_.harnesses.back().range = statement->target->range;
+      }
+    } else if (keyword == "airbag") {
+      const int index = static_cast<int>(scenario_.airbags.size());
+      scenario_.airbags.emplace_back();
+      if (declare(*statement, EntityKind::kAirbag, index, airbags_)) {
+        scenario_.airbags.back().name = scope.prefix + statement->target->path[0];
+        scenario_.airbags.back().range = statement->target->range;
+      }
+    } else if (keyword == "spring" || keyword == "tension") {
+      const int index = static_cast<int>(scenario_.springs.size());
+      scenario_.springs.emplace_back();
+      if (declare(*statement, EntityKind::kSpring, index, springs_)) {
+        scenario_.springs.back().name = scope.prefix + statement->target->path[0];
+        scenario_.springs.back().tension_only = keyword == "tension";
+        scenario_.springs.back().range = statement->target->range;
+      }
+    } else if (keyword == "constraint") {
+      const int index = static_cast<int>(scenario_.constraints.size());
+      scenario_.constraints.emplace_back();
+      if (declare(*statement, EntityKind::kConstraint, index, constraints_)) {
+        scenario_.constraints.back().name = scope.prefix + statement->target->path[0];
+        scenario_.constraints.back().range = statement->target->range;
+      }
+    } else if (keyword == "contact") {
+      contacts_.push_back({statement, &scope, -1});
+    } else if (keyword == "initial") {
+      initials_.push_back({statement, &scope, -1});
+    } else if (keyword == "output") {
+      outputs_.push_back({statement, &scope, -1});
+    } else {
+      // time, integrator, restart, settle, symmetry: at most one of each.
+      for (const ast::Statement* earlier : run_blocks_) {
+        if (earlier->keyword == keyword) {
+          auto diagnostic = lang::MakeDiagnostic(
+              DiagnosticKind::kDuplicateAttribute, statement->keyword_range,
+              fmt::format("`{}` is given twice", keyword), "given again here");
+          diagnostic.labels.push_back({earlier->keyword_range, "first given here", false});
+          diagnostics_.Consume(std::move(diagnostic));
+        }
+      }
+      run_blocks_.push_back(statement);
+    }
+  }
+}
+
+namespace {
+
+// Reads the named arguments of a call against a list of allowed names; reports unknown and
+// missing ones.
+struct CallArguments {
+  std::map<std::string, const ast::Expr*> named;
+  bool ok = true;
+};
+
+CallArguments ReadArguments(Checker& checker, const ast::Expr& call,
+                            const std::vector<std::string>& allowed,
+                            const std::vector<std::string>& required) {
+  CallArguments result;
+  for (const ast::Argument& argument : call.arguments) {
+    if (argument.name.empty()) {
+      checker.Report(DiagnosticKind::kUnknownArgument, argument.value->range,
+                     fmt::format("`{}` takes named arguments only", call.PathText()),
+                     "name this argument",
+                     fmt::format("write `{}(...)` with `name = value` for each of: {}",
+                                 call.PathText(), fmt::join(allowed, ", ")));
+      result.ok = false;
+      continue;
+    }
+    if (std::find(allowed.begin(), allowed.end(), argument.name) == allowed.end()) {
+      checker.Report(DiagnosticKind::kUnknownArgument, argument.name_range,
+                     fmt::format("`{}` takes no argument `{}`", call.PathText(), argument.name),
+                     "unknown argument", lang::DidYouMean(argument.name, allowed));
+      result.ok = false;
+      continue;
+    }
+    result.named[argument.name] = argument.value.get();
+  }
+  for (const std::string& name : required) {
+    if (!result.named.count(name)) {
+      checker.Report(DiagnosticKind::kMissingArgument, call.range,
+                     fmt::format("`{}` needs the argument `{}`", call.PathText(), name),
+                     fmt::format("`{}` missing", name));
+      result.ok = false;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+void Checker::CheckSceneElements() {
+  for (const Pending& pending : vehicles_) {
+    Vehicle& vehicle = scenario_.vehicles[static_cast<std::size_t>(pending.index)];
+    const BoundBlock bound =
+        Bind(BlockKind::kVehicle, pending.statement->block.get(), pending.statement->range);
+    vehicle.position = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "position")
+                           .value_or(Vec3{});
+    vehicle.orientation = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "orientation")
+                              .value_or(Vec3{});
+    vehicle.velocity = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "velocity")
+                           .value_or(Vec3{});
+    const ast::Statement* motion = One(bound, "motion");
+    if (!motion) continue;
+    const ast::Expr* call = SingleValue(*motion);
+    if (!call) continue;
+    if (call->kind != ast::ExprKind::kCall) {
+      Report(DiagnosticKind::kWrongValueKind, call->range,
+             "`motion` is half_sine(...), trapezoid(...) or table(time -> acceleration)",
+             "not a motion");
+      continue;
+    }
+    const std::string form = call->PathText();
+    Motion& m = vehicle.motion;
+    Scope& scope = *pending.scope;
+    auto read_axis = [&](const CallArguments& arguments) {
+      auto it = arguments.named.find("axis");
+      if (it != arguments.named.end()) {
+        if (auto axis = ExpectDirection(scope, *it->second, "axis")) m.axis = *axis;
+      }
+      auto start = arguments.named.find("start");
+      if (start != arguments.named.end()) {
+        m.start = ExpectQuantity(scope, *start->second, dim::kTime, "start").value_or(0.0);
+      }
+    };
+    if (form == "half_sine") {
+      auto arguments =
+          ReadArguments(*this, *call, {"delta_v", "duration", "axis", "start"},
+                        {"delta_v", "duration"});
+      if (!arguments.ok) continue;
+      m.kind = Motion::Kind::kHalfSine;
+      m.delta_v = ExpectQuantity(scope, *arguments.named["delta_v"], dim::kVelocity, "delta_v")
+                      .value_or(0.0);
+      m.duration = ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration")
+                       .value_or(0.0);
+      if (!(m.duration > 0.0)) {
+        Report(DiagnosticKind::kValueOutOfRange, arguments.named["duration"]->range,
+               "a pulse duration must be positive", "not positive");
+      }
+      read_axis(arguments);
+    } else if (form == "trapezoid") {
+      auto arguments =
+          ReadArguments(*this, *call, {"peak", "rise", "dwell", "fall", "axis", "start"},
+                        {"peak", "rise", "dwell", "fall"});
+      if (!arguments.ok) continue;
+      m.kind = Motion::Kind::kTrapezoid;
+      m.peak = ExpectQuantity(scope, *arguments.named["peak"], dim::kAcceleration, "peak")
+                   .value_or(0.0);
+      m.rise = ExpectQuantity(scope, *arguments.named["rise"], dim::kTime, "rise").value_or(0.0);
+      m.dwell =
+          ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
+      m.fall = ExpectQuantity(scope, *arguments.named["fall"], dim::kTime, "fall").value_or(0.0);
+      read_axis(arguments);
+    } else if (form == "table") {
+      // table(time -> acceleration [-> angular_acceleration], axis = -x) { rows }
+      const ast::Expr* signature = nullptr;
+      CallArguments arguments;
+      for (const ast::Argument& argument : call->arguments) {
+        if (argument.name.empty() && argument.value->kind == ast::ExprKind::kArrow) {
+          signature = argument.value.get();
+        } else if (argument.name == "axis" || argument.name == "start") {
+          arguments.named[argument.name] = argument.value.get();
+        } else {
+          Report(DiagnosticKind::kUnknownArgument,
+                 argument.name.empty() ? argument.value->range : argument.name_range,
+                 "a motion table takes its signature and `axis`, `start`", "unexpected argument");
+        }
+      }
+      const bool six_dof = signature && signature->operands.size() == 3;
+      if (!signature || signature->operands.size() < 2 ||
+          signature->operands[0].PathText() != "time" ||
+          signature->operands[1].PathText() != "acceleration" ||
+          (six_dof && signature->operands[2].PathText() != "angular_acceleration")) {
+        Report(DiagnosticKind::kMissingArgument, call->range,
+               "a motion table is `table(time -> acceleration)` or `table(time -> acceleration "
+               "-> angular_acceleration)`",
+               "signature missing or wrong");
+        continue;
+      }
+      read_axis(arguments);
+      m.kind = six_dof ? Motion::Kind::kSixDof : Motion::Kind::kTable;
+      const BoundBlock rows = Bind(BlockKind::kTable, motion->block.get(), motion->range);
+      double previous = -std::numeric_limits<double>::infinity();
+      for (const ast::Statement* row : rows.rows) {
+        const ast::Expr& arrow = row->values.at(0);
+        if (arrow.operands.size() != (six_dof ? 3u : 2u)) {
+          Report(DiagnosticKind::kMalformedStatement, arrow.range,
+                 fmt::format("a row of this table has {} values", six_dof ? 3 : 2),
+                 "wrong number of values");
+          continue;
+        }
+        auto t = ExpectQuantity(scope, arrow.operands[0], dim::kTime, "time");
+        if (!t) continue;
+        if (!(*t > previous)) {
+          Report(DiagnosticKind::kTableNotMonotone, arrow.operands[0].range,
+                 "table time does not increase", "not after the previous row");
+          continue;
+        }
+        previous = *t;
+        if (six_dof) {
+          auto linear = ExpectVector(scope, arrow.operands[1], dim::kAcceleration, "acceleration");
+          auto angular = ExpectVector(scope, arrow.operands[2], dim::kAngularAcceleration,
+                                      "angular_acceleration");
+          if (linear && angular) {
+            m.six_dof.push_back({*t, (*linear)[0], (*linear)[1], (*linear)[2], (*angular)[0],
+                                 (*angular)[1], (*angular)[2]});
+          }
+        } else if (auto a = ExpectQuantity(scope, arrow.operands[1], dim::kAcceleration,
+                                           "acceleration")) {
+          m.table.push_back({*t, *a});
+        }
+      }
+      if ((six_dof ? m.six_dof.size() : m.table.size()) < 2 && !rows.rows.empty()) {
+        Report(DiagnosticKind::kTableTooShort, call->range, "a motion table needs two rows",
+               "too few rows");
+      } else if (rows.rows.empty()) {
+        Report(DiagnosticKind::kTableTooShort, call->range,
+               "a motion table needs rows: `{ 0 ms -> 0 g  10 ms -> 20 g }`", "no rows");
+      }
+    } else {
+      Report(DiagnosticKind::kUnknownName, call->range,
+             fmt::format("unknown motion `{}`", form), "not a motion",
+             lang::DidYouMean(form, {"half_sine", "trapezoid", "table"}));
+    }
+  }
+
+  for (const Pending& pending : planes_) {
+    Plane& plane = scenario_.planes[static_cast<std::size_t>(pending.index)];
+    if (const ast::Clause* on = pending.statement->FindClause("on")) {
+      if (auto frame = ResolveFrame(*pending.scope, on->value)) plane.frame = *frame;
+    }
+    const BoundBlock bound =
+        Bind(BlockKind::kPlane, pending.statement->block.get(), pending.statement->range);
+    const ast::Statement* corners = One(bound, "corners");
+    if (!corners) continue;
+    if (corners->values.size() != 3) {
+      Report(DiagnosticKind::kWrongValueKind, corners->range,
+             fmt::format("a plane has three corners P1, P2, P3, found {}", corners->values.size()),
+             "not three points");
+      continue;
+    }
+    bool ok = true;
+    for (std::size_t i = 0; i < 3; ++i) {
+      auto point = ExpectVector(*pending.scope, corners->values[i], dim::kLength, "corners");
+      if (point) plane.corners[i] = *point;
+      ok = ok && point.has_value();
+    }
+    if (ok) {
+      const Vec3 normal = Cross(Subtract(plane.corners[1], plane.corners[0]),
+                                Subtract(plane.corners[2], plane.corners[0]));
+      if (!(Norm(normal) > 1e-12)) {
+        Report(DiagnosticKind::kZeroVector, corners->range,
+               fmt::format("the corners of plane `{}` lie on one line", plane.name),
+               "no normal", "P1, P2 and P3 must span a parallelogram");
+      }
+    }
+  }
+
+  for (const Pending& pending : ellipsoids_) {
+    Ellipsoid& ellipsoid = scenario_.ellipsoids[static_cast<std::size_t>(pending.index)];
+    const ast::Clause* on = pending.statement->FindClause("on");
+    if (!on) {
+      Report(DiagnosticKind::kMalformedStatement, pending.statement->range,
+             "an ellipsoid is fixed in a frame: `ellipsoid NAME on FRAME { ... }`", "no `on`");
+    } else if (auto frame = ResolveFrame(*pending.scope, on->value)) {
+      ellipsoid.frame = *frame;
+      if (frame->kind == FrameRef::Kind::kSegment) {
+        scenario_.segments[static_cast<std::size_t>(frame->index)].ellipsoids.push_back(
+            pending.index);
+      }
+    }
+    const BoundBlock bound =
+        Bind(BlockKind::kEllipsoid, pending.statement->block.get(), pending.statement->range);
+    ReadEllipsoid(*pending.scope, bound, BlockKind::kEllipsoid, ellipsoid);
+  }
+
+  CheckContacts();
+  CheckRestraints();
+}
+
+}  // namespace sled::compiler::internal

@@ -1,0 +1,501 @@
+// Values: binding a block's attributes to the schema, evaluating expressions with units and
+// parameters, and reading typed attributes (quantities, vectors, functions).
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/check/context.h"
+#include "compiler/units/unit_table.h"
+
+namespace sled::compiler::internal {
+namespace {
+
+std::string Article(std::string_view word) {
+  return (!word.empty() && std::string_view("aeiou").find(word[0]) != std::string_view::npos)
+             ? fmt::format("an `{}`", word)
+             : fmt::format("a `{}`", word);
+}
+
+}  // namespace
+
+Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
+                                  SourceRange owner_range) {
+  BoundBlock bound;
+  const std::string block_name(BlockName(kind));
+  if (block) {
+    for (const ast::Statement& statement : block->statements) {
+      if (statement.kind == ast::StatementKind::kRow) {
+        if (kind == BlockKind::kTable) {
+          bound.rows.push_back(&statement);
+        } else {
+          Report(DiagnosticKind::kMisplacedStatement, statement.range,
+                 fmt::format("a table row is not allowed in {} block", Article(block_name)),
+                 "rows belong to a table",
+                 "rows follow `= table(x -> y)`, as in `force = table(deflection -> force) { "
+                 "0 mm -> 0 N  10 mm -> 1 kN }`");
+        }
+        continue;
+      }
+      const std::string& keyword = statement.keyword;
+      const bool is_output = kind == BlockKind::kOutput && FindOutput(keyword);
+      if (FindDeclaration(kind, keyword) || is_output) {
+        bound.declarations.push_back(&statement);
+        continue;
+      }
+      const AttributeSpec* spec = FindAttribute(kind, keyword);
+      if (!spec) {
+        const std::vector<BlockKind> elsewhere = BlocksAllowing(keyword);
+        if (!elsewhere.empty()) {
+          std::string places;
+          for (std::size_t i = 0; i < elsewhere.size() && i < 4; ++i) {
+            if (i > 0) places += i + 1 == std::min<std::size_t>(elsewhere.size(), 4) ? " or " : ", ";
+            places += fmt::format("`{}`", BlockName(elsewhere[i]));
+          }
+          Report(DiagnosticKind::kMisplacedStatement, statement.keyword_range,
+                 fmt::format("`{}` is not allowed in {} block", keyword, Article(block_name)),
+                 "not allowed here", fmt::format("`{}` belongs in {} blocks", keyword, places));
+        } else {
+          Report(DiagnosticKind::kUnknownStatement, statement.keyword_range,
+                 fmt::format("unknown attribute `{}` in {} block", keyword, Article(block_name)),
+                 "unknown here", lang::DidYouMean(keyword, KeywordsOf(kind)));
+        }
+        continue;
+      }
+      // An attribute is `name = value`; `at` and `axes` also name a frame: `at pelvis = ...`.
+      const bool wants_target = spec->name == "at" || spec->name == "axes";
+      const bool takes_rows = spec->type == ValueType::kFunction || spec->type == ValueType::kMotion;
+      if (!statement.has_value || (statement.target.has_value() != wants_target) ||
+          !statement.clauses.empty() || (statement.block && !takes_rows)) {
+        Report(DiagnosticKind::kMalformedStatement, statement.range,
+               fmt::format("`{}` is an attribute: write `{}`", keyword,
+                           wants_target ? fmt::format("{} SEGMENT = value", keyword)
+                                        : fmt::format("{} = value", keyword)),
+               "not an attribute statement");
+        continue;
+      }
+      auto& list = bound.attributes[keyword];
+      if (!list.empty() && !spec->repeatable) {
+        auto diagnostic = lang::MakeDiagnostic(
+            DiagnosticKind::kDuplicateAttribute, statement.keyword_range,
+            fmt::format("`{}` is given twice in {} block", keyword, Article(block_name)),
+            "given again here");
+        diagnostic.labels.push_back({list.front()->keyword_range, "first given here", false});
+        diagnostic.help = "remove one of them";
+        diagnostics_.Consume(std::move(diagnostic));
+        continue;
+      }
+      list.push_back(&statement);
+    }
+  }
+  // Missing required attributes; not reported when a syntax error may have eaten them.
+  if (!block || !block->had_syntax_errors) {
+    for (const AttributeSpec& spec : SpecOf(kind).attributes) {
+      if (spec.required && !bound.attributes.count(std::string(spec.name))) {
+        Report(DiagnosticKind::kMissingAttribute, owner_range,
+               fmt::format("{} block needs `{}`", Article(block_name), spec.name),
+               fmt::format("no `{}` given", spec.name),
+               fmt::format("add `{} = ...`: {}", spec.name, spec.doc));
+      }
+    }
+  }
+  return bound;
+}
+
+const ast::Statement* Checker::One(const BoundBlock& bound, std::string_view name) const {
+  auto it = bound.attributes.find(std::string(name));
+  return it == bound.attributes.end() || it->second.empty() ? nullptr : it->second.front();
+}
+
+const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
+  if (statement.values.size() != 1) {
+    Report(DiagnosticKind::kWrongValueKind, statement.values.size() > 1 ? statement.values[1].range
+                                                                        : statement.range,
+           fmt::format("`{}` takes one value, found {}", statement.keyword,
+                       statement.values.size()),
+           "extra value");
+    return nullptr;
+  }
+  return &statement.values[0];
+}
+
+std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
+  switch (expr.kind) {
+    case ast::ExprKind::kNumber: {
+      Value value{{expr.number}, dim::kDimensionless, true};
+      if (expr.unit) {
+        auto unit = ResolveUnit(*expr.unit, diagnostics_);
+        if (!unit) return std::nullopt;
+        value.components[0] *= unit->scale_to_si;
+        value.dimension = unit->dimension;
+        value.bare = false;
+      }
+      return value;
+    }
+    case ast::ExprKind::kVector: {
+      if (expr.operands.size() != 3) {
+        Report(DiagnosticKind::kWrongVectorSize, expr.range,
+               fmt::format("a vector has three components, found {}", expr.operands.size()),
+               "not three components", "write (x, y, z)");
+        return std::nullopt;
+      }
+      Value value{{}, dim::kDimensionless, true};
+      std::optional<Dimension> common;
+      bool failed = false;
+      for (const ast::Expr& operand : expr.operands) {
+        auto component = Evaluate(scope, operand);
+        if (!component) {
+          failed = true;
+          continue;
+        }
+        if (component->components.size() != 1) {
+          Report(DiagnosticKind::kWrongValueKind, operand.range,
+                 "a vector component must be a number", "a vector inside a vector");
+          failed = true;
+          continue;
+        }
+        if (expr.unit && !component->bare) {
+          Report(DiagnosticKind::kDimensionMismatch, operand.range,
+                 "a component has its own unit and the vector has one too", "unit given twice",
+                 "write the unit once, after the closing parenthesis");
+          failed = true;
+          continue;
+        }
+        const bool zero = component->bare && component->components[0] == 0.0;
+        if (!component->bare || !zero) {
+          if (common && !(*common == component->dimension) && !component->bare) {
+            Report(DiagnosticKind::kDimensionMismatch, operand.range,
+                   fmt::format("vector components have different dimensions: {}",
+                               DescribeMismatch(*common, component->dimension)),
+                   "differs from the first component");
+            failed = true;
+          }
+          if (!component->bare) common = component->dimension;
+          value.bare = value.bare && component->bare;
+        }
+        value.components.push_back(component->components[0]);
+      }
+      if (failed) return std::nullopt;
+      if (expr.unit) {
+        auto unit = ResolveUnit(*expr.unit, diagnostics_);
+        if (!unit) return std::nullopt;
+        for (double& component : value.components) component *= unit->scale_to_si;
+        value.dimension = unit->dimension;
+        value.bare = false;
+      } else if (common) {
+        value.dimension = *common;
+      }
+      return value;
+    }
+    case ast::ExprKind::kPath: {
+      Entity* entity = Resolve(scope, expr, {EntityKind::kParameter});
+      if (!entity) return std::nullopt;
+      Parameter& parameter = *parameters_.at(static_cast<std::size_t>(entity->index));
+      if (parameter.state == Parameter::State::kEvaluating) {
+        Report(DiagnosticKind::kUnknownName, expr.range,
+               fmt::format("`{}` is defined in terms of itself", parameter.name),
+               "used in its own definition", "break the cycle with a literal value");
+        parameter.state = Parameter::State::kFailed;
+        return std::nullopt;
+      }
+      if (parameter.state == Parameter::State::kPending) {
+        parameter.state = Parameter::State::kEvaluating;
+        const ast::Expr& definition =
+            parameter.override_expr ? *parameter.override_expr : *parameter.expr;
+        auto value = Evaluate(*parameter.scope, definition);
+        if (parameter.state == Parameter::State::kFailed || !value) {
+          parameter.state = Parameter::State::kFailed;
+          return std::nullopt;
+        }
+        parameter.value = *value;
+        parameter.state = Parameter::State::kDone;
+      }
+      if (parameter.state == Parameter::State::kFailed) return std::nullopt;
+      return parameter.value;
+    }
+    case ast::ExprKind::kParen:
+      return Evaluate(scope, expr.operands.at(0));
+    case ast::ExprKind::kUnary: {
+      auto operand = Evaluate(scope, expr.operands.at(0));
+      if (!operand) return std::nullopt;
+      for (double& component : operand->components) component = -component;
+      return operand;
+    }
+    case ast::ExprKind::kBinary: {
+      auto left = Evaluate(scope, expr.operands.at(0));
+      auto right = Evaluate(scope, expr.operands.at(1));
+      if (!left || !right) return std::nullopt;
+      const bool left_vector = left->components.size() == 3;
+      const bool right_vector = right->components.size() == 3;
+      Value result;
+      result.bare = left->bare && right->bare;
+      if (expr.op == '+' || expr.op == '-') {
+        if (left_vector != right_vector) {
+          Report(DiagnosticKind::kWrongValueKind, expr.range,
+                 "cannot add a vector and a number", "vector and number");
+          return std::nullopt;
+        }
+        const bool left_zero = left->bare && std::all_of(left->components.begin(),
+                                                         left->components.end(),
+                                                         [](double c) { return c == 0.0; });
+        const bool right_zero = right->bare && std::all_of(right->components.begin(),
+                                                           right->components.end(),
+                                                           [](double c) { return c == 0.0; });
+        if (!(left->dimension == right->dimension) && !left_zero && !right_zero) {
+          Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
+                 fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
+                             DescribeMismatch(left->dimension, right->dimension)),
+                 "dimensions differ", MismatchHelp(left->dimension, right->dimension));
+          return std::nullopt;
+        }
+        result.dimension = left_zero ? right->dimension : left->dimension;
+        result.components = left->components;
+        for (std::size_t i = 0; i < result.components.size(); ++i) {
+          result.components[i] += expr.op == '+' ? right->components[i] : -right->components[i];
+        }
+        return result;
+      }
+      if (expr.op == '*' || expr.op == '/') {
+        if (left_vector && right_vector) {
+          Report(DiagnosticKind::kWrongValueKind, expr.range,
+                 "cannot multiply or divide two vectors", "two vectors");
+          return std::nullopt;
+        }
+        if (expr.op == '/' && right_vector) {
+          Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot divide by a vector",
+                 "vector divisor");
+          return std::nullopt;
+        }
+        const Value& vector_side = right_vector ? *right : *left;
+        const double scalar = right_vector ? left->components[0] : right->components[0];
+        if (expr.op == '/' && scalar == 0.0) {
+          Report(DiagnosticKind::kDivisionByZero, expr.operands[1].range,
+                 "division by zero in a constant expression", "this is zero");
+          return std::nullopt;
+        }
+        result.dimension = expr.op == '*' ? left->dimension * right->dimension
+                                          : left->dimension / right->dimension;
+        result.components = vector_side.components;
+        if (&vector_side == &*left) {
+          for (double& c : result.components) c = expr.op == '*' ? c * scalar : c / scalar;
+        } else {
+          for (double& c : result.components) c *= scalar;
+        }
+        return result;
+      }
+      // '^': a scalar raised to a dimensionless constant power.
+      if (left_vector || right_vector || !right->dimension.IsDimensionless()) {
+        Report(DiagnosticKind::kInvalidExponent, expr.range,
+               "a power needs a number base and a dimensionless exponent", "invalid power");
+        return std::nullopt;
+      }
+      const ArithmeticResult power =
+          Power(Quantity{left->components[0], left->dimension},
+                Quantity{right->components[0], right->dimension});
+      if (!power.ok()) {
+        Report(power.status == ArithmeticStatus::kDivisionByZero
+                   ? DiagnosticKind::kDivisionByZero
+                   : DiagnosticKind::kInvalidExponent,
+               expr.range,
+               power.status == ArithmeticStatus::kDivisionByZero
+                   ? "zero raised to a negative power"
+                   : "a quantity with a unit can only be raised to a whole power up to 9",
+               "invalid power");
+        return std::nullopt;
+      }
+      result.components = {power.quantity.value};
+      result.dimension = power.quantity.dimension;
+      return result;
+    }
+    case ast::ExprKind::kCall:
+    case ast::ExprKind::kString:
+    case ast::ExprKind::kBool:
+    case ast::ExprKind::kArrow:
+      Report(DiagnosticKind::kWrongValueKind, expr.range,
+             fmt::format("expected a number or a vector, found {}",
+                         expr.kind == ast::ExprKind::kCall     ? "a call"
+                         : expr.kind == ast::ExprKind::kString ? "a string"
+                         : expr.kind == ast::ExprKind::kBool   ? "`" + expr.text + "`"
+                                                               : "an arrow chain"),
+             "not a quantity");
+      return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+// A bare zero fits any dimension; other bare numbers fit only where no unit is expected.
+bool FitsDimension(const Value& value, Dimension expected) {
+  if (value.dimension == expected) return true;
+  if (!value.bare) return false;
+  return std::all_of(value.components.begin(), value.components.end(),
+                     [](double c) { return c == 0.0; });
+}
+
+}  // namespace
+
+std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& expr,
+                                              Dimension dimension, std::string_view what) {
+  auto value = Evaluate(scope, expr);
+  if (!value) return std::nullopt;
+  if (value->components.size() != 1) {
+    Report(DiagnosticKind::kWrongValueKind, expr.range,
+           fmt::format("`{}` takes one number, found a vector", what), "a vector",
+           fmt::format("expected {}", DescribeDimension(dimension)));
+    return std::nullopt;
+  }
+  if (!FitsDimension(*value, dimension)) {
+    Report(DiagnosticKind::kDimensionMismatch, expr.range,
+           fmt::format("`{}` expects {}, found {}", what, DescribeDimension(dimension),
+                       DescribeDimension(value->dimension)),
+           value->bare ? "no unit" : "wrong dimension", MismatchHelp(dimension, value->dimension));
+    return std::nullopt;
+  }
+  if (!std::isfinite(value->components[0])) {
+    Report(DiagnosticKind::kInvalidNumber, expr.range,
+           fmt::format("`{}` evaluates to a value that is not finite", what), "overflows");
+    return std::nullopt;
+  }
+  return value->components[0];
+}
+
+std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr,
+                                          Dimension dimension, std::string_view what) {
+  auto value = Evaluate(scope, expr);
+  if (!value) return std::nullopt;
+  if (value->components.size() != 3) {
+    Report(DiagnosticKind::kWrongValueKind, expr.range,
+           fmt::format("`{}` takes a vector (x, y, z), found one number", what), "one number",
+           fmt::format("write ({0}, {0}, {0}) with a unit of {1}", "...",
+                       DescribeDimension(dimension)));
+    return std::nullopt;
+  }
+  if (!FitsDimension(*value, dimension)) {
+    Report(DiagnosticKind::kDimensionMismatch, expr.range,
+           fmt::format("`{}` expects {}, found {}", what, DescribeDimension(dimension),
+                       DescribeDimension(value->dimension)),
+           value->bare ? "no unit" : "wrong dimension", MismatchHelp(dimension, value->dimension));
+    return std::nullopt;
+  }
+  for (double component : value->components) {
+    if (!std::isfinite(component)) {
+      Report(DiagnosticKind::kInvalidNumber, expr.range,
+             fmt::format("`{}` has a component that is not finite", what), "overflows");
+      return std::nullopt;
+    }
+  }
+  return Vec3{value->components[0], value->components[1], value->components[2]};
+}
+
+std::optional<bool> Checker::ExpectBool(const ast::Expr& expr, std::string_view what) {
+  if (expr.kind != ast::ExprKind::kBool) {
+    Report(DiagnosticKind::kWrongValueKind, expr.range,
+           fmt::format("`{}` is `true` or `false`", what), "not a boolean");
+    return std::nullopt;
+  }
+  return expr.text == "true";
+}
+
+std::optional<Vec3> Checker::ExpectDirection(Scope& scope, const ast::Expr& expr,
+                                             std::string_view what) {
+  // Axis words: x, -x, y, -y, z, -z.
+  const ast::Expr* word = &expr;
+  double sign = 1.0;
+  if (expr.kind == ast::ExprKind::kUnary && expr.operands.at(0).kind == ast::ExprKind::kPath) {
+    word = &expr.operands[0];
+    sign = -1.0;
+  }
+  if (word->kind == ast::ExprKind::kPath && word->path.size() == 1 &&
+      (word->path[0] == "x" || word->path[0] == "y" || word->path[0] == "z")) {
+    Vec3 axis{0, 0, 0};
+    axis[static_cast<std::size_t>(word->path[0][0] - 'x')] = sign;
+    return axis;
+  }
+  auto vector = ExpectVector(scope, expr, dim::kDimensionless, what);
+  if (!vector) return std::nullopt;
+  const double length =
+      std::sqrt((*vector)[0] * (*vector)[0] + (*vector)[1] * (*vector)[1] +
+                (*vector)[2] * (*vector)[2]);
+  if (!(length > 1e-12)) {
+    Report(DiagnosticKind::kZeroVector, expr.range,
+           fmt::format("`{}` is a direction and cannot be zero", what), "zero length",
+           "give a direction such as (0, 1, 0) or the word y");
+    return std::nullopt;
+  }
+  return Vec3{(*vector)[0] / length, (*vector)[1] / length, (*vector)[2] / length};
+}
+
+bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange range) {
+  const bool below = spec.min_exclusive ? !(value > spec.min) : !(value >= spec.min);
+  const bool above = !(value <= spec.max);
+  if (!below && !above) return true;
+  const std::string unit = SiUnitSymbol(spec.dimension);
+  const auto bound = [&](double x) {
+    return unit.empty() ? fmt::format("{:g}", x) : fmt::format("{:g} {}", x, unit);
+  };
+  std::string rule;
+  if (std::isinf(spec.max)) {
+    rule = spec.min_exclusive ? fmt::format("greater than {}", bound(spec.min))
+                              : fmt::format("at least {}", bound(spec.min));
+  } else if (std::isinf(spec.min)) {
+    rule = fmt::format("at most {}", bound(spec.max));
+  } else {
+    rule = fmt::format("{} {} and {}", spec.min_exclusive ? "above" : "between", bound(spec.min),
+                       bound(spec.max));
+  }
+  DiagnosticKind kind = DiagnosticKind::kValueOutOfRange;
+  if (spec.name == "mass") kind = DiagnosticKind::kNonPositiveMass;
+  Report(kind, range,
+         fmt::format("`{}` is {}, but it must be {}", spec.name,
+                     unit.empty() ? fmt::format("{:g}", value)
+                                  : fmt::format("{:g} {}", value, unit),
+                     rule),
+         "out of range", std::string(spec.doc));
+  return false;
+}
+
+std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound,
+                                            BlockKind kind, std::string_view name) {
+  const ast::Statement* statement = One(bound, name);
+  if (!statement) return std::nullopt;
+  const ast::Expr* expr = SingleValue(*statement);
+  if (!expr) return std::nullopt;
+  const AttributeSpec* spec = FindAttribute(kind, name);
+  auto value = ExpectQuantity(scope, *expr, spec->dimension, name);
+  if (value && !CheckRange(*spec, *value, expr->range)) return std::nullopt;
+  return value;
+}
+
+std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                        std::string_view name) {
+  const ast::Statement* statement = One(bound, name);
+  if (!statement) return std::nullopt;
+  const ast::Expr* expr = SingleValue(*statement);
+  if (!expr) return std::nullopt;
+  const AttributeSpec* spec = FindAttribute(kind, name);
+  if (spec->dimension == dim::kDimensionless && name == "axis") {
+    return ExpectDirection(scope, *expr, name);
+  }
+  return ExpectVector(scope, *expr, spec->dimension, name);
+}
+
+std::optional<bool> Checker::ReadBool(const BoundBlock& bound, std::string_view name) {
+  const ast::Statement* statement = One(bound, name);
+  if (!statement) return std::nullopt;
+  const ast::Expr* expr = SingleValue(*statement);
+  if (!expr) return std::nullopt;
+  return ExpectBool(*expr, name);
+}
+
+std::optional<FunctionId> Checker::ReadFunction(Scope& scope, const BoundBlock& bound,
+                                                BlockKind kind, std::string_view name) {
+  const ast::Statement* statement = One(bound, name);
+  if (!statement) return std::nullopt;
+  const ast::Expr* expr = SingleValue(*statement);
+  if (!expr) return std::nullopt;
+  const AttributeSpec* spec = FindAttribute(kind, name);
+  return ExpectFunction(scope, *statement, *expr, spec->argument, spec->dimension, name);
+}
+
+}  // namespace sled::compiler::internal

@@ -1,0 +1,336 @@
+// The checker's output: a scenario with every name resolved, every number in SI units, and
+// every physical rule the checker knows verified. Lowering (compiler::Lower) turns it into the
+// flat runtime::Model; the dumper prints it for tests and `sled check --dump-checked`.
+//
+// Indices refer into the vectors of the same CheckedScenario. Every entity keeps the source range
+// of its declaration, so the runtime's side table can name the line of a runtime warning.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/units/dimension.h"
+#include "lang/source/source_range.h"
+
+namespace sled::compiler {
+
+using Vec3 = std::array<double, 3>;
+using lang::SourceRange;
+
+// Something positions can be given in: the ground (inertial frame), a vehicle or a segment.
+struct FrameRef {
+  enum class Kind { kGround, kVehicle, kSegment };
+  Kind kind = Kind::kGround;
+  int index = -1;  // into vehicles or segments; -1 for the ground
+  friend bool operator==(const FrameRef&, const FrameRef&) = default;
+};
+
+// A function of one variable as in CVS: constant, table (linear interpolation) or a polynomial of
+// degree up to five, with the CVS unloading parameters for force–deflection use.
+struct Function {
+  enum class Kind { kConstant, kTable, kPolynomial };
+  std::string name;  // empty for an inline function
+  Kind kind = Kind::kConstant;
+  Dimension argument;  // dimension of x
+  Dimension result;    // dimension of f(x)
+  double constant = 0.0;
+  std::vector<std::array<double, 2>> points;  // kTable: (x, f(x)), x strictly increasing
+  std::vector<double> coefficients;           // kPolynomial: c0 + c1 x + ... + c5 x^5
+  // Unloading (CVS force–deflection): fraction of energy dissipated on unloading, permanent
+  // deflection as a fraction of the largest deflection, and an optional unloading slope.
+  double energy_loss = 0.0;
+  double permanent_set = 0.0;
+  std::optional<double> unload_slope;
+  SourceRange range;
+};
+
+// A function reference: an index into CheckedScenario::functions (inline functions are added there
+// with an empty name).
+using FunctionId = int;
+
+struct Ellipsoid {
+  std::string name;
+  FrameRef frame;
+  Vec3 semi_axes{};
+  Vec3 center{};       // in the frame
+  Vec3 orientation{};  // yaw, pitch, roll [rad] of the ellipsoid axes in the frame
+  double degree = 2.0;  // above 2: hyper-ellipsoid
+  SourceRange range;
+};
+
+struct Segment {
+  std::string name;  // qualified: occupant.pelvis
+  int body = -1;
+  double mass = 0.0;
+  Vec3 inertia{};          // principal moments [kg*m^2]
+  Vec3 principal_axes{};   // yaw, pitch, roll [rad] of the principal axes in the segment frame
+  bool singular = false;   // massless, kept in place by constraints
+  std::vector<int> ellipsoids;
+  SourceRange range;
+};
+
+enum class JointType { kBall, kPin, kEuler, kSlip, kNull };
+
+struct Joint {
+  std::string name;
+  JointType type = JointType::kBall;
+  int parent = -1;  // segment
+  int child = -1;   // segment
+  Vec3 location_in_parent{};
+  Vec3 location_in_child{};
+  Vec3 axes_in_parent{};  // yaw, pitch, roll [rad] of the joint axes in each segment
+  Vec3 axes_in_child{};
+  Vec3 axis{0, 0, 1};     // pin and slip joints: unit vector in the parent
+  // Torque characteristics: flexure and twist for ball and pin joints; precession, nutation and
+  // spin for Euler joints. -1 when absent.
+  FunctionId flexure = -1;
+  FunctionId twist = -1;
+  FunctionId precession = -1;
+  FunctionId nutation = -1;
+  FunctionId spin = -1;
+  double viscous = 0.0;      // [N*m*s/rad]
+  double coulomb = 0.0;      // [N*m]
+  double energy_loss = 0.0;  // fraction dissipated per loading cycle
+  std::optional<double> stop;        // flexure stop angle [rad]
+  std::optional<double> twist_stop;  // [rad]
+  bool stop_impulse = false;
+  double restitution = 0.0;
+  // Locking: axes locked at the start (bit 0 precession, 1 nutation, 2 spin; all three for a
+  // locked ball or pin joint), and the torque levels that lock and unlock them.
+  unsigned locked_axes = 0;
+  std::optional<double> lock_below;
+  std::optional<double> unlock_above;
+  SourceRange range;
+};
+
+struct Body {
+  std::string name;
+  std::vector<int> segments;
+  std::vector<int> joints;
+  std::vector<int> reference_segments;  // the root of each tree (null joints start new ones)
+  SourceRange range;
+};
+
+struct Motion {
+  enum class Kind { kNone, kHalfSine, kTrapezoid, kTable, kSixDof };
+  Kind kind = Kind::kNone;
+  Vec3 axis{1, 0, 0};  // direction of the acceleration for single-axis pulses
+  double start = 0.0;
+  double delta_v = 0.0;   // kHalfSine
+  double duration = 0.0;  // kHalfSine
+  double peak = 0.0;      // kTrapezoid: peak acceleration and the three phases
+  double rise = 0.0;
+  double dwell = 0.0;
+  double fall = 0.0;
+  std::vector<std::array<double, 2>> table;  // kTable: (t, a)
+  std::vector<std::array<double, 7>> six_dof;  // kSixDof: t, linear (3), angular (3) acceleration
+};
+
+struct Vehicle {
+  std::string name;
+  Motion motion;
+  Vec3 position{};
+  Vec3 orientation{};
+  Vec3 velocity{};
+  SourceRange range;
+};
+
+struct Plane {
+  std::string name;
+  FrameRef frame;
+  std::array<Vec3, 3> corners{};  // P1, P2, P3: a parallelogram; normal (P2-P1)x(P3-P1)
+  SourceRange range;
+};
+
+// One side of a contact: a segment's ellipsoid, or a surface.
+struct SurfaceRef {
+  enum class Kind { kEllipsoid, kPlane };
+  Kind kind = Kind::kEllipsoid;
+  int index = -1;
+  friend bool operator==(const SurfaceRef&, const SurfaceRef&) = default;
+};
+
+struct Contact {
+  SurfaceRef first;   // an ellipsoid on a segment
+  SurfaceRef second;  // a plane or another ellipsoid
+  FunctionId force = -1;  // deflection -> force
+  double damping = 0.0;   // [N*s/m]
+  double friction = 0.0;
+  bool impulse = false;   // first-contact impulse
+  double restitution = 0.0;
+  SourceRange range;
+};
+
+// A point of a belt's path: an anchor fixed in a frame, or a segment whose ellipsoid it wraps.
+struct BeltPoint {
+  enum class Kind { kAnchor, kSegment };
+  Kind kind = Kind::kAnchor;
+  FrameRef frame;  // kAnchor: where the point is fixed
+  Vec3 point{};    // kAnchor: position in that frame
+  int segment = -1;  // kSegment
+};
+
+struct Belt {
+  std::string name;
+  int harness = -1;
+  FrameRef frame;
+  std::vector<BeltPoint> path;
+  FunctionId force = -1;  // strain -> force
+  double slack = 0.0;
+  double pretension = 0.0;
+  double friction = 0.0;
+  SourceRange range;
+};
+
+struct Harness {
+  std::string name;
+  FrameRef frame;
+  std::vector<int> belts;
+  double friction = 0.0;
+  SourceRange range;
+};
+
+struct Airbag {
+  std::string name;
+  FrameRef frame;
+  Vec3 position{};
+  Vec3 orientation{};
+  Vec3 semi_axes{};
+  double deploy_time = 0.0;
+  FunctionId inflow = -1;  // time -> mass flow
+  double vent_area = 0.0;
+  double ambient_pressure = 101325.0;
+  std::vector<int> contact_segments;
+  SourceRange range;
+};
+
+// Spring–dampers and tension elements between two points on two frames.
+struct SpringDamper {
+  std::string name;
+  bool tension_only = false;
+  FrameRef first;
+  FrameRef second;
+  Vec3 point_in_first{};
+  Vec3 point_in_second{};
+  FunctionId stiffness = -1;  // deflection -> force
+  double damping = 0.0;
+  std::optional<double> free_length;  // default: the initial distance
+  SourceRange range;
+};
+
+struct Constraint {
+  enum class Kind { kFixedPoint, kFixedDistance, kRolling, kSliding };
+  std::string name;
+  Kind kind = Kind::kFixedPoint;
+  FrameRef first;
+  FrameRef second;
+  Vec3 point_in_first{};
+  Vec3 point_in_second{};
+  std::optional<double> distance;  // kFixedDistance; default: the initial distance
+  Vec3 axis{1, 0, 0};              // kSliding: direction in the second frame
+  SourceRange range;
+};
+
+struct InitialCondition {
+  enum class Kind { kBody, kSegment, kJoint, kVehicle };
+  Kind kind = Kind::kBody;
+  int index = -1;
+  std::optional<Vec3> position;
+  std::optional<Vec3> orientation;
+  std::optional<Vec3> velocity;
+  std::optional<Vec3> angular_velocity;
+  std::optional<Vec3> joint_angles;  // kJoint: (precession, nutation, spin) or (flexure..)
+  SourceRange range;
+};
+
+struct OutputRequest {
+  enum class Kind {
+    kAcceleration,
+    kVelocity,
+    kPosition,
+    kAngularAcceleration,
+    kAngularVelocity,
+    kOrientation,
+    kJointAngle,
+    kJointTorque,
+    kJointForce,
+    kContactForce,
+    kBeltForce,
+    kAirbagPressure,
+    kSpringForce,
+  };
+  Kind kind = Kind::kAcceleration;
+  std::string label;  // channel prefix: `as` name or the target's name
+  int index = -1;     // segment, joint, contact, belt, airbag or spring
+  Vec3 point{};       // point requests: the point in the segment frame
+  SourceRange range;
+};
+
+struct Criterion {
+  enum class Kind {
+    kHic15,
+    kHic36,
+    kHead3ms,
+    kChest3ms,
+    kGaddHead,
+    kGaddChest,
+    kNij,
+    kNeckTension,
+    kNeckCompression,
+    kFemurLoad,
+    kViscousCriterion,
+  };
+  Kind kind = Kind::kHic15;
+  int segment = -1;  // head, chest criteria
+  int joint = -1;    // neck and femur criteria
+  SourceRange range;
+};
+
+enum class IntegratorMethod { kExponential, kDormandPrince, kRosenbrock };
+enum class Symmetry { kNone, kPlanar, kMirror };
+
+struct RunSettings {
+  double start = 0.0;
+  double end = 0.0;
+  double output_every = 0.0;
+  IntegratorMethod method = IntegratorMethod::kExponential;
+  double relative_tolerance = 1e-6;
+  double absolute_tolerance = 1e-9;
+  double min_step = 1e-9;
+  std::optional<double> max_step;
+  std::optional<double> initial_step;
+  Vec3 gravity{0, 0, -9.80665};
+  std::optional<double> checkpoint_every;
+  std::string resume_from;
+  std::optional<double> settle_duration;
+  Symmetry symmetry = Symmetry::kNone;
+  std::vector<std::array<int, 2>> mirror_pairs;  // segment pairs mirrored in the xz plane
+};
+
+struct CheckedScenario {
+  std::string title;
+  RunSettings run;
+  std::vector<Function> functions;
+  std::vector<Body> bodies;
+  std::vector<Segment> segments;
+  std::vector<Joint> joints;
+  std::vector<Ellipsoid> ellipsoids;
+  std::vector<Vehicle> vehicles;
+  std::vector<Plane> planes;
+  std::vector<Contact> contacts;
+  std::vector<Harness> harnesses;
+  std::vector<Belt> belts;
+  std::vector<Airbag> airbags;
+  std::vector<SpringDamper> springs;
+  std::vector<Constraint> constraints;
+  std::vector<InitialCondition> initial_conditions;
+  std::vector<OutputRequest> outputs;
+  std::vector<Criterion> criteria;
+};
+
+// A stable, range-free text form: equal dumps mean equal checked scenarios.
+std::string Dump(const CheckedScenario& scenario);
+
+}  // namespace sled::compiler

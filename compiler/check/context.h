@@ -1,0 +1,214 @@
+// The checker's working state, shared by the files that check one domain each (values, bodies,
+// scene elements, outputs, lints). Internal to compiler/check.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/check/check.h"
+#include "compiler/check/schema.h"
+#include "compiler/units/quantity.h"
+
+namespace sled::compiler::internal {
+
+namespace ast = lang::ast;
+using lang::DiagnosticKind;
+
+enum class EntityKind {
+  kGround,
+  kModule,
+  kBody,
+  kSegment,
+  kJoint,
+  kEllipsoid,
+  kVehicle,
+  kPlane,
+  kFunction,
+  kBelt,
+  kHarness,
+  kAirbag,
+  kSpring,
+  kConstraint,
+  kParameter,
+};
+
+std::string_view EntityKindName(EntityKind kind);
+// Parses a reference-kind word of the schema ("segment", "function", ...).
+std::optional<EntityKind> EntityKindFromName(std::string_view name);
+
+struct Scope;
+
+struct Entity {
+  EntityKind kind = EntityKind::kGround;
+  int index = -1;  // into the CheckedScenario vector of its kind; parameters: into parameters_
+  SourceRange range;
+  Scope* inner = nullptr;  // bodies and modules: their names
+  bool used = false;
+};
+
+// Names visible in a file, a body or a module. Lookups of a plain name walk up `parent`; the
+// parts after the first dot of a path look only in `inner` scopes (and their `fallback`).
+struct Scope {
+  Scope* parent = nullptr;
+  Scope* fallback = nullptr;  // a body's module, for `occupant.some_function`
+  std::string prefix;         // qualified-name prefix: "occupant."
+  std::string directory;      // folder of the file, for relative imports
+  std::map<std::string, Entity> names;
+};
+
+// A parameter or `let`: evaluated on first use, in the scope where it was declared.
+struct Parameter {
+  std::string name;
+  const ast::Expr* expr = nullptr;
+  std::optional<ast::Expr> override_expr;  // from --set
+  Scope* scope = nullptr;
+  enum class State { kPending, kEvaluating, kDone, kFailed } state = State::kPending;
+  struct Value {
+    std::vector<double> components;  // one for a scalar, three for a vector
+    Dimension dimension;
+    bool bare = false;  // written without any unit
+  } value;
+  bool is_param = true;
+  SourceRange range;
+};
+
+using Value = Parameter::Value;
+
+// A function whose signature is not written (`polynomial(0, 2.5 N*m/deg)`) gets it from its
+// first use; the raw coefficients are kept until then.
+struct PendingPolynomial {
+  std::vector<Value> coefficients;
+  std::vector<SourceRange> ranges;
+  bool resolved = false;
+};
+
+class Checker {
+ public:
+  Checker(lang::SourceManager& sources, const CheckOptions& options);
+  CheckedScenario Run(const ast::File& file);
+
+  // --- diagnostics (check.cpp)
+  void Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label = {},
+              std::string help = {});
+
+  // --- scopes and names (check.cpp)
+  Scope* NewScope(Scope* parent, std::string prefix, std::string directory);
+  bool Declare(Scope& scope, const std::string& name, Entity entity);
+  // Resolves a path; reports E0204/E0205 unless `quiet`. `kinds` empty accepts any kind.
+  Entity* Resolve(Scope& scope, const ast::Expr& path, const std::vector<EntityKind>& kinds,
+                  bool quiet = false);
+  std::vector<std::string> NamesOfKinds(Scope& scope, const std::vector<EntityKind>& kinds);
+
+  // --- values (check_values.cpp)
+  std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);
+  std::optional<double> ExpectQuantity(Scope& scope, const ast::Expr& expr, Dimension dimension,
+                                       std::string_view what);
+  std::optional<Vec3> ExpectVector(Scope& scope, const ast::Expr& expr, Dimension dimension,
+                                   std::string_view what);
+  std::optional<bool> ExpectBool(const ast::Expr& expr, std::string_view what);
+  std::optional<Vec3> ExpectDirection(Scope& scope, const ast::Expr& expr, std::string_view what);
+  // A function attribute: a name, constant/table/polynomial(...), or a quantity read as a
+  // constant or linear function. `rows` is the statement's block (table rows).
+  std::optional<FunctionId> ExpectFunction(Scope& scope, const ast::Statement& statement,
+                                           const ast::Expr& expr, Dimension argument,
+                                           Dimension result, std::string_view what);
+  // Fills the function reserved at `index` from `function NAME = table(...) { rows }`.
+  void DefineFunction(Scope& scope, const ast::Statement& statement, int index);
+  // Builds a function from constant(...), table(...) or polynomial(...) into `function`; when
+  // `expected` is given (argument, result) the signature must match. False after reporting.
+  bool BuildFunction(Scope& scope, const ast::Statement& statement, const ast::Expr& call,
+                     std::optional<std::pair<Dimension, Dimension>> expected, Function& function,
+                     int index);
+  // Checks a declared function against the signature a use site expects.
+  bool MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use);
+  bool CheckRange(const AttributeSpec& spec, double value, SourceRange range);
+
+  // The attributes of one block, read against the schema: unknown, misplaced, duplicate and
+  // missing attributes are reported here. Declarations in the block are returned for the caller.
+  struct BoundBlock {
+    std::map<std::string, std::vector<const ast::Statement*>> attributes;
+    std::vector<const ast::Statement*> declarations;
+    std::vector<const ast::Statement*> rows;
+  };
+  BoundBlock Bind(BlockKind kind, const ast::Block* block, SourceRange owner_range);
+  const ast::Statement* One(const BoundBlock& bound, std::string_view name) const;
+  // A statement that must be `keyword = value` (one value, no target or clauses).
+  const ast::Expr* SingleValue(const ast::Statement& statement);
+
+  // Typed attribute readers over a bound block; absent attributes give nullopt silently.
+  std::optional<double> ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                     std::string_view name);
+  std::optional<Vec3> ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                 std::string_view name);
+  std::optional<bool> ReadBool(const BoundBlock& bound, std::string_view name);
+  std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                         std::string_view name);
+
+  // --- declarations (check_scene.cpp, check_bodies.cpp, check_outputs.cpp)
+  void DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
+  void CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
+                             const std::string& instance_name, SourceRange instance_range);
+  void CheckBodyDetails();
+  void CheckSceneElements();
+  void CheckContacts();
+  void CheckRestraints();
+  void ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind, Ellipsoid& ellipsoid);
+  // `at FRAME = (x, y, z) mm` statements of a joint, spring or constraint: one point per frame.
+  // Reports a frame that is neither of the two, and (when `required`) a missing one.
+  std::array<std::optional<Vec3>, 2> ReadAtPoints(Scope& scope, const BoundBlock& bound,
+                                                   std::string_view keyword,
+                                                   const std::array<FrameRef, 2>& frames,
+                                                   SourceRange owner, bool required);
+  // `: kind(A -> B)` or `: A -> B`: the two frames a joint, spring or constraint connects.
+  std::optional<std::array<FrameRef, 2>> ReadConnection(Scope& scope,
+                                                        const ast::Statement& statement,
+                                                        const ast::Expr& arrow);
+  void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
+  void CheckInitialConditions();
+  void CheckOutputs();
+  void CheckTopology(Body& body, int body_index);
+  void RunLints();
+  // Loads and declares an import; returns the alias entity.
+  void Import(Scope& scope, const ast::Statement& statement);
+
+  std::optional<FrameRef> ResolveFrame(Scope& scope, const ast::Expr& expr);
+  std::string FrameName(const FrameRef& frame) const;
+
+  lang::SourceManager& sources_;
+  const CheckOptions& options_;
+  lang::DiagnosticConsumer& diagnostics_;
+  CheckedScenario scenario_;
+
+  std::vector<std::unique_ptr<Scope>> scopes_;
+  std::vector<std::unique_ptr<Parameter>> parameters_;
+  std::vector<std::unique_ptr<ast::File>> modules_;       // parsed imports, kept alive
+  std::map<std::string, Scope*> module_scopes_;           // by file path
+  std::vector<std::string> import_stack_;                 // for cycle detection
+  std::map<FunctionId, PendingPolynomial> pending_polynomials_;
+  std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
+  Scope* scene_scope_ = nullptr;
+
+  // Work lists filled while declaring and processed once every name is known.
+  struct Pending {
+    const ast::Statement* statement;
+    Scope* scope;
+    int index;
+  };
+  struct PendingBody {
+    const ast::Statement* statement;
+    Scope* scope;  // the body's scope
+    int index;
+  };
+  std::vector<PendingBody> bodies_;
+  std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,
+      springs_, constraints_, initials_, outputs_, functions_;
+  std::vector<const ast::Statement*> run_blocks_;  // time, integrator, restart, settle, symmetry
+  const ast::Statement* scenario_statement_ = nullptr;
+  BoundBlock scenario_bound_;
+  std::vector<Entity*> lintable_;  // functions, surfaces and parameters, for unused checks
+};
+
+}  // namespace sled::compiler::internal

@@ -1,0 +1,340 @@
+#include "lang/format/formatter.h"
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace sled::lang {
+namespace {
+
+constexpr std::size_t kIndentWidth = 2;
+constexpr std::size_t kContinuationIndent = 4;
+constexpr std::size_t kColumnLimit = 100;
+
+// Binding strength, loosest first, following the grammar: arrow, sum, product, unary, power,
+// primary. An operand weaker than its position allows is printed in parentheses.
+enum Level : int {
+  kArrowLevel = 0,
+  kSumLevel,
+  kProductLevel,
+  kUnaryLevel,
+  kPowerLevel,
+  kPrimaryLevel,
+};
+
+// Display columns: UTF-8 continuation bytes take none.
+std::size_t Columns(std::string_view text) {
+  std::size_t columns = 0;
+  for (const char c : text) columns += (static_cast<unsigned char>(c) & 0xC0u) != 0x80u;
+  return columns;
+}
+
+bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+
+// Whether `text` is a number the grammar reads: digits [. digits] [e [+-] digits]. Trees from
+// other front ends may carry no spelling or a foreign one.
+bool IsNumberSpelling(std::string_view text) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t start = i;
+    while (i < text.size() && IsDigit(text[i])) ++i;
+    return i - start;
+  };
+  if (digits() == 0) return false;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    digits();
+  }
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == text.size();
+}
+
+bool HasOwnSpelling(const ast::Expr& expr) { return IsNumberSpelling(expr.text); }
+
+int LevelOf(const ast::Expr& expr) {
+  switch (expr.kind) {
+    case ast::ExprKind::kArrow:
+      return kArrowLevel;
+    case ast::ExprKind::kBinary:
+      switch (expr.op) {
+        case '+':
+        case '-':
+          return kSumLevel;
+        case '^':
+          return kPowerLevel;
+        default:
+          return kProductLevel;
+      }
+    case ast::ExprKind::kUnary:
+      return kUnaryLevel;
+    case ast::ExprKind::kNumber:
+      // A negative number without a spelling prints with a sign, which reads as unary minus.
+      return !HasOwnSpelling(expr) && expr.number < 0 ? kUnaryLevel : kPrimaryLevel;
+    default:
+      return kPrimaryLevel;
+  }
+}
+
+void AppendUnit(const ast::Unit& unit, std::string& out) {
+  // Factors keep their order (the tree is order-sensitive); a negative exponent after the first
+  // factor is written with `/`, and a leading one as `s^-1` since `1/s` is not a unit.
+  bool first = true;
+  for (const ast::UnitFactor& factor : unit.factors) {
+    int exponent = factor.exponent;
+    if (!first) {
+      out += exponent < 0 ? '/' : '*';
+      if (exponent < 0) exponent = -exponent;
+    }
+    first = false;
+    out += factor.symbol;
+    if (exponent != 1) out += fmt::format("^{}", exponent);
+  }
+}
+
+void AppendString(std::string_view text, std::string& out) {
+  out += '"';
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        break;  // a string cannot hold a carriage return, and it has no escape
+      default:
+        out += c;
+    }
+  }
+  out += '"';
+}
+
+void AppendExpr(const ast::Expr& expr, std::string& out);
+
+void AppendOperand(const ast::Expr& expr, int min_level, std::string& out) {
+  const bool parens = LevelOf(expr) < min_level;
+  if (parens) out += '(';
+  AppendExpr(expr, out);
+  if (parens) out += ')';
+}
+
+void AppendPath(const std::vector<std::string>& path, std::string& out) {
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (i > 0) out += '.';
+    out += path[i];
+  }
+}
+
+void AppendExpr(const ast::Expr& expr, std::string& out) {
+  switch (expr.kind) {
+    case ast::ExprKind::kNumber:
+      out += HasOwnSpelling(expr) ? expr.text : fmt::format("{}", expr.number);
+      if (expr.unit) {
+        out += ' ';
+        AppendUnit(*expr.unit, out);
+      }
+      return;
+    case ast::ExprKind::kVector:
+      out += '(';
+      for (std::size_t i = 0; i < expr.operands.size(); ++i) {
+        if (i > 0) out += ", ";
+        AppendOperand(expr.operands[i], kArrowLevel, out);
+      }
+      out += ')';
+      if (expr.unit) {
+        out += ' ';
+        AppendUnit(*expr.unit, out);
+      }
+      return;
+    case ast::ExprKind::kPath:
+      AppendPath(expr.path, out);
+      return;
+    case ast::ExprKind::kString:
+      AppendString(expr.text, out);
+      return;
+    case ast::ExprKind::kBool:
+      out += expr.text;
+      return;
+    case ast::ExprKind::kCall:
+      AppendPath(expr.path, out);
+      out += '(';
+      for (std::size_t i = 0; i < expr.arguments.size(); ++i) {
+        const ast::Argument& argument = expr.arguments[i];
+        if (i > 0) out += ", ";
+        if (!argument.name.empty()) out += argument.name + " = ";
+        if (argument.value) AppendOperand(*argument.value, kArrowLevel, out);
+      }
+      out += ')';
+      return;
+    case ast::ExprKind::kUnary:
+      out += expr.op;
+      if (!expr.operands.empty()) AppendOperand(expr.operands[0], kUnaryLevel, out);
+      return;
+    case ast::ExprKind::kBinary: {
+      if (expr.operands.size() != 2) return;
+      // Left-associative + - * /; `^` takes a primary on the left and a unary on the right.
+      const int level = LevelOf(expr);
+      const int left = level == kPowerLevel ? kPrimaryLevel : level;
+      const int right = level == kPowerLevel ? kUnaryLevel : level + 1;
+      AppendOperand(expr.operands[0], left, out);
+      out += ' ';
+      out += expr.op;
+      out += ' ';
+      AppendOperand(expr.operands[1], right, out);
+      return;
+    }
+    case ast::ExprKind::kArrow:
+      for (std::size_t i = 0; i < expr.operands.size(); ++i) {
+        if (i > 0) out += " -> ";
+        AppendOperand(expr.operands[i], kSumLevel, out);
+      }
+      return;
+    case ast::ExprKind::kParen:
+      out += '(';
+      if (!expr.operands.empty()) AppendExpr(expr.operands[0], out);
+      out += ')';
+      return;
+  }
+}
+
+std::string ExprText(const ast::Expr& expr) {
+  std::string out;
+  AppendExpr(expr, out);
+  return out;
+}
+
+bool IsEmpty(const ast::Block& block) {
+  return block.statements.empty() && block.closing_comments.empty();
+}
+
+class Printer {
+ public:
+  std::string Take() { return std::move(out_); }
+
+  void PrintBlockBody(const ast::Block& block, std::size_t depth) {
+    bool first = true;
+    for (const ast::Statement& statement : block.statements) {
+      // No blank line opens a block or the file.
+      if (!first && statement.blank_line_before) out_ += '\n';
+      first = false;
+      for (const ast::Comment& comment : statement.leading_comments) {
+        PrintComment(comment, depth);
+      }
+      PrintStatement(statement, depth);
+    }
+    for (const ast::Comment& comment : block.closing_comments) PrintComment(comment, depth);
+  }
+
+ private:
+  static std::string Indent(std::size_t depth) { return std::string(depth * kIndentWidth, ' '); }
+
+  void PrintComment(const ast::Comment& comment, std::size_t depth) {
+    out_ += Indent(depth);
+    out_ += "//";
+    out_ += comment.text;
+    out_ += '\n';
+  }
+
+  void PrintStatement(const ast::Statement& statement, std::size_t depth) {
+    const std::string indent = Indent(depth);
+    std::string line = indent;
+    if (statement.kind == ast::StatementKind::kRow) {
+      if (!statement.values.empty()) AppendExpr(statement.values[0], line);
+    } else {
+      PrintHeader(statement, depth, line);
+    }
+    const bool has_body = statement.kind == ast::StatementKind::kHeader && statement.block &&
+                          !IsEmpty(*statement.block);
+    if (has_body) {
+      out_ += line;
+      out_ += '\n';
+      PrintBlockBody(*statement.block, depth + 1);
+      line = indent + "}";
+    }
+    if (statement.trailing_comment) {
+      line += "  //";
+      line += statement.trailing_comment->text;
+    }
+    out_ += line;
+    out_ += '\n';
+  }
+
+  // Appends `keyword target clause... = values {` to `line`, flushing whole lines to the output
+  // when a long value list wraps.
+  void PrintHeader(const ast::Statement& statement, std::size_t depth, std::string& line) {
+    line += statement.keyword;
+    if (statement.target) {
+      line += ' ';
+      AppendExpr(*statement.target, line);
+    }
+    for (const ast::Clause& clause : statement.clauses) {
+      line += ' ';
+      line += clause.word;
+      line += ' ';
+      AppendExpr(clause.value, line);
+    }
+    std::string opener;
+    if (statement.block) opener = IsEmpty(*statement.block) ? " {}" : " {";
+    if (!statement.has_value) {
+      line += opener;
+      return;
+    }
+    line += " =";
+    std::vector<std::string> values;
+    std::size_t total = Columns(line) + Columns(opener);
+    for (const ast::Expr& value : statement.values) {
+      values.push_back(ExprText(value));
+      total += 2 + Columns(values.back());  // ", " or the space after `=`
+    }
+    const bool wrap = total > kColumnLimit && values.size() > 1;
+    const std::string continuation = std::string(depth * kIndentWidth + kContinuationIndent, ' ');
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (i == 0) {
+        line += ' ';
+      } else if (wrap) {
+        // What must still fit on this line after the value: its comma, or the `{` at the end.
+        const std::size_t after = i + 1 == values.size() ? Columns(opener) : 1;
+        if (Columns(line) + 2 + Columns(values[i]) + after > kColumnLimit) {
+          out_ += line;
+          out_ += ",\n";
+          line = continuation;
+        } else {
+          line += ", ";
+        }
+      } else {
+        line += ", ";
+      }
+      line += values[i];
+    }
+    line += opener;
+  }
+
+  std::string out_;
+};
+
+}  // namespace
+
+std::string Format(const ast::File& file) {
+  Printer printer;
+  printer.PrintBlockBody(file.body, 0);
+  return printer.Take();
+}
+
+std::string Format(const ast::Expr& expr) { return ExprText(expr); }
+
+}  // namespace sled::lang

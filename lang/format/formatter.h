@@ -1,0 +1,27 @@
+// The canonical text of a .sled file, as `sled fmt` writes it. The checker and the legacy
+// translator reuse the expression printer to quote values in messages and generated files.
+//
+// Canonical form: two spaces per block level, one statement per line, `}` on its own line and
+// `{}` for an empty block; numbers keep their spelling and units their factor order; binary
+// operators and `->` are spaced, unary minus is not; comments stay where they were attached and
+// at most one blank line separates statements; a value list longer than 100 columns wraps after
+// its commas with a 4-space continuation indent; the text ends with exactly one newline.
+//
+// Any tree the parser produced formats to text that parses back to the same tree (equal
+// ast::Dump), and formatting is idempotent. A synthetic tree gets parentheses where precedence
+// requires them, so its text means what the tree means.
+#pragma once
+
+#include <string>
+
+#include "lang/ast/ast.h"
+
+namespace sled::lang {
+
+// The whole file in canonical form; empty when the file holds no statement and no comment.
+std::string Format(const ast::File& file);
+
+// One expression on a single line, as it would appear in a statement.
+std::string Format(const ast::Expr& expr);
+
+}  // namespace sled::lang

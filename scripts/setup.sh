@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Installs what a fresh Debian 12 machine lacks to build and test sled. Idempotent: when every
+# package is already installed it does nothing (and does not touch apt), so a second run is fast.
+set -euo pipefail
+
+packages=(
+  build-essential
+  cmake
+  ninja-build
+  clang
+  clang-format
+  libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes for clang 14
+  libeigen3-dev
+  libsuitesparse-dev
+  tao-pegtl-dev
+  libfmt-dev
+  googletest
+  libgtest-dev
+  libgmock-dev
+  libbenchmark-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg -s "${package}" >/dev/null 2>&1; then
+    missing+=("${package}")
+  fi
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "setup: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  if command -v sudo >/dev/null 2>&1; then
+    sudo=(sudo)
+  else
+    echo "setup: not root and no sudo; install as root: apt-get install ${missing[*]}" >&2
+    exit 1
+  fi
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update
+"${sudo[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
