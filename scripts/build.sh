@@ -16,7 +16,7 @@ while [[ $# -gt 0 ]]; do
     --fuzz) mode=fuzz ;;
     --) shift; extra+=("$@"); break ;;
     -h|--help)
-      sed -n '2,8p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+      sed -n '2,7p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
       exit 0
       ;;
     *) echo "build.sh: unknown argument '$1' (use --sanitize, --fuzz or -- CMAKE_ARGS)" >&2; exit 2 ;;

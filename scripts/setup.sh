@@ -10,6 +10,7 @@ packages=(
   clang
   clang-format
   libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes for clang 14
+  llvm                # llvm-symbolizer: file and line in sanitizer reports
   libeigen3-dev
   libsuitesparse-dev
   tao-pegtl-dev

@@ -32,13 +32,13 @@ namespace internal {
 namespace {
 
 const std::vector<std::pair<EntityKind, std::string_view>> kEntityNames = {
-    {EntityKind::kGround, "ground"},     {EntityKind::kModule, "module"},
-    {EntityKind::kBody, "body"},         {EntityKind::kSegment, "segment"},
-    {EntityKind::kJoint, "joint"},       {EntityKind::kEllipsoid, "ellipsoid"},
-    {EntityKind::kVehicle, "vehicle"},   {EntityKind::kPlane, "plane"},
-    {EntityKind::kFunction, "function"}, {EntityKind::kBelt, "belt"},
-    {EntityKind::kHarness, "harness"},   {EntityKind::kAirbag, "airbag"},
-    {EntityKind::kSpring, "spring"},     {EntityKind::kConstraint, "constraint"},
+    {EntityKind::kGround, "ground"},       {EntityKind::kModule, "module"},
+    {EntityKind::kBody, "body"},           {EntityKind::kSegment, "segment"},
+    {EntityKind::kJoint, "joint"},         {EntityKind::kEllipsoid, "ellipsoid"},
+    {EntityKind::kVehicle, "vehicle"},     {EntityKind::kPlane, "plane"},
+    {EntityKind::kFunction, "function"},   {EntityKind::kBelt, "belt"},
+    {EntityKind::kHarness, "harness"},     {EntityKind::kAirbag, "airbag"},
+    {EntityKind::kSpring, "spring"},       {EntityKind::kConstraint, "constraint"},
     {EntityKind::kParameter, "parameter"},
 };
 
@@ -83,10 +83,19 @@ std::optional<EntityKind> EntityKindFromName(std::string_view name) {
 }
 
 Checker::Checker(lang::SourceManager& sources, const CheckOptions& options)
-    : sources_(sources), options_(options), diagnostics_(*options.diagnostics) {}
+    : sources_(sources), options_(options), dedupe_(*options.diagnostics), diagnostics_(dedupe_) {}
 
-void Checker::Report(DiagnosticKind kind, SourceRange range, std::string message,
-                     std::string label, std::string help) {
+void Checker::DedupingConsumer::Consume(lang::Diagnostic diagnostic) {
+  const lang::SourceRange* range = diagnostic.primary_range();
+  auto key = std::make_tuple(range ? range->file.value : 0u, range ? range->begin : 0u,
+                             diagnostic.message);
+  if (std::find(seen_.begin(), seen_.end(), key) != seen_.end()) return;
+  seen_.push_back(std::move(key));
+  next_.Consume(std::move(diagnostic));
+}
+
+void Checker::Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label,
+                     std::string help) {
   auto diagnostic = lang::MakeDiagnostic(kind, range, std::move(message), std::move(label));
   diagnostic.help = std::move(help);
   diagnostics_.Consume(std::move(diagnostic));
@@ -133,8 +142,8 @@ std::vector<std::string> Checker::NamesOfKinds(Scope& scope, const std::vector<E
   return names;
 }
 
-Entity* Checker::Resolve(Scope& scope, const ast::Expr& path,
-                         const std::vector<EntityKind>& kinds, bool quiet) {
+Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<EntityKind>& kinds,
+                         bool quiet) {
   const std::string kind_text =
       kinds.size() == 1 ? std::string(EntityKindName(kinds[0])) : std::string("name");
   if (path.kind != ast::ExprKind::kPath) {
@@ -166,8 +175,8 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path,
     if (!quiet) {
       const std::string text = path.PathText();
       Report(DiagnosticKind::kUnknownName, path.range,
-             fmt::format("unknown {} `{}`", kind_text, text), fmt::format("no {} named `{}`",
-                                                                          kind_text, text),
+             fmt::format("unknown {} `{}`", kind_text, text),
+             fmt::format("no {} named `{}`", kind_text, text),
              lang::DidYouMean(text, NamesOfKinds(scope, kinds)));
     }
     return nullptr;
@@ -180,11 +189,11 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path,
         if (i > 0) expected += i + 1 == kinds.size() ? " or " : ", ";
         expected += EntityKindName(kinds[i]);
       }
-      auto diagnostic = lang::MakeDiagnostic(
-          DiagnosticKind::kWrongKindOfName, path.range,
-          fmt::format("`{}` is a {}, but a {} belongs here", path.PathText(),
-                      EntityKindName(found->kind), expected),
-          fmt::format("this is a {}", EntityKindName(found->kind)));
+      auto diagnostic =
+          lang::MakeDiagnostic(DiagnosticKind::kWrongKindOfName, path.range,
+                               fmt::format("`{}` is a {}, but a {} belongs here", path.PathText(),
+                                           EntityKindName(found->kind), expected),
+                               fmt::format("this is a {}", EntityKindName(found->kind)));
       if (found->range.valid()) {
         diagnostic.labels.push_back({found->range, "declared here", false});
       }
@@ -197,8 +206,8 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path,
 }
 
 void Checker::Import(Scope& scope, const ast::Statement& statement) {
-  if (!statement.target || statement.target->kind != ast::ExprKind::kPath ||
-      statement.has_value || statement.block) {
+  if (!statement.target || statement.target->kind != ast::ExprKind::kPath || statement.has_value ||
+      statement.block) {
     Report(DiagnosticKind::kMalformedStatement, statement.range,
            "an import names a module: `import std.humans.male50 as occupant`", "not an import");
     return;
@@ -207,8 +216,8 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   std::string alias = parts.back();
   if (const ast::Clause* as = statement.FindClause("as")) {
     if (as->value.kind != ast::ExprKind::kPath || as->value.path.size() != 1) {
-      Report(DiagnosticKind::kMalformedStatement, as->value.range,
-             "`as` takes one plain name", "not a plain name");
+      Report(DiagnosticKind::kMalformedStatement, as->value.range, "`as` takes one plain name",
+             "not a plain name");
       return;
     }
     alias = as->value.path[0];
@@ -221,9 +230,9 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   }
 
   const bool standard = parts[0] == "std";
-  const std::string root = standard ? (options_.stdlib_root.empty() ? DefaultStdlibRoot()
-                                                                    : options_.stdlib_root)
-                                    : scope.directory;
+  const std::string root =
+      standard ? (options_.stdlib_root.empty() ? DefaultStdlibRoot() : options_.stdlib_root)
+               : scope.directory;
   const std::string relative = JoinPath(parts, standard ? 1 : 0, '/');
   const std::string file_path = (root.empty() ? std::string(".") : root) + "/" + relative + ".sled";
 
@@ -301,6 +310,15 @@ CheckedScenario Checker::Run(const ast::File& file) {
   const std::string directory =
       std::filesystem::path(sources_.buffer(file.file).path()).parent_path().string();
   scene_scope_ = NewScope(nullptr, "", directory);
+  for (const auto& [name, text] : options_.overrides) {
+    const lang::FileId id = sources_.Add(fmt::format("--set {}", name), text);
+    lang::ParseOptions parse_options;
+    parse_options.diagnostics = &diagnostics_;
+    Override entry{name,
+                   lang::ParseValue(sources_, id, parse_options),
+                   {id, 0, static_cast<std::uint32_t>(text.size())}};
+    overrides_.push_back(std::move(entry));
+  }
   Declare(*scene_scope_, "ground", Entity{EntityKind::kGround, -1, {}, nullptr, true});
   import_stack_.push_back(sources_.buffer(file.file).path());
 
@@ -321,10 +339,24 @@ CheckedScenario Checker::Run(const ast::File& file) {
       const int index = static_cast<int>(scenario_.bodies.size());
       const std::string& name = statement.target->path[0];
       CheckBodyDeclarations(*scene_scope_, statement, name, statement.range);
-      Declare(*scene_scope_, name,
-              Entity{EntityKind::kBody, index, statement.target->range, bodies_.back().scope,
-                     true});
+      Declare(
+          *scene_scope_, name,
+          Entity{EntityKind::kBody, index, statement.target->range, bodies_.back().scope, true});
     }
+  }
+
+  for (const Override& entry : overrides_) {
+    if (entry.used || !entry.value) continue;
+    std::vector<std::string> names;
+    for (const auto& parameter : parameters_) {
+      if (parameter->is_param && parameter->scope == scene_scope_) names.push_back(parameter->name);
+    }
+    Report(DiagnosticKind::kUnknownOverride, entry.range,
+           fmt::format("`--set {}` names no `param` of the scenario", entry.name),
+           "no such parameter",
+           lang::DidYouMean(entry.name, names).empty()
+               ? "only `param` declarations of the scenario can be set"
+               : lang::DidYouMean(entry.name, names));
   }
 
   // Every name is known now: check what the declarations say.

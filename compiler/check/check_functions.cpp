@@ -1,6 +1,7 @@
 // Functions as in CVS: constant, table and polynomial (degree up to five), with the unloading
 // parameters of the force–deflection model; named or inline, checked against the signature each
 // use expects (flexure: angle -> torque, contact force: deflection -> force, ...).
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -26,8 +27,7 @@ bool IsBareZero(const Value& value) { return value.bare && value.components == s
 
 }  // namespace
 
-bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result,
-                             SourceRange use) {
+bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use) {
   if (id < 0 || static_cast<std::size_t>(id) >= scenario_.functions.size()) return false;
   if (!function_valid_.at(static_cast<std::size_t>(id))) return false;
   Function& function = scenario_.functions[static_cast<std::size_t>(id)];
@@ -49,9 +49,10 @@ bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result
                         DescribeDimension(wanted), DescribeDimension(coefficient.dimension)),
             "wrong dimension for this power");
         diagnostic.labels.push_back({use, "used here as " + Signature(argument, result), false});
-        diagnostic.help = fmt::format("coefficient k of a polynomial from {} has the dimension "
-                                      "of the result divided by the argument to the power k",
-                                      Signature(argument, result));
+        diagnostic.help = fmt::format(
+            "coefficient k of a polynomial from {} has the dimension "
+            "of the result divided by the argument to the power k",
+            Signature(argument, result));
         diagnostics_.Consume(std::move(diagnostic));
         ok = false;
       }
@@ -61,8 +62,8 @@ bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result
     return ok;
   }
   const bool result_ok = function.result == result;
-  const bool argument_ok = function.kind == Function::Kind::kConstant ||
-                           function.argument == argument;
+  const bool argument_ok =
+      function.kind == Function::Kind::kConstant || function.argument == argument;
   if (result_ok && argument_ok) return true;
   auto diagnostic = lang::MakeDiagnostic(
       DiagnosticKind::kDimensionMismatch, use,
@@ -95,8 +96,7 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
     scenario_.functions.emplace_back();
     function_valid_.push_back(true);
     Function function;
-    if (!BuildFunction(scope, statement, expr, std::make_pair(argument, result), function,
-                       index)) {
+    if (!BuildFunction(scope, statement, expr, std::make_pair(argument, result), function, index)) {
       function_valid_[static_cast<std::size_t>(index)] = false;
       scenario_.functions[static_cast<std::size_t>(index)] = std::move(function);
       return std::nullopt;
@@ -170,10 +170,9 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     Dimension parts[2];
     for (std::size_t i = 0; ok && i < 2; ++i) {
       const ast::Expr& word = arrow.operands[i];
-      const QuantityName* name =
-          word.kind == ast::ExprKind::kPath && word.path.size() == 1
-              ? FindQuantityName(word.path[0])
-              : nullptr;
+      const QuantityName* name = word.kind == ast::ExprKind::kPath && word.path.size() == 1
+                                     ? FindQuantityName(word.path[0])
+                                     : nullptr;
       if (!name) {
         Report(DiagnosticKind::kUnknownName, word.range,
                fmt::format("`{}` is not a quantity name", lang::ast::Dump(word)),
@@ -192,8 +191,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     }
     signature = std::make_pair(parts[0], parts[1]);
     positional.erase(positional.begin());
-    if (expected && !(signature->first == expected->first &&
-                      signature->second == expected->second)) {
+    if (expected &&
+        !(signature->first == expected->first && signature->second == expected->second)) {
       Report(DiagnosticKind::kDimensionMismatch, arrow.range,
              fmt::format("this function maps {}, but {} is needed here",
                          Signature(signature->first, signature->second),
@@ -239,8 +238,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     if (signature && !(value->dimension == signature->second) && !IsBareZero(*value)) {
       Report(DiagnosticKind::kDimensionMismatch, positional[0]->range,
              fmt::format("the constant should be {}, found {}",
-                         DescribeDimension(signature->second),
-                         DescribeDimension(value->dimension)),
+                         DescribeDimension(signature->second), DescribeDimension(value->dimension)),
              "wrong dimension", MismatchHelp(signature->second, value->dimension));
       return false;
     }
@@ -268,8 +266,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
       const ast::Expr& arrow = row->values.at(0);
       if (arrow.operands.size() != 2) {
         Report(DiagnosticKind::kMalformedStatement, arrow.range,
-               fmt::format("a row of a table gives x -> y, found {} values",
-                           arrow.operands.size()),
+               fmt::format("a row of a table gives x -> y, found {} values", arrow.operands.size()),
                "not x -> y");
         ok = false;
         continue;
@@ -342,8 +339,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     return true;
   }
 
-  Report(DiagnosticKind::kUnknownName, call.range,
-         fmt::format("unknown function form `{}`", form), "not a function form",
+  Report(DiagnosticKind::kUnknownName, call.range, fmt::format("unknown function form `{}`", form),
+         "not a function form",
          lang::DidYouMean(form, {"constant", "table", "polynomial"}).empty()
              ? "functions are `constant(...)`, `table(x -> y) { rows }` or `polynomial(...)`"
              : lang::DidYouMean(form, {"constant", "table", "polynomial"}));
@@ -357,8 +354,7 @@ void Checker::DefineFunction(Scope& scope, const ast::Statement& statement, int 
   bool ok = false;
   if (!value) {
     Report(DiagnosticKind::kMalformedStatement, statement.range,
-           "a function is declared as `function NAME = table(x -> y) { rows }`",
-           "no single value");
+           "a function is declared as `function NAME = table(x -> y) { rows }`", "no single value");
   } else if (value->kind == ast::ExprKind::kCall) {
     ok = BuildFunction(scope, statement, *value, std::nullopt, function, index);
   } else {

@@ -1,5 +1,6 @@
 // Scene-level declarations: what a scenario or module block declares, and the checking of
 // vehicles, surfaces, contacts, restraints, springs and constraints once every name is known.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -21,11 +22,11 @@ std::string NameOf(Checker& checker, const ast::Statement& statement) {
       statement.target->path.size() == 1) {
     return statement.target->path[0];
   }
-  checker.Report(DiagnosticKind::kMalformedStatement,
-                 statement.target ? statement.target->range : statement.keyword_range,
-                 fmt::format("`{}` needs a plain name: `{} NAME ...`", statement.keyword,
-                             statement.keyword),
-                 statement.target ? "not a plain name" : "name missing");
+  checker.Report(
+      DiagnosticKind::kMalformedStatement,
+      statement.target ? statement.target->range : statement.keyword_range,
+      fmt::format("`{}` needs a plain name: `{} NAME ...`", statement.keyword, statement.keyword),
+      statement.target ? "not a plain name" : "name missing");
   return {};
 }
 
@@ -57,7 +58,8 @@ std::string Checker::FrameName(const FrameRef& frame) const {
   return "ground";
 }
 
-void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind) {
+Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block& block,
+                                                 BlockKind kind) {
   BoundBlock bound = Bind(kind, &block, block.range);
   if (kind == BlockKind::kScenario) scenario_bound_ = bound;
   auto declare = [&](const ast::Statement& statement, EntityKind entity_kind, int index,
@@ -72,10 +74,9 @@ void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKi
     const std::string& keyword = statement->keyword;
     if (keyword == "scenario") {
       if (scenario_statement_) {
-        auto diagnostic = lang::MakeDiagnostic(DiagnosticKind::kMultipleScenarios,
-                                               statement->keyword_range,
-                                               "a file holds one scenario; this is a second",
-                                               "second scenario");
+        auto diagnostic =
+            lang::MakeDiagnostic(DiagnosticKind::kMultipleScenarios, statement->keyword_range,
+                                 "a file holds one scenario; this is a second", "second scenario");
         diagnostic.labels.push_back({scenario_statement_->keyword_range, "first here", false});
         diagnostic.help = "split the scenarios into files of their own";
         diagnostics_.Consume(std::move(diagnostic));
@@ -107,6 +108,14 @@ void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKi
       parameter->scope = &scope;
       parameter->is_param = keyword == "param";
       parameter->range = statement->target->range;
+      if (parameter->is_param && &scope == scene_scope_) {
+        for (Override& entry : overrides_) {
+          if (entry.name == name && entry.value) {
+            parameter->override_expr = *entry.value;
+            entry.used = true;
+          }
+        }
+      }
       const int index = static_cast<int>(parameters_.size());
       parameters_.push_back(std::move(parameter));
       Declare(scope, name, Entity{EntityKind::kParameter, index, statement->target->range});
@@ -180,6 +189,25 @@ void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKi
         scenario_.constraints.back().name = scope.prefix + statement->target->path[0];
         scenario_.constraints.back().range = statement->target->range;
       }
+    } else if (keyword == "segment") {
+      const int index = static_cast<int>(scenario_.segments.size());
+      scenario_.segments.emplace_back();
+      if (declare(*statement, EntityKind::kSegment, index, segments_)) {
+        Segment& segment = scenario_.segments.back();
+        segment.name = scope.prefix + statement->target->path[0];
+        segment.body = current_body_;
+        segment.range = statement->target->range;
+        scenario_.bodies[static_cast<std::size_t>(current_body_)].segments.push_back(index);
+      }
+    } else if (keyword == "joint") {
+      const int index = static_cast<int>(scenario_.joints.size());
+      scenario_.joints.emplace_back();
+      if (declare(*statement, EntityKind::kJoint, index, joints_)) {
+        Joint& joint = scenario_.joints.back();
+        joint.name = scope.prefix + statement->target->path[0];
+        joint.range = statement->target->range;
+        scenario_.bodies[static_cast<std::size_t>(current_body_)].joints.push_back(index);
+      }
     } else if (keyword == "contact") {
       contacts_.push_back({statement, &scope, -1});
     } else if (keyword == "initial") {
@@ -190,9 +218,9 @@ void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKi
       // time, integrator, restart, settle, symmetry: at most one of each.
       for (const ast::Statement* earlier : run_blocks_) {
         if (earlier->keyword == keyword) {
-          auto diagnostic = lang::MakeDiagnostic(
-              DiagnosticKind::kDuplicateAttribute, statement->keyword_range,
-              fmt::format("`{}` is given twice", keyword), "given again here");
+          auto diagnostic =
+              lang::MakeDiagnostic(DiagnosticKind::kDuplicateAttribute, statement->keyword_range,
+                                   fmt::format("`{}` is given twice", keyword), "given again here");
           diagnostic.labels.push_back({earlier->keyword_range, "first given here", false});
           diagnostics_.Consume(std::move(diagnostic));
         }
@@ -200,6 +228,7 @@ void Checker::DeclareFileContents(Scope& scope, const ast::Block& block, BlockKi
       run_blocks_.push_back(statement);
     }
   }
+  return bound;
 }
 
 namespace {
@@ -252,12 +281,12 @@ void Checker::CheckSceneElements() {
     Vehicle& vehicle = scenario_.vehicles[static_cast<std::size_t>(pending.index)];
     const BoundBlock bound =
         Bind(BlockKind::kVehicle, pending.statement->block.get(), pending.statement->range);
-    vehicle.position = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "position")
-                           .value_or(Vec3{});
-    vehicle.orientation = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "orientation")
-                              .value_or(Vec3{});
-    vehicle.velocity = ReadVector(*pending.scope, bound, BlockKind::kVehicle, "velocity")
-                           .value_or(Vec3{});
+    vehicle.position =
+        ReadVector(*pending.scope, bound, BlockKind::kVehicle, "position").value_or(Vec3{});
+    vehicle.orientation =
+        ReadVector(*pending.scope, bound, BlockKind::kVehicle, "orientation").value_or(Vec3{});
+    vehicle.velocity =
+        ReadVector(*pending.scope, bound, BlockKind::kVehicle, "velocity").value_or(Vec3{});
     const ast::Statement* motion = One(bound, "motion");
     if (!motion) continue;
     const ast::Expr* call = SingleValue(*motion);
@@ -282,15 +311,14 @@ void Checker::CheckSceneElements() {
       }
     };
     if (form == "half_sine") {
-      auto arguments =
-          ReadArguments(*this, *call, {"delta_v", "duration", "axis", "start"},
-                        {"delta_v", "duration"});
+      auto arguments = ReadArguments(*this, *call, {"delta_v", "duration", "axis", "start"},
+                                     {"delta_v", "duration"});
       if (!arguments.ok) continue;
       m.kind = Motion::Kind::kHalfSine;
       m.delta_v = ExpectQuantity(scope, *arguments.named["delta_v"], dim::kVelocity, "delta_v")
                       .value_or(0.0);
-      m.duration = ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration")
-                       .value_or(0.0);
+      m.duration =
+          ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration").value_or(0.0);
       if (!(m.duration > 0.0)) {
         Report(DiagnosticKind::kValueOutOfRange, arguments.named["duration"]->range,
                "a pulse duration must be positive", "not positive");
@@ -302,11 +330,10 @@ void Checker::CheckSceneElements() {
                         {"peak", "rise", "dwell", "fall"});
       if (!arguments.ok) continue;
       m.kind = Motion::Kind::kTrapezoid;
-      m.peak = ExpectQuantity(scope, *arguments.named["peak"], dim::kAcceleration, "peak")
-                   .value_or(0.0);
+      m.peak =
+          ExpectQuantity(scope, *arguments.named["peak"], dim::kAcceleration, "peak").value_or(0.0);
       m.rise = ExpectQuantity(scope, *arguments.named["rise"], dim::kTime, "rise").value_or(0.0);
-      m.dwell =
-          ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
+      m.dwell = ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
       m.fall = ExpectQuantity(scope, *arguments.named["fall"], dim::kTime, "fall").value_or(0.0);
       read_axis(arguments);
     } else if (form == "table") {
@@ -376,9 +403,8 @@ void Checker::CheckSceneElements() {
                "a motion table needs rows: `{ 0 ms -> 0 g  10 ms -> 20 g }`", "no rows");
       }
     } else {
-      Report(DiagnosticKind::kUnknownName, call->range,
-             fmt::format("unknown motion `{}`", form), "not a motion",
-             lang::DidYouMean(form, {"half_sine", "trapezoid", "table"}));
+      Report(DiagnosticKind::kUnknownName, call->range, fmt::format("unknown motion `{}`", form),
+             "not a motion", lang::DidYouMean(form, {"half_sine", "trapezoid", "table"}));
     }
   }
 
@@ -408,8 +434,8 @@ void Checker::CheckSceneElements() {
                                 Subtract(plane.corners[2], plane.corners[0]));
       if (!(Norm(normal) > 1e-12)) {
         Report(DiagnosticKind::kZeroVector, corners->range,
-               fmt::format("the corners of plane `{}` lie on one line", plane.name),
-               "no normal", "P1, P2 and P3 must span a parallelogram");
+               fmt::format("the corners of plane `{}` lie on one line", plane.name), "no normal",
+               "P1, P2 and P3 must span a parallelogram");
       }
     }
   }

@@ -49,7 +49,8 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
         if (!elsewhere.empty()) {
           std::string places;
           for (std::size_t i = 0; i < elsewhere.size() && i < 4; ++i) {
-            if (i > 0) places += i + 1 == std::min<std::size_t>(elsewhere.size(), 4) ? " or " : ", ";
+            if (i > 0)
+              places += i + 1 == std::min<std::size_t>(elsewhere.size(), 4) ? " or " : ", ";
             places += fmt::format("`{}`", BlockName(elsewhere[i]));
           }
           Report(DiagnosticKind::kMisplacedStatement, statement.keyword_range,
@@ -64,7 +65,8 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
       }
       // An attribute is `name = value`; `at` and `axes` also name a frame: `at pelvis = ...`.
       const bool wants_target = spec->name == "at" || spec->name == "axes";
-      const bool takes_rows = spec->type == ValueType::kFunction || spec->type == ValueType::kMotion;
+      const bool takes_rows =
+          spec->type == ValueType::kFunction || spec->type == ValueType::kMotion;
       if (!statement.has_value || (statement.target.has_value() != wants_target) ||
           !statement.clauses.empty() || (statement.block && !takes_rows)) {
         Report(DiagnosticKind::kMalformedStatement, statement.range,
@@ -109,11 +111,11 @@ const ast::Statement* Checker::One(const BoundBlock& bound, std::string_view nam
 
 const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
   if (statement.values.size() != 1) {
-    Report(DiagnosticKind::kWrongValueKind, statement.values.size() > 1 ? statement.values[1].range
-                                                                        : statement.range,
-           fmt::format("`{}` takes one value, found {}", statement.keyword,
-                       statement.values.size()),
-           "extra value");
+    Report(
+        DiagnosticKind::kWrongValueKind,
+        statement.values.size() > 1 ? statement.values[1].range : statement.range,
+        fmt::format("`{}` takes one value, found {}", statement.keyword, statement.values.size()),
+        "extra value");
     return nullptr;
   }
   return &statement.values[0];
@@ -231,16 +233,16 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       result.bare = left->bare && right->bare;
       if (expr.op == '+' || expr.op == '-') {
         if (left_vector != right_vector) {
-          Report(DiagnosticKind::kWrongValueKind, expr.range,
-                 "cannot add a vector and a number", "vector and number");
+          Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot add a vector and a number",
+                 "vector and number");
           return std::nullopt;
         }
-        const bool left_zero = left->bare && std::all_of(left->components.begin(),
-                                                         left->components.end(),
-                                                         [](double c) { return c == 0.0; });
-        const bool right_zero = right->bare && std::all_of(right->components.begin(),
-                                                           right->components.end(),
-                                                           [](double c) { return c == 0.0; });
+        const bool left_zero =
+            left->bare && std::all_of(left->components.begin(), left->components.end(),
+                                      [](double c) { return c == 0.0; });
+        const bool right_zero =
+            right->bare && std::all_of(right->components.begin(), right->components.end(),
+                                       [](double c) { return c == 0.0; });
         if (!(left->dimension == right->dimension) && !left_zero && !right_zero) {
           Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
                  fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
@@ -289,13 +291,11 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
                "a power needs a number base and a dimensionless exponent", "invalid power");
         return std::nullopt;
       }
-      const ArithmeticResult power =
-          Power(Quantity{left->components[0], left->dimension},
-                Quantity{right->components[0], right->dimension});
+      const ArithmeticResult power = Power(Quantity{left->components[0], left->dimension},
+                                           Quantity{right->components[0], right->dimension});
       if (!power.ok()) {
-        Report(power.status == ArithmeticStatus::kDivisionByZero
-                   ? DiagnosticKind::kDivisionByZero
-                   : DiagnosticKind::kInvalidExponent,
+        Report(power.status == ArithmeticStatus::kDivisionByZero ? DiagnosticKind::kDivisionByZero
+                                                                 : DiagnosticKind::kInvalidExponent,
                expr.range,
                power.status == ArithmeticStatus::kDivisionByZero
                    ? "zero raised to a negative power"
@@ -360,8 +360,8 @@ std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& exp
   return value->components[0];
 }
 
-std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr,
-                                          Dimension dimension, std::string_view what) {
+std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, Dimension dimension,
+                                          std::string_view what) {
   auto value = Evaluate(scope, expr);
   if (!value) return std::nullopt;
   if (value->components.size() != 3) {
@@ -414,9 +414,8 @@ std::optional<Vec3> Checker::ExpectDirection(Scope& scope, const ast::Expr& expr
   }
   auto vector = ExpectVector(scope, expr, dim::kDimensionless, what);
   if (!vector) return std::nullopt;
-  const double length =
-      std::sqrt((*vector)[0] * (*vector)[0] + (*vector)[1] * (*vector)[1] +
-                (*vector)[2] * (*vector)[2]);
+  const double length = std::sqrt((*vector)[0] * (*vector)[0] + (*vector)[1] * (*vector)[1] +
+                                  (*vector)[2] * (*vector)[2]);
   if (!(length > 1e-12)) {
     Report(DiagnosticKind::kZeroVector, expr.range,
            fmt::format("`{}` is a direction and cannot be zero", what), "zero length",
@@ -447,16 +446,15 @@ bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange ra
   DiagnosticKind kind = DiagnosticKind::kValueOutOfRange;
   if (spec.name == "mass") kind = DiagnosticKind::kNonPositiveMass;
   Report(kind, range,
-         fmt::format("`{}` is {}, but it must be {}", spec.name,
-                     unit.empty() ? fmt::format("{:g}", value)
-                                  : fmt::format("{:g} {}", value, unit),
-                     rule),
+         fmt::format(
+             "`{}` is {}, but it must be {}", spec.name,
+             unit.empty() ? fmt::format("{:g}", value) : fmt::format("{:g} {}", value, unit), rule),
          "out of range", std::string(spec.doc));
   return false;
 }
 
-std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound,
-                                            BlockKind kind, std::string_view name) {
+std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                            std::string_view name) {
   const ast::Statement* statement = One(bound, name);
   if (!statement) return std::nullopt;
   const ast::Expr* expr = SingleValue(*statement);

@@ -54,8 +54,8 @@ struct Ellipsoid {
   std::string name;
   FrameRef frame;
   Vec3 semi_axes{};
-  Vec3 center{};       // in the frame
-  Vec3 orientation{};  // yaw, pitch, roll [rad] of the ellipsoid axes in the frame
+  Vec3 center{};        // in the frame
+  Vec3 orientation{};   // yaw, pitch, roll [rad] of the ellipsoid axes in the frame
   double degree = 2.0;  // above 2: hyper-ellipsoid
   SourceRange range;
 };
@@ -64,9 +64,9 @@ struct Segment {
   std::string name;  // qualified: occupant.pelvis
   int body = -1;
   double mass = 0.0;
-  Vec3 inertia{};          // principal moments [kg*m^2]
-  Vec3 principal_axes{};   // yaw, pitch, roll [rad] of the principal axes in the segment frame
-  bool singular = false;   // massless, kept in place by constraints
+  Vec3 inertia{};         // principal moments [kg*m^2]
+  Vec3 principal_axes{};  // yaw, pitch, roll [rad] of the principal axes in the segment frame
+  bool singular = false;  // massless, kept in place by constraints
   std::vector<int> ellipsoids;
   SourceRange range;
 };
@@ -82,7 +82,7 @@ struct Joint {
   Vec3 location_in_child{};
   Vec3 axes_in_parent{};  // yaw, pitch, roll [rad] of the joint axes in each segment
   Vec3 axes_in_child{};
-  Vec3 axis{0, 0, 1};     // pin and slip joints: unit vector in the parent
+  Vec3 axis{0, 0, 1};  // pin and slip joints: unit vector in the parent
   // Torque characteristics: flexure and twist for ball and pin joints; precession, nutation and
   // spin for Euler joints. -1 when absent.
   FunctionId flexure = -1;
@@ -90,9 +90,9 @@ struct Joint {
   FunctionId precession = -1;
   FunctionId nutation = -1;
   FunctionId spin = -1;
-  double viscous = 0.0;      // [N*m*s/rad]
-  double coulomb = 0.0;      // [N*m]
-  double energy_loss = 0.0;  // fraction dissipated per loading cycle
+  double viscous = 0.0;              // [N*m*s/rad]
+  double coulomb = 0.0;              // [N*m]
+  double energy_loss = 0.0;          // fraction dissipated per loading cycle
   std::optional<double> stop;        // flexure stop angle [rad]
   std::optional<double> twist_stop;  // [rad]
   bool stop_impulse = false;
@@ -124,7 +124,7 @@ struct Motion {
   double rise = 0.0;
   double dwell = 0.0;
   double fall = 0.0;
-  std::vector<std::array<double, 2>> table;  // kTable: (t, a)
+  std::vector<std::array<double, 2>> table;    // kTable: (t, a)
   std::vector<std::array<double, 7>> six_dof;  // kSixDof: t, linear (3), angular (3) acceleration
 };
 
@@ -153,12 +153,12 @@ struct SurfaceRef {
 };
 
 struct Contact {
-  SurfaceRef first;   // an ellipsoid on a segment
-  SurfaceRef second;  // a plane or another ellipsoid
+  SurfaceRef first;       // an ellipsoid on a segment
+  SurfaceRef second;      // a plane or another ellipsoid
   FunctionId force = -1;  // deflection -> force
   double damping = 0.0;   // [N*s/m]
   double friction = 0.0;
-  bool impulse = false;   // first-contact impulse
+  bool impulse = false;  // first-contact impulse
   double restitution = 0.0;
   SourceRange range;
 };
@@ -167,8 +167,8 @@ struct Contact {
 struct BeltPoint {
   enum class Kind { kAnchor, kSegment };
   Kind kind = Kind::kAnchor;
-  FrameRef frame;  // kAnchor: where the point is fixed
-  Vec3 point{};    // kAnchor: position in that frame
+  FrameRef frame;    // kAnchor: where the point is fixed
+  Vec3 point{};      // kAnchor: position in that frame
   int segment = -1;  // kSegment
 };
 

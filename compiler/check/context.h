@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "compiler/check/check.h"
@@ -148,7 +149,7 @@ class Checker {
                                          std::string_view name);
 
   // --- declarations (check_scene.cpp, check_bodies.cpp, check_outputs.cpp)
-  void DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
+  BoundBlock DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
   void CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
                              const std::string& instance_name, SourceRange instance_range);
   void CheckBodyDetails();
@@ -159,9 +160,9 @@ class Checker {
   // `at FRAME = (x, y, z) mm` statements of a joint, spring or constraint: one point per frame.
   // Reports a frame that is neither of the two, and (when `required`) a missing one.
   std::array<std::optional<Vec3>, 2> ReadAtPoints(Scope& scope, const BoundBlock& bound,
-                                                   std::string_view keyword,
-                                                   const std::array<FrameRef, 2>& frames,
-                                                   SourceRange owner, bool required);
+                                                  std::string_view keyword,
+                                                  const std::array<FrameRef, 2>& frames,
+                                                  SourceRange owner, bool required);
   // `: kind(A -> B)` or `: A -> B`: the two frames a joint, spring or constraint connects.
   std::optional<std::array<FrameRef, 2>> ReadConnection(Scope& scope,
                                                         const ast::Statement& statement,
@@ -179,17 +180,36 @@ class Checker {
 
   lang::SourceManager& sources_;
   const CheckOptions& options_;
+  // Bodies imported twice are checked twice; each problem is reported once.
+  class DedupingConsumer : public lang::DiagnosticConsumer {
+   public:
+    explicit DedupingConsumer(lang::DiagnosticConsumer& next) : next_(next) {}
+    void Consume(lang::Diagnostic diagnostic) override;
+
+   private:
+    lang::DiagnosticConsumer& next_;
+    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::string>> seen_;
+  };
+  DedupingConsumer dedupe_;
   lang::DiagnosticConsumer& diagnostics_;
   CheckedScenario scenario_;
 
   std::vector<std::unique_ptr<Scope>> scopes_;
   std::vector<std::unique_ptr<Parameter>> parameters_;
-  std::vector<std::unique_ptr<ast::File>> modules_;       // parsed imports, kept alive
-  std::map<std::string, Scope*> module_scopes_;           // by file path
-  std::vector<std::string> import_stack_;                 // for cycle detection
+  std::vector<std::unique_ptr<ast::File>> modules_;  // parsed imports, kept alive
+  std::map<std::string, Scope*> module_scopes_;      // by file path
+  std::vector<std::string> import_stack_;            // for cycle detection
   std::map<FunctionId, PendingPolynomial> pending_polynomials_;
   std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
   Scope* scene_scope_ = nullptr;
+  // `--set NAME=VALUE`, parsed; consumed by the scenario's `param` declarations.
+  struct Override {
+    std::string name;
+    std::optional<ast::Expr> value;
+    SourceRange range;
+    bool used = false;
+  };
+  std::vector<Override> overrides_;
 
   // Work lists filled while declaring and processed once every name is known.
   struct Pending {
@@ -201,10 +221,12 @@ class Checker {
     const ast::Statement* statement;
     Scope* scope;  // the body's scope
     int index;
+    const ast::Statement* reference = nullptr;  // `reference = segment`
   };
   std::vector<PendingBody> bodies_;
   std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,
-      springs_, constraints_, initials_, outputs_, functions_;
+      springs_, constraints_, initials_, outputs_, functions_, segments_, joints_;
+  int current_body_ = -1;  // the body whose block DeclareFileContents is reading
   std::vector<const ast::Statement*> run_blocks_;  // time, integrator, restart, settle, symmetry
   const ast::Statement* scenario_statement_ = nullptr;
   BoundBlock scenario_bound_;

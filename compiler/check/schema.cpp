@@ -38,10 +38,6 @@ AttributeSpec Bool(std::string_view name, std::string_view doc) {
 AttributeSpec Text(std::string_view name, std::string_view doc) {
   return {name, V::kString, {}, false, -kInf, kInf, false, {}, {}, 0, false, doc};
 }
-AttributeSpec Word(std::string_view name, std::string_view choices, std::string_view doc,
-                   bool required = false) {
-  return {name, V::kWord, {}, required, -kInf, kInf, false, choices, {}, 0, false, doc};
-}
 AttributeSpec Reference(std::string_view name, std::string_view kinds, std::string_view doc,
                         bool required = false) {
   return {name, V::kReference, {}, required, -kInf, kInf, false, kinds, {}, 0, false, doc};
@@ -67,9 +63,7 @@ AttributeSpec Repeatable(AttributeSpec spec) {
 
 // The position statements `at SEGMENT = (x, y, z) mm` and `axes SEGMENT = (yaw, pitch, roll)`
 // name one of the two connected frames; they are listed as attributes with a target.
-AttributeSpec AtFrame(std::string_view doc) {
-  return Repeatable(Vector("at", d::kLength, doc));
-}
+AttributeSpec AtFrame(std::string_view doc) { return Repeatable(Vector("at", d::kLength, doc)); }
 
 std::vector<BlockSpec> MakeSpecs() {
   // Declarations allowed wherever scene content may appear.
@@ -85,8 +79,9 @@ std::vector<BlockSpec> MakeSpecs() {
       {"airbag", BlockKind::kAirbag, "an ellipsoidal airbag that deploys and vents"},
       {"spring", BlockKind::kSpring, "a spring-damper between two frames"},
       {"tension", BlockKind::kSpring, "a tension-only element between two frames"},
-      {"constraint", BlockKind::kConstraint, "a fixed-point, fixed-distance, rolling or sliding "
-                                             "constraint"},
+      {"constraint", BlockKind::kConstraint,
+       "a fixed-point, fixed-distance, rolling or sliding "
+       "constraint"},
       {"initial", BlockKind::kInitial, "initial position, orientation, velocity or joint angles"},
       {"output", BlockKind::kOutput, "the time histories and injury criteria to compute"},
       {"time", BlockKind::kTime, "start, end and output step of the run"},
@@ -119,16 +114,16 @@ std::vector<BlockSpec> MakeSpecs() {
       {BlockKind::kScenario,
        {Vector("gravity", d::kAcceleration, "gravity in the ground frame; default (0, 0, -1) g")},
        scene_declarations});
-  specs.push_back(
-      {BlockKind::kBody,
-       {Reference("reference", "segment", "the reference segment; default: the root of the "
-                                          "joint tree")},
-       {{"segment", BlockKind::kSegment, "a rigid segment"},
-        {"joint", BlockKind::kJoint, "a joint: ball, pin, euler, slip or null"},
-        {"ellipsoid", BlockKind::kEllipsoid, "an extra contact ellipsoid on a segment"},
-        {"function", BlockKind::kTable, "a function local to the body"},
-        {"param", BlockKind::kFile, "a parameter"},
-        {"let", BlockKind::kFile, "a named value"}}});
+  specs.push_back({BlockKind::kBody,
+                   {Reference("reference", "segment",
+                              "the reference segment; default: the root of the "
+                              "joint tree")},
+                   {{"segment", BlockKind::kSegment, "a rigid segment"},
+                    {"joint", BlockKind::kJoint, "a joint: ball, pin, euler, slip or null"},
+                    {"ellipsoid", BlockKind::kEllipsoid, "an extra contact ellipsoid on a segment"},
+                    {"function", BlockKind::kTable, "a function local to the body"},
+                    {"param", BlockKind::kFile, "a parameter"},
+                    {"let", BlockKind::kFile, "a named value"}}});
   specs.push_back(
       {BlockKind::kSegment,
        {Quantity("mass", d::kMass, "segment mass", true),
@@ -141,8 +136,8 @@ std::vector<BlockSpec> MakeSpecs() {
       Vector("semi_axes", d::kLength, "semi-axes (a, b, c)", true),
       Vector("center", d::kLength, "centre in the frame"),
       Vector("orientation", d::kAngle, "yaw, pitch and roll of the axes in the frame"),
-      Quantity("degree", d::kDimensionless, "2 for an ellipsoid; above 2 a hyper-ellipsoid",
-               false, 2.0, 32.0)};
+      Quantity("degree", d::kDimensionless, "2 for an ellipsoid; above 2 a hyper-ellipsoid", false,
+               2.0, 32.0)};
   specs.push_back({BlockKind::kSegmentEllipsoid, ellipsoid_attributes, {}});
   specs.push_back({BlockKind::kEllipsoid, ellipsoid_attributes, {}});
   specs.push_back(
@@ -170,13 +165,12 @@ std::vector<BlockSpec> MakeSpecs() {
         NonNegative("lock_below", d::kTorque, "the joint locks when its torque falls below"),
         NonNegative("unlock_above", d::kTorque, "a locked joint unlocks above this torque")},
        {}});
-  specs.push_back(
-      {BlockKind::kVehicle,
-       {Typed("motion", V::kMotion, "prescribed motion: half_sine, trapezoid or table"),
-        Vector("position", d::kLength, "initial position in the ground frame"),
-        Vector("orientation", d::kAngle, "initial yaw, pitch and roll"),
-        Vector("velocity", d::kVelocity, "initial velocity")},
-       {}});
+  specs.push_back({BlockKind::kVehicle,
+                   {Typed("motion", V::kMotion, "prescribed motion: half_sine, trapezoid or table"),
+                    Vector("position", d::kLength, "initial position in the ground frame"),
+                    Vector("orientation", d::kAngle, "initial yaw, pitch and roll"),
+                    Vector("velocity", d::kVelocity, "initial velocity")},
+                   {}});
   specs.push_back({BlockKind::kPlane,
                    {Points("corners", d::kLength, 3,
                            "P1, P2, P3: the plane is the parallelogram P1 + s(P2-P1) + t(P3-P1); "
@@ -203,19 +197,19 @@ std::vector<BlockSpec> MakeSpecs() {
       NonNegative("pretension", d::kForce, "initial belt force"),
       Quantity("friction", d::kDimensionless, "friction between belt and body", false, 0.0, 5.0)};
   specs.push_back({BlockKind::kBelt, belt_attributes, {}});
-  specs.push_back(
-      {BlockKind::kHarness,
-       {Quantity("friction", d::kDimensionless, "friction at the harness tie points", false, 0.0,
-                 5.0)},
-       {{"belt", BlockKind::kBelt, "a belt of the harness"}}});
+  specs.push_back({BlockKind::kHarness,
+                   {Quantity("friction", d::kDimensionless, "friction at the harness tie points",
+                             false, 0.0, 5.0)},
+                   {{"belt", BlockKind::kBelt, "a belt of the harness"}}});
   specs.push_back(
       {BlockKind::kAirbag,
        {Vector("position", d::kLength, "deployment point in the frame", true),
         Vector("orientation", d::kAngle, "yaw, pitch and roll of the bag axes"),
         Vector("semi_axes", d::kLength, "semi-axes of the fully deployed bag", true),
         NonNegative("deploy_at", d::kTime, "time the bag starts to fill", true),
-        Function("inflow", d::kTime, d::kMassFlow, "gas mass inflow against time since "
-                                                  "deployment",
+        Function("inflow", d::kTime, d::kMassFlow,
+                 "gas mass inflow against time since "
+                 "deployment",
                  true),
         NonNegative("vent_area", d::kArea, "vent area"),
         Positive("ambient_pressure", d::kPressure, "ambient pressure; default 101325 Pa"),
@@ -234,19 +228,18 @@ std::vector<BlockSpec> MakeSpecs() {
         NonNegative("distance", d::kLength, "fixed distance; default: the initial distance"),
         Vector("axis", d::kDimensionless, "sliding direction in the second frame")},
        {}});
-  specs.push_back(
-      {BlockKind::kInitial,
-       {Vector("position", d::kLength, "position of the reference segment or vehicle"),
-        Vector("orientation", d::kAngle, "yaw, pitch and roll"),
-        Vector("velocity", d::kVelocity, "linear velocity"),
-        Vector("angular_velocity", d::kAngularVelocity, "angular velocity"),
-        Vector("angles", d::kAngle, "joint angles: (precession, nutation, spin) or flexure, "
-                                    "twist")},
-       {}});
-  specs.push_back(
-      {BlockKind::kOutput,
-       {Typed("criteria", V::kCriteria, "injury criteria: hic15(occupant.head), ...")},
-       {}});
+  specs.push_back({BlockKind::kInitial,
+                   {Vector("position", d::kLength, "position of the reference segment or vehicle"),
+                    Vector("orientation", d::kAngle, "yaw, pitch and roll"),
+                    Vector("velocity", d::kVelocity, "linear velocity"),
+                    Vector("angular_velocity", d::kAngularVelocity, "angular velocity"),
+                    Vector("angles", d::kAngle,
+                           "joint angles: (precession, nutation, spin) or flexure, "
+                           "twist")},
+                   {}});
+  specs.push_back({BlockKind::kOutput,
+                   {Typed("criteria", V::kCriteria, "injury criteria: hic15(occupant.head), ...")},
+                   {}});
   specs.push_back({BlockKind::kTime,
                    {Positive("end", d::kTime, "end time of the run", true),
                     Positive("output_every", d::kTime, "output step", true),
@@ -268,10 +261,9 @@ std::vector<BlockSpec> MakeSpecs() {
   specs.push_back({BlockKind::kSettle,
                    {Positive("duration", d::kTime, "time to settle under gravity", true)},
                    {}});
-  specs.push_back(
-      {BlockKind::kSymmetry,
-       {Repeatable(Typed("pair", V::kPair, "two segments mirrored in the xz plane"))},
-       {}});
+  specs.push_back({BlockKind::kSymmetry,
+                   {Repeatable(Typed("pair", V::kPair, "two segments mirrored in the xz plane"))},
+                   {}});
   return specs;
 }
 
@@ -279,30 +271,54 @@ std::vector<BlockSpec> MakeSpecs() {
 
 std::string_view BlockName(BlockKind kind) {
   switch (kind) {
-    case BlockKind::kFile: return "file";
-    case BlockKind::kScenario: return "scenario";
-    case BlockKind::kModule: return "module";
-    case BlockKind::kBody: return "body";
-    case BlockKind::kSegment: return "segment";
-    case BlockKind::kSegmentEllipsoid: return "segment ellipsoid";
-    case BlockKind::kJoint: return "joint";
-    case BlockKind::kVehicle: return "vehicle";
-    case BlockKind::kPlane: return "plane";
-    case BlockKind::kEllipsoid: return "ellipsoid";
-    case BlockKind::kTable: return "function";
-    case BlockKind::kContact: return "contact";
-    case BlockKind::kBelt: return "belt";
-    case BlockKind::kHarness: return "harness";
-    case BlockKind::kAirbag: return "airbag";
-    case BlockKind::kSpring: return "spring";
-    case BlockKind::kConstraint: return "constraint";
-    case BlockKind::kInitial: return "initial";
-    case BlockKind::kOutput: return "output";
-    case BlockKind::kTime: return "time";
-    case BlockKind::kIntegrator: return "integrator";
-    case BlockKind::kRestart: return "restart";
-    case BlockKind::kSettle: return "settle";
-    case BlockKind::kSymmetry: return "symmetry";
+    case BlockKind::kFile:
+      return "file";
+    case BlockKind::kScenario:
+      return "scenario";
+    case BlockKind::kModule:
+      return "module";
+    case BlockKind::kBody:
+      return "body";
+    case BlockKind::kSegment:
+      return "segment";
+    case BlockKind::kSegmentEllipsoid:
+      return "segment ellipsoid";
+    case BlockKind::kJoint:
+      return "joint";
+    case BlockKind::kVehicle:
+      return "vehicle";
+    case BlockKind::kPlane:
+      return "plane";
+    case BlockKind::kEllipsoid:
+      return "ellipsoid";
+    case BlockKind::kTable:
+      return "function";
+    case BlockKind::kContact:
+      return "contact";
+    case BlockKind::kBelt:
+      return "belt";
+    case BlockKind::kHarness:
+      return "harness";
+    case BlockKind::kAirbag:
+      return "airbag";
+    case BlockKind::kSpring:
+      return "spring";
+    case BlockKind::kConstraint:
+      return "constraint";
+    case BlockKind::kInitial:
+      return "initial";
+    case BlockKind::kOutput:
+      return "output";
+    case BlockKind::kTime:
+      return "time";
+    case BlockKind::kIntegrator:
+      return "integrator";
+    case BlockKind::kRestart:
+      return "restart";
+    case BlockKind::kSettle:
+      return "settle";
+    case BlockKind::kSymmetry:
+      return "symmetry";
   }
   return "block";
 }

@@ -44,21 +44,21 @@ enum class BlockKind {
 std::string_view BlockName(BlockKind kind);
 
 enum class ValueType {
-  kQuantity,   // one number with a unit of `dimension`
-  kVector,     // (x, y, z) with a unit of `dimension`
-  kPoints,     // `count` vectors separated by commas
-  kBool,       // true or false
-  kString,     // "text"
-  kWord,       // one of `choices`
-  kReference,  // a name of one of the kinds in `choices` (segment, function, ...)
+  kQuantity,    // one number with a unit of `dimension`
+  kVector,      // (x, y, z) with a unit of `dimension`
+  kPoints,      // `count` vectors separated by commas
+  kBool,        // true or false
+  kString,      // "text"
+  kWord,        // one of `choices`
+  kReference,   // a name of one of the kinds in `choices` (segment, function, ...)
   kReferences,  // one or more names, comma separated
-  kFunction,   // a function name or constant(...) / table(...) / polynomial(...) of
-               // `argument` -> `dimension`
-  kMotion,     // half_sine(...), trapezoid(...), table(time -> acceleration [-> angular])
-  kBeltPath,   // anchor -> segment -> ... -> anchor
-  kLock,       // true, false, or a list of Euler axes
-  kCriteria,   // hic15(segment), nij(joint), ...
-  kPair,       // two names (symmetry pairs)
+  kFunction,    // a function name or constant(...) / table(...) / polynomial(...) of
+                // `argument` -> `dimension`
+  kMotion,      // half_sine(...), trapezoid(...), table(time -> acceleration [-> angular])
+  kBeltPath,    // anchor -> segment -> ... -> anchor
+  kLock,        // true, false, or a list of Euler axes
+  kCriteria,    // hic15(segment), nij(joint), ...
+  kPair,        // two names (symmetry pairs)
 };
 
 struct AttributeSpec {

@@ -75,10 +75,11 @@ struct number : seq< plus< digit >, opt< one< '.' >, star< digit > >, opt< expon
                      not_at< identifier_other > > {};
 
 // Units follow a number or vector on the same line. A unit name is not followed by `=`, `.`,
-// `(` or `:` (that would be the next statement or a call), so `x = 5  y = 3` reads two statements.
+// `(` or `:` (that would be the next statement, a path or a call), so `x = 5  y = 3` reads two
+// statements.
 struct unit_power : seq< one< '^' >, opt< one< '-' > >, plus< digit > > {};
 struct unit_symbol : seq< not_at< reserved >, name,
-                          not_at< sp, sor< equals, one< '.', '(', ':', '{' > > > > {};
+                          not_at< sp, sor< equals, one< '.', '(', ':' > > > > {};
 struct unit_factor : seq< unit_symbol, opt< unit_power > > {};
 struct unit_mul : one< '*' > {};
 struct unit_div : one< '/' > {};

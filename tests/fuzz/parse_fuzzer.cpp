@@ -55,6 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   (void)ast::Dump(parsed);
 
 #ifdef SLED_FUZZ_FORMATTER
+  // lang/format/formatter.h promises: a tree the parser produced formats to text that parses
+  // cleanly back to the same tree, and formatting that text again changes nothing.
   if (!collector.has_errors()) {
     const std::string formatted = Format(parsed);
     const FileId again = sources.Add("fuzz-formatted.sled", formatted);
@@ -62,14 +64,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     ParseOptions reparse_options;
     reparse_options.diagnostics = &reparse;
     const ast::File reparsed = Parse(sources, again, reparse_options);
-    if (reparse.has_errors()) {
-      std::string report = text + "\n--- formatted ---\n" + formatted + "\n--- errors ---\n";
+    const auto report = [&] {
+      std::string out = text + "\n--- formatted ---\n" + formatted + "\n--- diagnostics ---\n";
       for (const Diagnostic& diagnostic : reparse.diagnostics()) {
-        report += RenderCompact(sources, diagnostic) + "\n";
+        out += RenderCompact(sources, diagnostic) + "\n";
       }
-      Fail("the formatter's output does not parse", report);
+      return out;
+    };
+    if (reparse.has_errors()) Fail("the formatter's output does not parse", report());
+    if (ast::Dump(reparsed) != ast::Dump(parsed)) {
+      Fail("the formatter's output parses to a different tree", report());
     }
-    (void)reparsed;
+    if (Format(reparsed) != formatted) Fail("formatting is not idempotent", report());
   }
 #endif
   return 0;

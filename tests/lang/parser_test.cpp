@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -472,6 +473,21 @@ TEST(ParseError, DeepBlocksAndNegationsReportNestingInsteadOfCrashing) {
   auto negations = ParseText("x = " + std::string(100000, '-') + "1\n");
   ASSERT_EQ(negations->diagnostics.error_count(), 1);
   EXPECT_EQ(negations->diagnostics.diagnostics()[0].code(), "E0106");
+}
+
+TEST(ParseError, NestedParenthesesDoNotMakeTheParserBacktrackExponentially) {
+  // A vector and a parenthesized value both start with `(` and a value. A parser that parses
+  // that value once per alternative takes 2^depth steps: 22 levels took seconds, 30 took hours
+  // (the fuzzer found it). Well within the nesting limit, this must take microseconds; the bound
+  // is a generous guard against exponential time, not a benchmark.
+  for (const std::string& close : {std::string(22, ')'), std::string()}) {
+    const std::string text = "x = " + std::string(22, '(') + "1" + close + "\n";
+    const auto start = std::chrono::steady_clock::now();
+    auto parsed = ParseText(text);
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    EXPECT_LT(elapsed.count(), 0.5) << text;
+    EXPECT_EQ(parsed->diagnostics.has_errors(), close.empty()) << text;
+  }
 }
 
 TEST(ParseError, SeveralErrorsAreReportedInOrderAndGoodStatementsKept) {

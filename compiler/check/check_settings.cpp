@@ -1,0 +1,295 @@
+// Run settings (time, integrator, restart, settling, symmetry, gravity), initial conditions and
+// output requests.
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "compiler/check/context.h"
+
+namespace sled::compiler::internal {
+
+void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
+  RunSettings& run = scenario_.run;
+  if (auto gravity = ReadVector(scope, scenario_block, BlockKind::kScenario, "gravity")) {
+    run.gravity = *gravity;
+  }
+  const ast::Statement* time = nullptr;
+  for (const ast::Statement* statement : run_blocks_) {
+    const std::string& keyword = statement->keyword;
+    if (keyword == "time") {
+      time = statement;
+      const BoundBlock bound = Bind(BlockKind::kTime, statement->block.get(), statement->range);
+      run.end = ReadQuantity(scope, bound, BlockKind::kTime, "end").value_or(0.0);
+      run.output_every = ReadQuantity(scope, bound, BlockKind::kTime, "output_every").value_or(0);
+      run.start = ReadQuantity(scope, bound, BlockKind::kTime, "start").value_or(0.0);
+      if (run.end > 0 && !(run.start < run.end)) {
+        Report(DiagnosticKind::kInvalidRunSettings, statement->range,
+               fmt::format("the run starts at {:g} s but ends at {:g} s", run.start, run.end),
+               "start not before end");
+      } else if (run.output_every > 0 && run.end > 0 && run.output_every > run.end - run.start) {
+        Report(DiagnosticKind::kInvalidRunSettings, One(bound, "output_every")->range,
+               fmt::format("the output step {:g} s is longer than the run ({:g} s)",
+                           run.output_every, run.end - run.start),
+               "longer than the run", "choose an output step shorter than the run");
+      }
+    } else if (keyword == "integrator") {
+      static const std::vector<std::string> kMethods = {"exponential", "dopri5", "rosenbrock"};
+      if (statement->target) {
+        const std::string method = statement->target->PathText();
+        const auto found = std::find(kMethods.begin(), kMethods.end(), method);
+        if (found == kMethods.end()) {
+          Report(DiagnosticKind::kInvalidEnumValue, statement->target->range,
+                 fmt::format("unknown integrator `{}`", method), "not an integrator",
+                 lang::DidYouMean(method, kMethods).empty()
+                     ? "integrators: exponential, dopri5, rosenbrock"
+                     : lang::DidYouMean(method, kMethods));
+        } else {
+          run.method = static_cast<IntegratorMethod>(found - kMethods.begin());
+        }
+      }
+      const BoundBlock bound =
+          Bind(BlockKind::kIntegrator, statement->block.get(), statement->range);
+      run.relative_tolerance =
+          ReadQuantity(scope, bound, BlockKind::kIntegrator, "tolerance").value_or(1e-6);
+      run.absolute_tolerance =
+          ReadQuantity(scope, bound, BlockKind::kIntegrator, "abs_tolerance").value_or(1e-9);
+      run.min_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "min_step").value_or(1e-9);
+      run.max_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "max_step");
+      run.initial_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "initial_step");
+      if (run.max_step && run.min_step > *run.max_step) {
+        Report(DiagnosticKind::kInvalidRunSettings,
+               One(bound, "min_step") ? One(bound, "min_step")->range : statement->range,
+               fmt::format("min_step {:g} s exceeds max_step {:g} s", run.min_step, *run.max_step),
+               "min_step above max_step");
+      }
+    } else if (keyword == "restart") {
+      const BoundBlock bound = Bind(BlockKind::kRestart, statement->block.get(), statement->range);
+      run.checkpoint_every = ReadQuantity(scope, bound, BlockKind::kRestart, "checkpoint_every");
+      if (const ast::Statement* resume = One(bound, "resume_from")) {
+        if (const ast::Expr* value = SingleValue(*resume)) {
+          if (value->kind == ast::ExprKind::kString) {
+            run.resume_from = value->text;
+          } else {
+            Report(DiagnosticKind::kWrongValueKind, value->range,
+                   "`resume_from` is a file name in quotes", "not a string");
+          }
+        }
+      }
+    } else if (keyword == "settle") {
+      const BoundBlock bound = Bind(BlockKind::kSettle, statement->block.get(), statement->range);
+      run.settle_duration = ReadQuantity(scope, bound, BlockKind::kSettle, "duration");
+    } else if (keyword == "symmetry") {
+      static const std::vector<std::string> kKinds = {"planar", "mirror"};
+      const std::string kind = statement->target ? statement->target->PathText() : "";
+      if (kind == "planar") {
+        run.symmetry = Symmetry::kPlanar;
+      } else if (kind == "mirror") {
+        run.symmetry = Symmetry::kMirror;
+      } else {
+        Report(DiagnosticKind::kInvalidEnumValue,
+               statement->target ? statement->target->range : statement->keyword_range,
+               "symmetry is `planar` (2-D, in the xz plane) or `mirror`", "not a symmetry",
+               lang::DidYouMean(kind, kKinds));
+      }
+      const BoundBlock bound = Bind(BlockKind::kSymmetry, statement->block.get(), statement->range);
+      auto pairs = bound.attributes.find("pair");
+      if (pairs != bound.attributes.end()) {
+        for (const ast::Statement* pair : pairs->second) {
+          if (pair->values.size() != 2) {
+            Report(DiagnosticKind::kWrongValueKind, pair->range,
+                   "`pair` names two segments: `pair = occupant.arm_l, occupant.arm_r`",
+                   "not two names");
+            continue;
+          }
+          Entity* left = Resolve(scope, pair->values[0], {EntityKind::kSegment});
+          Entity* right = Resolve(scope, pair->values[1], {EntityKind::kSegment});
+          if (left && right) run.mirror_pairs.push_back({left->index, right->index});
+        }
+      }
+      if (run.symmetry == Symmetry::kPlanar && !run.mirror_pairs.empty()) {
+        Report(DiagnosticKind::kInvalidRunSettings, statement->range,
+               "planar symmetry takes no mirror pairs", "pairs given");
+      }
+    }
+  }
+  if (!time) {
+    Report(DiagnosticKind::kMissingAttribute, scenario_statement_->keyword_range,
+           "a scenario needs a `time` block", "no `time` block",
+           "add `time { end = 200 ms  output_every = 0.1 ms }`");
+  }
+}
+
+void Checker::CheckInitialConditions() {
+  for (const Pending& pending : initials_) {
+    const ast::Statement& statement = *pending.statement;
+    Scope& scope = *pending.scope;
+    const BoundBlock bound = Bind(BlockKind::kInitial, statement.block.get(), statement.range);
+    if (!statement.target) {
+      Report(DiagnosticKind::kMalformedStatement, statement.range,
+             "`initial` names a body, segment, joint or vehicle: `initial occupant { ... }`",
+             "no target");
+      continue;
+    }
+    Entity* entity = Resolve(
+        scope, *statement.target,
+        {EntityKind::kBody, EntityKind::kSegment, EntityKind::kJoint, EntityKind::kVehicle});
+    if (!entity) continue;
+    InitialCondition initial;
+    initial.range = statement.range;
+    initial.index = entity->index;
+    const bool joint = entity->kind == EntityKind::kJoint;
+    initial.kind = entity->kind == EntityKind::kBody      ? InitialCondition::Kind::kBody
+                   : entity->kind == EntityKind::kSegment ? InitialCondition::Kind::kSegment
+                   : joint                                ? InitialCondition::Kind::kJoint
+                                                          : InitialCondition::Kind::kVehicle;
+    for (const auto& [name, statements] : bound.attributes) {
+      const bool for_joint = name == "angles";
+      if (for_joint != joint) {
+        Report(DiagnosticKind::kMisplacedStatement, statements[0]->keyword_range,
+               joint ? fmt::format("a joint's initial state is its `angles`, not `{}`", name)
+                     : "`angles` sets a joint; this `initial` names a body, segment or vehicle",
+               "not for this target");
+      }
+    }
+    initial.position = ReadVector(scope, bound, BlockKind::kInitial, "position");
+    initial.orientation = ReadVector(scope, bound, BlockKind::kInitial, "orientation");
+    initial.velocity = ReadVector(scope, bound, BlockKind::kInitial, "velocity");
+    initial.angular_velocity = ReadVector(scope, bound, BlockKind::kInitial, "angular_velocity");
+    initial.joint_angles = ReadVector(scope, bound, BlockKind::kInitial, "angles");
+    scenario_.initial_conditions.push_back(std::move(initial));
+  }
+}
+
+void Checker::CheckOutputs() {
+  for (const Pending& pending : outputs_) {
+    const ast::Statement& statement = *pending.statement;
+    Scope& scope = *pending.scope;
+    const BoundBlock bound = Bind(BlockKind::kOutput, statement.block.get(), statement.range);
+    for (const ast::Statement* request : bound.declarations) {
+      const OutputSpec* spec = FindOutput(request->keyword);
+      if (!request->target || request->has_value || request->block) {
+        Report(DiagnosticKind::kMalformedStatement, request->range,
+               fmt::format("write `{} {}{}`", request->keyword,
+                           spec->target_kind == "contact" ? "A with B" : "NAME",
+                           spec->takes_point ? " [at (x, y, z) mm]" : ""),
+               "not an output request");
+        continue;
+      }
+      OutputRequest output;
+      output.range = request->range;
+      output.kind = static_cast<OutputRequest::Kind>(spec - AllOutputSpecs().data());
+      output.label = request->target->PathText();
+      for (const ast::Clause& clause : request->clauses) {
+        const bool allowed = (clause.word == "at" && spec->takes_point) || clause.word == "as" ||
+                             (clause.word == "with" && spec->target_kind == "contact");
+        if (!allowed) {
+          Report(DiagnosticKind::kMalformedStatement, clause.word_range,
+                 fmt::format("`{}` takes no `{}` clause", request->keyword, clause.word),
+                 "not allowed here");
+        }
+      }
+      if (const ast::Clause* as = request->FindClause("as")) {
+        if (as->value.kind == ast::ExprKind::kPath && as->value.path.size() == 1) {
+          output.label = as->value.path[0];
+        } else {
+          Report(DiagnosticKind::kMalformedStatement, as->value.range, "`as` takes one plain name",
+                 "not a plain name");
+        }
+      }
+      if (const ast::Clause* at = request->FindClause("at"); at && spec->takes_point) {
+        output.point = ExpectVector(scope, at->value, dim::kLength, "at").value_or(Vec3{});
+      }
+      if (spec->target_kind == "contact") {
+        const ast::Clause* with = request->FindClause("with");
+        if (!with) {
+          Report(DiagnosticKind::kMalformedStatement, request->range,
+                 "write `contact_force A with B`", "no `with`");
+          continue;
+        }
+        // The request names the same two surfaces as a declared contact.
+        Entity* first =
+            Resolve(scope, *request->target, {EntityKind::kSegment, EntityKind::kEllipsoid});
+        Entity* second = Resolve(
+            scope, with->value, {EntityKind::kSegment, EntityKind::kEllipsoid, EntityKind::kPlane});
+        if (!first || !second) continue;
+        auto matches = [&](const SurfaceRef& surface, Entity* entity) {
+          if (entity->kind == EntityKind::kPlane) {
+            return surface.kind == SurfaceRef::Kind::kPlane && surface.index == entity->index;
+          }
+          if (surface.kind != SurfaceRef::Kind::kEllipsoid) return false;
+          if (entity->kind == EntityKind::kEllipsoid) return surface.index == entity->index;
+          const Ellipsoid& e = scenario_.ellipsoids[static_cast<std::size_t>(surface.index)];
+          return e.frame.kind == FrameRef::Kind::kSegment && e.frame.index == entity->index;
+        };
+        for (std::size_t i = 0; i < scenario_.contacts.size(); ++i) {
+          const Contact& contact = scenario_.contacts[i];
+          if (matches(contact.first, first) && matches(contact.second, second)) {
+            output.index = static_cast<int>(i);
+            break;
+          }
+        }
+        if (output.index < 0) {
+          Report(DiagnosticKind::kOutputNeverComputed, request->range,
+                 fmt::format("no contact between `{}` and `{}` is declared, so its force is "
+                             "never computed",
+                             request->target->PathText(), with->value.PathText()),
+                 "nothing to output",
+                 fmt::format("declare `contact {} with {} {{ force = ... }}`",
+                             request->target->PathText(), with->value.PathText()));
+          continue;
+        }
+        // fmt rather than operator+: GCC 12 reports a false -Wrestrict on string concatenation.
+        output.label = fmt::format("{}.{}", output.label, with->value.PathText());
+        scenario_.outputs.push_back(std::move(output));
+        continue;
+      }
+      const EntityKind kind = *EntityKindFromName(spec->target_kind);
+      Entity* target = Resolve(scope, *request->target, {kind});
+      if (!target) continue;
+      output.index = target->index;
+      if (kind == EntityKind::kJoint &&
+          (request->keyword == "joint_torque" || request->keyword == "joint_angle")) {
+        const Joint& joint = scenario_.joints[static_cast<std::size_t>(target->index)];
+        if (joint.type == JointType::kNull) {
+          Report(DiagnosticKind::kOutputNeverComputed, request->range,
+                 fmt::format("`{}` is a null joint: it has no {}", joint.name,
+                             request->keyword == "joint_torque" ? "torque" : "angle"),
+                 "never computed", "null joints only start a new body");
+          continue;
+        }
+      }
+      scenario_.outputs.push_back(std::move(output));
+    }
+    if (const ast::Statement* criteria = One(bound, "criteria")) {
+      for (const ast::Expr& value : criteria->values) {
+        if (value.kind != ast::ExprKind::kCall || value.arguments.size() != 1 ||
+            !value.arguments[0].name.empty()) {
+          Report(DiagnosticKind::kWrongValueKind, value.range,
+                 "a criterion is written `name(target)`, as in `hic15(occupant.head)`",
+                 "not a criterion");
+          continue;
+        }
+        const CriterionSpec* spec = FindCriterion(value.PathText());
+        if (!spec) {
+          std::vector<std::string> names;
+          for (const CriterionSpec& c : AllCriterionSpecs()) names.emplace_back(c.name);
+          Report(DiagnosticKind::kUnknownName, value.range,
+                 fmt::format("unknown injury criterion `{}`", value.PathText()), "not a criterion",
+                 lang::DidYouMean(value.PathText(), names));
+          continue;
+        }
+        const EntityKind kind = *EntityKindFromName(spec->target_kind);
+        Entity* target = Resolve(scope, *value.arguments[0].value, {kind});
+        if (!target) continue;
+        Criterion criterion;
+        criterion.kind = static_cast<Criterion::Kind>(spec - AllCriterionSpecs().data());
+        (kind == EntityKind::kSegment ? criterion.segment : criterion.joint) = target->index;
+        criterion.range = value.range;
+        scenario_.criteria.push_back(criterion);
+      }
+    }
+  }
+}
+
+}  // namespace sled::compiler::internal

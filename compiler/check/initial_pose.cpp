@@ -1,0 +1,211 @@
+#include "compiler/check/initial_pose.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sled::compiler {
+namespace {
+
+Vec3 Apply(const Mat3& m, const Vec3& v) {
+  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
+          m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
+          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
+}
+
+Vec3 ApplyTransposed(const Mat3& m, const Vec3& v) {
+  return {m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
+          m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
+          m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2]};
+}
+
+Mat3 Multiply(const Mat3& a, const Mat3& b) {
+  Mat3 out{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) out[i][j] += a[i][k] * b[k][j];
+    }
+  }
+  return out;
+}
+
+Mat3 Transpose(const Mat3& m) {
+  Mat3 out{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out[i][j] = m[j][i];
+  }
+  return out;
+}
+
+Vec3 Add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 Cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+struct WorldEllipsoid {
+  Vec3 center;
+  Mat3 rotation;
+  Vec3 semi_axes;
+};
+
+WorldEllipsoid ToWorld(const InitialPoses& poses, const Ellipsoid& e) {
+  const Pose frame = poses.Of(e.frame);
+  return {Add(frame.position, Apply(frame.rotation, e.center)),
+          Multiply(frame.rotation, RotationFromYawPitchRoll(e.orientation)), e.semi_axes};
+}
+
+// Positive when `point` lies inside the ellipsoid: 1 - (x/a)^2 - (y/b)^2 - (z/c)^2.
+double Inside(const WorldEllipsoid& e, const Vec3& point) {
+  const Vec3 local = ApplyTransposed(e.rotation, Sub(point, e.center));
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    if (!(e.semi_axes[i] > 0)) return -1.0;
+    sum += (local[i] / e.semi_axes[i]) * (local[i] / e.semi_axes[i]);
+  }
+  return 1.0 - sum;
+}
+
+}  // namespace
+
+Mat3 RotationFromYawPitchRoll(const Vec3& ypr) {
+  const double cy = std::cos(ypr[0]), sy = std::sin(ypr[0]);
+  const double cp = std::cos(ypr[1]), sp = std::sin(ypr[1]);
+  const double cr = std::cos(ypr[2]), sr = std::sin(ypr[2]);
+  const Mat3 yaw{{{cy, -sy, 0}, {sy, cy, 0}, {0, 0, 1}}};
+  const Mat3 pitch{{{cp, 0, sp}, {0, 1, 0}, {-sp, 0, cp}}};
+  const Mat3 roll{{{1, 0, 0}, {0, cr, -sr}, {0, sr, cr}}};
+  return Multiply(Multiply(yaw, pitch), roll);
+}
+
+Pose InitialPoses::Of(const FrameRef& frame) const {
+  if (frame.kind == FrameRef::Kind::kSegment && frame.index >= 0 &&
+      static_cast<std::size_t>(frame.index) < segments.size()) {
+    return segments[static_cast<std::size_t>(frame.index)];
+  }
+  if (frame.kind == FrameRef::Kind::kVehicle && frame.index >= 0 &&
+      static_cast<std::size_t>(frame.index) < vehicles.size()) {
+    return vehicles[static_cast<std::size_t>(frame.index)];
+  }
+  return Pose{};
+}
+
+InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
+  InitialPoses poses;
+  poses.segments.resize(scenario.segments.size());
+  poses.vehicles.resize(scenario.vehicles.size());
+  for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+    poses.vehicles[v].position = scenario.vehicles[v].position;
+    poses.vehicles[v].rotation = RotationFromYawPitchRoll(scenario.vehicles[v].orientation);
+  }
+  // Reference segments take the initial conditions of their body or of themselves.
+  for (const InitialCondition& initial : scenario.initial_conditions) {
+    std::vector<int> targets;
+    if (initial.kind == InitialCondition::Kind::kBody && initial.index >= 0) {
+      const Body& body = scenario.bodies[static_cast<std::size_t>(initial.index)];
+      if (!body.reference_segments.empty()) targets.push_back(body.reference_segments[0]);
+    } else if (initial.kind == InitialCondition::Kind::kSegment) {
+      targets.push_back(initial.index);
+    } else if (initial.kind == InitialCondition::Kind::kVehicle && initial.index >= 0) {
+      Pose& pose = poses.vehicles[static_cast<std::size_t>(initial.index)];
+      if (initial.position) pose.position = *initial.position;
+      if (initial.orientation) pose.rotation = RotationFromYawPitchRoll(*initial.orientation);
+    }
+    for (int segment : targets) {
+      if (segment < 0) continue;
+      Pose& pose = poses.segments[static_cast<std::size_t>(segment)];
+      if (initial.position) pose.position = *initial.position;
+      if (initial.orientation) pose.rotation = RotationFromYawPitchRoll(*initial.orientation);
+    }
+  }
+  // Walk each tree from its roots: a child's joint frame coincides with its parent's.
+  std::vector<std::vector<int>> children(scenario.segments.size());
+  for (std::size_t j = 0; j < scenario.joints.size(); ++j) {
+    const Joint& joint = scenario.joints[j];
+    if (joint.parent >= 0 && joint.child >= 0 && joint.type != JointType::kNull) {
+      children[static_cast<std::size_t>(joint.parent)].push_back(static_cast<int>(j));
+    }
+  }
+  std::vector<bool> placed(scenario.segments.size(), false);
+  std::vector<int> stack;
+  for (const Body& body : scenario.bodies) {
+    for (int root : body.reference_segments) {
+      if (root >= 0 && !placed[static_cast<std::size_t>(root)]) {
+        placed[static_cast<std::size_t>(root)] = true;
+        stack.push_back(root);
+      }
+    }
+  }
+  while (!stack.empty()) {
+    const int parent = stack.back();
+    stack.pop_back();
+    const Pose& parent_pose = poses.segments[static_cast<std::size_t>(parent)];
+    for (int joint_index : children[static_cast<std::size_t>(parent)]) {
+      const Joint& joint = scenario.joints[static_cast<std::size_t>(joint_index)];
+      if (placed[static_cast<std::size_t>(joint.child)]) continue;
+      Pose& child = poses.segments[static_cast<std::size_t>(joint.child)];
+      const Mat3 joint_frame =
+          Multiply(parent_pose.rotation, RotationFromYawPitchRoll(joint.axes_in_parent));
+      child.rotation =
+          Multiply(joint_frame, Transpose(RotationFromYawPitchRoll(joint.axes_in_child)));
+      child.position =
+          Sub(Add(parent_pose.position, Apply(parent_pose.rotation, joint.location_in_parent)),
+              Apply(child.rotation, joint.location_in_child));
+      placed[static_cast<std::size_t>(joint.child)] = true;
+      stack.push_back(joint.child);
+    }
+  }
+  return poses;
+}
+
+double InitialPenetration(const CheckedScenario& scenario, const InitialPoses& poses,
+                          const Contact& contact) {
+  if (contact.first.kind != SurfaceRef::Kind::kEllipsoid) return 0.0;
+  const WorldEllipsoid e =
+      ToWorld(poses, scenario.ellipsoids[static_cast<std::size_t>(contact.first.index)]);
+  if (contact.second.kind == SurfaceRef::Kind::kPlane) {
+    const Plane& plane = scenario.planes[static_cast<std::size_t>(contact.second.index)];
+    const Pose frame = poses.Of(plane.frame);
+    std::array<Vec3, 3> p;
+    for (int i = 0; i < 3; ++i) p[i] = Add(frame.position, Apply(frame.rotation, plane.corners[i]));
+    const Vec3 u = Sub(p[1], p[0]);
+    const Vec3 v = Sub(p[2], p[0]);
+    Vec3 n = Cross(u, v);
+    const double length = std::sqrt(Dot(n, n));
+    if (!(length > 0)) return 0.0;
+    for (double& c : n) c /= length;
+    // Extent of the ellipsoid along the normal, and where its centre stands.
+    const Vec3 n_local = ApplyTransposed(e.rotation, n);
+    double reach = 0.0;
+    for (int i = 0; i < 3; ++i)
+      reach += (e.semi_axes[i] * n_local[i]) * (e.semi_axes[i] * n_local[i]);
+    reach = std::sqrt(reach);
+    const double height = Dot(Sub(e.center, p[0]), n);
+    if (height < 0) return 0.0;  // behind the plane: it cannot be reached from there
+    // The centre must project inside the parallelogram (with the ellipsoid's reach as margin).
+    const Vec3 d = Sub(e.center, p[0]);
+    const double uu = Dot(u, u), uv = Dot(u, v), vv = Dot(v, v);
+    const double du = Dot(d, u), dv = Dot(d, v);
+    const double det = uu * vv - uv * uv;
+    if (!(det > 0)) return 0.0;
+    const double s = (du * vv - dv * uv) / det;
+    const double t = (dv * uu - du * uv) / det;
+    const double margin_s = reach / std::sqrt(uu), margin_t = reach / std::sqrt(vv);
+    if (s < -margin_s || s > 1 + margin_s || t < -margin_t || t > 1 + margin_t) return 0.0;
+    return reach - height;
+  }
+  const WorldEllipsoid other =
+      ToWorld(poses, scenario.ellipsoids[static_cast<std::size_t>(contact.second.index)]);
+  // Conservative for ellipsoid pairs: buried when one centre is inside the other ellipsoid.
+  if (Inside(other, e.center) > 0 || Inside(e, other.center) > 0) {
+    // An estimate of the overlap along the line of centres, from the smallest semi-axes; at
+    // least enough to be reported.
+    const Vec3 gap = Sub(e.center, other.center);
+    const double smallest = std::min({e.semi_axes[0], e.semi_axes[1], e.semi_axes[2]}) +
+                            std::min({other.semi_axes[0], other.semi_axes[1], other.semi_axes[2]});
+    return std::max(smallest - std::sqrt(Dot(gap, gap)), 1.001e-3);
+  }
+  return 0.0;
+}
+
+}  // namespace sled::compiler

@@ -1,0 +1,232 @@
+// The `sled` command: check, fmt and explain (DESIGN.md §6). Libraries report; this prints.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "compiler/check/check.h"
+#include "compiler/driver/explain_pages.h"
+#include "lang/diagnostics/render.h"
+#include "lang/format/formatter.h"
+#include "lang/syntax/parser.h"
+
+namespace {
+
+using sled::lang::DiagnosticCollector;
+using sled::lang::SourceManager;
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputErrors = 1;
+constexpr int kExitUsage = 2;
+
+constexpr std::string_view kUsage = R"(usage: sled <command> [options] [files]
+
+commands:
+  check FILE...        parse, check and lint scenarios; print diagnostics
+  fmt FILE... [--check]
+                       rewrite files in canonical form (--check: only report)
+  explain CODE         the long explanation of a diagnostic code, such as E0204
+
+options for check:
+  --diagnostics=rich|compact   diagnostic style (default rich)
+  --set NAME=VALUE             override a `param` of the scenario
+  --stdlib DIR                 the standard library folder
+  --no-lints                   report errors only
+  --dump-ast                   print the syntax tree
+  --dump-checked               print the checked scenario
+)";
+
+struct Options {
+  std::string command;
+  std::vector<std::string> files;
+  bool compact = false;
+  bool check_only = false;
+  bool dump_ast = false;
+  bool dump_checked = false;
+  bool lints = true;
+  std::string stdlib;
+  std::vector<std::pair<std::string, std::string>> overrides;
+};
+
+int UsageError(const std::string& message) {
+  std::cerr << "sled: " << message << "\n\n" << kUsage;
+  return kExitUsage;
+}
+
+bool ColorWanted() { return isatty(STDERR_FILENO) && std::getenv("NO_COLOR") == nullptr; }
+
+void PrintDiagnostics(const SourceManager& sources, DiagnosticCollector& collector, bool compact) {
+  collector.SortByPosition();
+  const sled::lang::RenderOptions render{ColorWanted()};
+  for (const auto& diagnostic : collector.diagnostics()) {
+    if (compact) {
+      std::cerr << sled::lang::RenderCompact(sources, diagnostic) << '\n';
+    } else {
+      std::cerr << sled::lang::RenderRich(sources, diagnostic, render) << '\n';
+    }
+  }
+  if (!compact && (collector.error_count() > 0 || collector.warning_count() > 0)) {
+    std::cerr << fmt::format("{} error{}, {} warning{}\n", collector.error_count(),
+                             collector.error_count() == 1 ? "" : "s", collector.warning_count(),
+                             collector.warning_count() == 1 ? "" : "s");
+  }
+}
+
+// Loads a file, or reports E0107 and returns nullopt.
+std::optional<sled::lang::FileId> LoadFile(SourceManager& sources, const std::string& path,
+                                           DiagnosticCollector& collector) {
+  if (auto id = sources.Load(path)) return id;
+  auto diagnostic = sled::lang::MakeDiagnostic(sled::lang::DiagnosticKind::kFileUnreadable, {},
+                                               fmt::format("cannot read `{}`", path));
+  diagnostic.labels.clear();
+  diagnostic.help = "check the path and the file's permissions";
+  collector.Consume(std::move(diagnostic));
+  return std::nullopt;
+}
+
+int RunCheck(const Options& options) {
+  if (options.files.empty()) return UsageError("`check` needs at least one file");
+  bool errors = false;
+  for (const std::string& path : options.files) {
+    SourceManager sources;
+    DiagnosticCollector collector;
+    if (auto file = LoadFile(sources, path, collector)) {
+      sled::lang::ParseOptions parse_options;
+      parse_options.diagnostics = &collector;
+      const auto ast = sled::lang::Parse(sources, *file, parse_options);
+      if (options.dump_ast) std::cout << sled::lang::ast::Dump(ast);
+      sled::compiler::CheckOptions check_options;
+      check_options.diagnostics = &collector;
+      check_options.stdlib_root = options.stdlib;
+      check_options.overrides = options.overrides;
+      check_options.lints = options.lints;
+      const auto scenario = sled::compiler::Check(sources, ast, check_options);
+      if (options.dump_checked && !collector.has_errors()) {
+        std::cout << sled::compiler::Dump(scenario);
+      }
+    }
+    PrintDiagnostics(sources, collector, options.compact);
+    errors |= collector.has_errors();
+  }
+  return errors ? kExitInputErrors : kExitOk;
+}
+
+int RunFormat(const Options& options) {
+  if (options.files.empty()) return UsageError("`fmt` needs at least one file");
+  bool changed_or_failed = false;
+  for (const std::string& path : options.files) {
+    SourceManager sources;
+    DiagnosticCollector collector;
+    auto file = LoadFile(sources, path, collector);
+    if (!file) {
+      PrintDiagnostics(sources, collector, options.compact);
+      changed_or_failed = true;
+      continue;
+    }
+    sled::lang::ParseOptions parse_options;
+    parse_options.diagnostics = &collector;
+    const auto ast = sled::lang::Parse(sources, *file, parse_options);
+    if (collector.has_errors()) {
+      // Statements the parser skipped are not in the tree: formatting would lose them.
+      PrintDiagnostics(sources, collector, options.compact);
+      std::cerr << fmt::format("sled: `{}` has syntax errors and was left unchanged\n", path);
+      changed_or_failed = true;
+      continue;
+    }
+    const std::string formatted = sled::lang::Format(ast);
+    const bool differs = formatted != sources.buffer(*file).text();
+    if (options.check_only) {
+      if (differs) {
+        std::cout << fmt::format("{}: would be reformatted\n", path);
+        changed_or_failed = true;
+      }
+      continue;
+    }
+    if (differs) {
+      std::ofstream out(path, std::ios::binary | std::ios::trunc);
+      out << formatted;
+      if (!out) {
+        std::cerr << fmt::format("sled: cannot write `{}`\n", path);
+        changed_or_failed = true;
+      }
+    }
+  }
+  return changed_or_failed ? kExitInputErrors : kExitOk;
+}
+
+int RunExplain(const Options& options) {
+  if (options.files.size() != 1) return UsageError("`explain` takes one diagnostic code");
+  std::string code = options.files[0];
+  for (char& c : code) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  if (auto page = sled::driver::ExplainPage(code)) {
+    std::cout << *page;
+    return kExitOk;
+  }
+  std::vector<std::string> codes;
+  for (const auto& info : sled::lang::AllDiagnostics()) codes.emplace_back(info.code);
+  const std::string hint = sled::lang::DidYouMean(code, codes);
+  std::cerr << fmt::format("sled: no diagnostic `{}`{}\n", code, hint.empty() ? "" : "; " + hint);
+  return kExitUsage;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) return UsageError("no command given");
+  if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::cout << kUsage;
+    return kExitOk;
+  }
+  options.command = args[0];
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg == "--diagnostics=compact") {
+      options.compact = true;
+    } else if (arg == "--diagnostics=rich") {
+      options.compact = false;
+    } else if (arg == "--check") {
+      options.check_only = true;
+    } else if (arg == "--dump-ast") {
+      options.dump_ast = true;
+    } else if (arg == "--dump-checked") {
+      options.dump_checked = true;
+    } else if (arg == "--no-lints") {
+      options.lints = false;
+    } else if (arg == "--stdlib" || arg == "--set") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
+      const std::string& value = args[++i];
+      if (arg == "--stdlib") {
+        options.stdlib = value;
+      } else {
+        const auto equals = value.find('=');
+        if (equals == std::string::npos || equals == 0) {
+          return UsageError(fmt::format("`--set {}`: write NAME=VALUE", value));
+        }
+        options.overrides.emplace_back(value.substr(0, equals), value.substr(equals + 1));
+      }
+    } else if (arg.size() > 1 && arg[0] == '-' && arg != "-") {
+      return UsageError(fmt::format("unknown option `{}`", arg));
+    } else {
+      options.files.push_back(arg);
+    }
+  }
+  try {
+    if (options.command == "check") return RunCheck(options);
+    if (options.command == "fmt") return RunFormat(options);
+    if (options.command == "explain") return RunExplain(options);
+  } catch (const std::exception& error) {
+    // A programming error, never a user's: say so plainly rather than crash.
+    std::cerr << fmt::format("sled: internal error: {}\n", error.what());
+    return 70;
+  }
+  return UsageError(fmt::format("unknown command `{}`", options.command));
+}
