@@ -81,6 +81,7 @@ struct Expr {
 struct Comment {
   std::string text;
   SourceRange range;
+  bool blank_line_before = false;  // an empty line separates it from what precedes it
 };
 
 // A clause of a statement header: `on sled`, `with seat_pan`, `at (0, 0, 0) mm`, `as occupant`,
@@ -110,7 +111,7 @@ struct Statement {
   // Trivia for the formatter.
   std::vector<Comment> leading_comments;
   std::optional<Comment> trailing_comment;
-  bool blank_line_before = false;
+  bool blank_line_before = false;  // an empty line right before the statement (after comments)
 
   Statement() = default;
   Statement(Statement&&) noexcept = default;

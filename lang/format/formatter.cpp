@@ -227,17 +227,24 @@ class Printer {
   std::string Take() { return std::move(out_); }
 
   void PrintBlockBody(const ast::Block& block, std::size_t depth) {
+    // One blank line is kept where the source had one or more; none opens a block or the file.
     bool first = true;
-    for (const ast::Statement& statement : block.statements) {
-      // No blank line opens a block or the file.
-      if (!first && statement.blank_line_before) out_ += '\n';
+    auto blank_line = [&](bool wanted) {
+      if (!first && wanted) out_ += '\n';
       first = false;
+    };
+    for (const ast::Statement& statement : block.statements) {
       for (const ast::Comment& comment : statement.leading_comments) {
+        blank_line(comment.blank_line_before);
         PrintComment(comment, depth);
       }
+      blank_line(statement.blank_line_before);
       PrintStatement(statement, depth);
     }
-    for (const ast::Comment& comment : block.closing_comments) PrintComment(comment, depth);
+    for (const ast::Comment& comment : block.closing_comments) {
+      blank_line(comment.blank_line_before);
+      PrintComment(comment, depth);
+    }
   }
 
  private:

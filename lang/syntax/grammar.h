@@ -18,7 +18,9 @@
 //   product    = unary {("*" | "/") unary}
 //   unary      = "-" unary | power
 //   power      = primary ["^" unary]
-//   primary    = number [unit] | vector [unit] | paren | call | path | string | bool
+//   primary    = number [unit] | tuple | call | path | string | bool
+//   tuple      = "(" value {"," value} [","] ")" [unit]   (one value, no comma, no unit: a
+//                parenthesised value; otherwise a vector)
 //   unit       = factor {("*" | "/") factor}            (written without spaces: N*m/deg)
 //   factor     = name ["^" ["-"] digits]
 //
@@ -104,12 +106,14 @@ struct argument : sor< named_argument, positional_argument > {};
 struct argument_list : opt< argument, star< ws, comma, ws, argument >, opt< ws, comma > > {};
 struct call : seq< path, open_paren, ws, argument_list, ws, close_paren > {};
 
-struct vector : seq< open_paren, ws, value, plus< ws, comma, ws, value >, opt< ws, comma >, ws,
-                     close_paren, unit_suffix > {};
-struct paren : seq< open_paren, ws, value, ws, close_paren > {};
+// `(a)` is a parenthesised value and `(a, b, c) unit` a vector. One rule reads both, so nested
+// parentheses are parsed once rather than once per alternative (which would be exponential).
+struct tuple_comma : seq< ws, comma > {};
+struct tuple : seq< open_paren, ws, value, star< ws, comma, ws, value >, opt< tuple_comma >, ws,
+                    close_paren, unit_suffix > {};
 struct quantity : seq< number, unit_suffix > {};
 struct value_start : not_at< sor< string< '-', '>' >, one< '}', ')', ',' >, eolf > > {};
-struct primary : seq< value_start, sor< quantity, vector, paren, call, boolean, path,
+struct primary : seq< value_start, sor< quantity, tuple, call, boolean, path,
                                         string_literal > > {};
 
 struct op_power : one< '^' > {};

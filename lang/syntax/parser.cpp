@@ -47,8 +47,8 @@ template <> inline constexpr NodeType kNodeOf<g::unit> = NodeType::kUnit;
 template <> inline constexpr NodeType kNodeOf<g::unit_symbol> = NodeType::kUnitSymbol;
 template <> inline constexpr NodeType kNodeOf<g::unit_power> = NodeType::kUnitPower;
 template <> inline constexpr NodeType kNodeOf<g::unit_div> = NodeType::kUnitDivide;
-template <> inline constexpr NodeType kNodeOf<g::vector> = NodeType::kVector;
-template <> inline constexpr NodeType kNodeOf<g::paren> = NodeType::kParen;
+template <> inline constexpr NodeType kNodeOf<g::tuple> = NodeType::kVector;
+template <> inline constexpr NodeType kNodeOf<g::tuple_comma> = NodeType::kTupleComma;
 template <> inline constexpr NodeType kNodeOf<g::call> = NodeType::kCall;
 template <> inline constexpr NodeType kNodeOf<g::named_argument> = NodeType::kNamedArgument;
 template <> inline constexpr NodeType kNodeOf<g::argument_name> = NodeType::kArgumentName;
@@ -434,20 +434,21 @@ class Converter {
         expr.range = Range(node);
         if (node.children.size() > 1) expr.unit = ConvertUnit(*node.children[1]);
         return expr;
-      case NodeType::kVector:
-        expr.kind = ast::ExprKind::kVector;
+      case NodeType::kVector: {
+        bool trailing_comma = false;
         for (const auto& child : node.children) {
           if (child->type == NodeType::kUnit) {
             expr.unit = ConvertUnit(*child);
+          } else if (child->type == NodeType::kTupleComma) {
+            trailing_comma = true;
           } else {
             expr.operands.push_back(ConvertExpr(*child));
           }
         }
+        const bool parenthesised = expr.operands.size() == 1 && !trailing_comma && !expr.unit;
+        expr.kind = parenthesised ? ast::ExprKind::kParen : ast::ExprKind::kVector;
         return expr;
-      case NodeType::kParen:
-        expr.kind = ast::ExprKind::kParen;
-        expr.operands.push_back(ConvertExpr(*node.children.at(0)));
-        return expr;
+      }
       case NodeType::kCall:
         expr.kind = ast::ExprKind::kCall;
         for (const auto& child : node.children) {
@@ -592,12 +593,14 @@ class TriviaAssigner {
   void AssignBlock(ast::Block& block, std::uint32_t content_begin, std::uint32_t end) {
     std::uint32_t previous_end = content_begin;
     for (ast::Statement& statement : block.statements) {
-      std::uint32_t first = statement.range.begin;
       while (next_ < comments_.size() && comments_[next_].begin < statement.range.begin) {
-        if (statement.leading_comments.empty()) first = comments_[next_].begin;
-        statement.leading_comments.push_back(MakeComment(comments_[next_++]));
+        ast::Comment comment = MakeComment(comments_[next_++]);
+        comment.blank_line_before = CountNewlines(previous_end, comment.range.begin) >= 2;
+        // A comment inside the previous statement's value ends before that statement does.
+        previous_end = std::max(previous_end, comment.range.end);
+        statement.leading_comments.push_back(std::move(comment));
       }
-      statement.blank_line_before = CountNewlines(previous_end, first) >= 2;
+      statement.blank_line_before = CountNewlines(previous_end, statement.range.begin) >= 2;
       if (statement.block) {
         AssignBlock(*statement.block, statement.block->range.begin + 1, statement.block->range.end);
       }
@@ -610,7 +613,10 @@ class TriviaAssigner {
       }
     }
     while (next_ < comments_.size() && comments_[next_].begin < end) {
-      block.closing_comments.push_back(MakeComment(comments_[next_++]));
+      ast::Comment comment = MakeComment(comments_[next_++]);
+      comment.blank_line_before = CountNewlines(previous_end, comment.range.begin) >= 2;
+      previous_end = std::max(previous_end, comment.range.end);
+      block.closing_comments.push_back(std::move(comment));
     }
   }
 
@@ -701,15 +707,22 @@ ast::File Parse(const SourceManager& sources, FileId file, const ParseOptions& o
   result.file = file;
   result.body.range = {file, 0, static_cast<std::uint32_t>(buffer.text().size())};
 
+  // The grammar and the conversion find problems in different passes; report them in source
+  // order.
+  DiagnosticCollector found;
   ParseState state;
-  auto root = RunGrammar<g::file>(buffer, file, options.max_depth, state, *options.diagnostics);
-  Report(state, *options.diagnostics);
+  auto root = RunGrammar<g::file>(buffer, file, options.max_depth, state, found);
+  Report(state, found);
+  if (root) {
+    Converter converter(buffer.text(), file, found);
+    converter.ConvertBlockItems(*root, result.body);
+  }
+  found.SortByPosition();
+  for (const Diagnostic& diagnostic : found.diagnostics()) options.diagnostics->Consume(diagnostic);
   if (!root) {
     result.body.had_syntax_errors = true;
     return result;
   }
-  Converter converter(buffer.text(), file, *options.diagnostics);
-  converter.ConvertBlockItems(*root, result.body);
   MarkRecoveredBlocks(result.body, state.problems);
   TriviaAssigner trivia(buffer.text(), std::move(state.comments));
   trivia.AssignBlock(result.body, 0, result.body.range.end + 1);

@@ -31,8 +31,8 @@ enum class NodeType : std::uint8_t {
   kUnitSymbol,
   kUnitPower,
   kUnitDivide,
-  kVector,
-  kParen,
+  kVector,  // also a parenthesised value: one element, no trailing comma, no unit
+  kTupleComma,
   kCall,
   kNamedArgument,
   kArgumentName,
