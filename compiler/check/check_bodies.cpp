@@ -346,14 +346,20 @@ void Checker::CheckTopology(Body& body, int body_index) {
     }
     root[a] = b;
   }
-  // Roots: segments with no parent joint, plus children of null joints.
+  // Roots: segments with no parent joint; children of null joints start further bodies.
   std::vector<int> roots;
+  std::vector<int> null_children;
+  bool unresolved_joint = false;
+  for (int joint_index : body.joints) {
+    const Joint& joint = scenario_.joints[static_cast<std::size_t>(joint_index)];
+    unresolved_joint |= joint.parent < 0 || joint.child < 0;
+  }
   for (int segment : body.segments) {
     auto it = parent_joint.find(segment);
     if (it == parent_joint.end()) {
       roots.push_back(segment);
     } else if (scenario_.joints[static_cast<std::size_t>(it->second)].type == JointType::kNull) {
-      body.reference_segments.push_back(segment);
+      null_children.push_back(segment);
     }
   }
   int reference = body.reference_segments.empty() ? -1 : body.reference_segments.front();
@@ -370,6 +376,11 @@ void Checker::CheckTopology(Body& body, int body_index) {
     reference = roots.front();
     body.reference_segments.insert(body.reference_segments.begin(), reference);
   }
+  body.reference_segments.insert(body.reference_segments.end(), null_children.begin(),
+                                 null_children.end());
+  // A joint whose segments could not be resolved was reported already; what it would have
+  // reached is unknown, so "not reached" would only repeat that error.
+  if (unresolved_joint) return;
   for (int segment : roots) {
     if (segment == reference) continue;
     const Segment& s = scenario_.segments[static_cast<std::size_t>(segment)];

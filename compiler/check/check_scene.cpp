@@ -66,7 +66,7 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
                      std::vector<Pending>& pending) {
     const std::string name = NameOf(*this, statement);
     if (name.empty()) return false;
-    Declare(scope, name, Entity{entity_kind, index, statement.target->range});
+    if (!Declare(scope, name, Entity{entity_kind, index, statement.target->range})) return false;
     pending.push_back({&statement, &scope, index});
     return true;
   };

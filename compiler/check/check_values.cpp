@@ -23,6 +23,7 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
                                   SourceRange owner_range) {
   BoundBlock bound;
   const std::string block_name(BlockName(kind));
+  std::vector<std::string> misspellings;  // attributes the unknown keywords were probably meant as
   if (block) {
     for (const ast::Statement& statement : block->statements) {
       if (statement.kind == ast::StatementKind::kRow) {
@@ -57,6 +58,8 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
                  fmt::format("`{}` is not allowed in {} block", keyword, Article(block_name)),
                  "not allowed here", fmt::format("`{}` belongs in {} blocks", keyword, places));
         } else {
+          const auto closest = lang::ClosestMatch(keyword, KeywordsOf(kind));
+          if (closest) misspellings.push_back(*closest);
           Report(DiagnosticKind::kUnknownStatement, statement.keyword_range,
                  fmt::format("unknown attribute `{}` in {} block", keyword, Article(block_name)),
                  "unknown here", lang::DidYouMean(keyword, KeywordsOf(kind)));
@@ -90,10 +93,13 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
       list.push_back(&statement);
     }
   }
-  // Missing required attributes; not reported when a syntax error may have eaten them.
+  // Missing required attributes; not reported when a syntax error may have eaten them, nor when
+  // a misspelt attribute already stands for it (`mas = 1 kg`).
   if (!block || !block->had_syntax_errors) {
     for (const AttributeSpec& spec : SpecOf(kind).attributes) {
-      if (spec.required && !bound.attributes.count(std::string(spec.name))) {
+      const bool misspelt =
+          std::find(misspellings.begin(), misspellings.end(), spec.name) != misspellings.end();
+      if (spec.required && !misspelt && !bound.attributes.count(std::string(spec.name))) {
         Report(DiagnosticKind::kMissingAttribute, owner_range,
                fmt::format("{} block needs `{}`", Article(block_name), spec.name),
                fmt::format("no `{}` given", spec.name),
