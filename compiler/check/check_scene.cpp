@@ -70,6 +70,17 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
     pending.push_back({&statement, &scope, index});
     return true;
   };
+  // Reserves the next element of a scenario list for a named declaration, with its qualified
+  // name and range, and queues it for checking once every name is known.
+  auto declare_named = [&](auto& list, const ast::Statement& statement, EntityKind entity_kind,
+                           std::vector<Pending>& pending) {
+    const int index = static_cast<int>(list.size());
+    list.emplace_back();
+    if (!declare(statement, entity_kind, index, pending)) return false;
+    list.back().name = scope.prefix + statement.target->path[0];
+    list.back().range = statement.target->range;
+    return true;
+  };
   for (const ast::Statement* statement : bound.declarations) {
     const std::string& keyword = statement->keyword;
     if (keyword == "scenario") {
@@ -133,79 +144,32 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       function_valid_.push_back(false);
       declare(*statement, EntityKind::kFunction, index, functions_);
     } else if (keyword == "vehicle") {
-      const int index = static_cast<int>(scenario_.vehicles.size());
-      scenario_.vehicles.emplace_back();
-      if (declare(*statement, EntityKind::kVehicle, index, vehicles_)) {
-        scenario_.vehicles.back().name = scope.prefix + statement->target->path[0];
-        scenario_.vehicles.back().range = statement->target->range;
-      }
+      declare_named(scenario_.vehicles, *statement, EntityKind::kVehicle, vehicles_);
     } else if (keyword == "plane") {
-      const int index = static_cast<int>(scenario_.planes.size());
-      scenario_.planes.emplace_back();
-      if (declare(*statement, EntityKind::kPlane, index, planes_)) {
-        scenario_.planes.back().name = scope.prefix + statement->target->path[0];
-        scenario_.planes.back().range = statement->target->range;
-      }
+      declare_named(scenario_.planes, *statement, EntityKind::kPlane, planes_);
     } else if (keyword == "ellipsoid") {
-      const int index = static_cast<int>(scenario_.ellipsoids.size());
-      scenario_.ellipsoids.emplace_back();
-      if (declare(*statement, EntityKind::kEllipsoid, index, ellipsoids_)) {
-        scenario_.ellipsoids.back().name = scope.prefix + statement->target->path[0];
-        scenario_.ellipsoids.back().range = statement->target->range;
-      }
+      declare_named(scenario_.ellipsoids, *statement, EntityKind::kEllipsoid, ellipsoids_);
     } else if (keyword == "belt") {
-      const int index = static_cast<int>(scenario_.belts.size());
-      scenario_.belts.emplace_back();
-      if (declare(*statement, EntityKind::kBelt, index, belts_)) {
-        scenario_.belts.back().name = scope.prefix + statement->target->path[0];
-        scenario_.belts.back().range = statement->target->range;
-      }
+      declare_named(scenario_.belts, *statement, EntityKind::kBelt, belts_);
     } else if (keyword == "harness") {
-      const int index = static_cast<int>(scenario_.harnesses.size());
-      scenario_.harnesses.emplace_back();
-      if (declare(*statement, EntityKind::kHarness, index, harnesses_)) {
-        scenario_.harnesses.back().name = scope.prefix + statement->target->path[0];
-        scenario_.harnesses.back().range = statement->target->range;
-      }
+      declare_named(scenario_.harnesses, *statement, EntityKind::kHarness, harnesses_);
     } else if (keyword == "airbag") {
-      const int index = static_cast<int>(scenario_.airbags.size());
-      scenario_.airbags.emplace_back();
-      if (declare(*statement, EntityKind::kAirbag, index, airbags_)) {
-        scenario_.airbags.back().name = scope.prefix + statement->target->path[0];
-        scenario_.airbags.back().range = statement->target->range;
-      }
+      declare_named(scenario_.airbags, *statement, EntityKind::kAirbag, airbags_);
     } else if (keyword == "spring" || keyword == "tension") {
-      const int index = static_cast<int>(scenario_.springs.size());
-      scenario_.springs.emplace_back();
-      if (declare(*statement, EntityKind::kSpring, index, springs_)) {
-        scenario_.springs.back().name = scope.prefix + statement->target->path[0];
+      if (declare_named(scenario_.springs, *statement, EntityKind::kSpring, springs_)) {
         scenario_.springs.back().tension_only = keyword == "tension";
-        scenario_.springs.back().range = statement->target->range;
       }
     } else if (keyword == "constraint") {
-      const int index = static_cast<int>(scenario_.constraints.size());
-      scenario_.constraints.emplace_back();
-      if (declare(*statement, EntityKind::kConstraint, index, constraints_)) {
-        scenario_.constraints.back().name = scope.prefix + statement->target->path[0];
-        scenario_.constraints.back().range = statement->target->range;
-      }
+      declare_named(scenario_.constraints, *statement, EntityKind::kConstraint, constraints_);
     } else if (keyword == "segment") {
-      const int index = static_cast<int>(scenario_.segments.size());
-      scenario_.segments.emplace_back();
-      if (declare(*statement, EntityKind::kSegment, index, segments_)) {
-        Segment& segment = scenario_.segments.back();
-        segment.name = scope.prefix + statement->target->path[0];
-        segment.body = current_body_;
-        segment.range = statement->target->range;
+      if (declare_named(scenario_.segments, *statement, EntityKind::kSegment, segments_)) {
+        const int index = static_cast<int>(scenario_.segments.size()) - 1;
+        scenario_.segments.back().body = current_body_;
         scenario_.bodies[static_cast<std::size_t>(current_body_)].segments.push_back(index);
       }
     } else if (keyword == "joint") {
-      const int index = static_cast<int>(scenario_.joints.size());
-      scenario_.joints.emplace_back();
-      if (declare(*statement, EntityKind::kJoint, index, joints_)) {
-        Joint& joint = scenario_.joints.back();
-        joint.name = scope.prefix + statement->target->path[0];
-        joint.range = statement->target->range;
+      if (declare_named(scenario_.joints, *statement, EntityKind::kJoint, joints_)) {
+        const int index = static_cast<int>(scenario_.joints.size()) - 1;
         scenario_.bodies[static_cast<std::size_t>(current_body_)].joints.push_back(index);
       }
     } else if (keyword == "contact") {
