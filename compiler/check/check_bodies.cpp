@@ -108,13 +108,22 @@ void Checker::CheckBodyDetails() {
     }
     segment.principal_axes =
         ReadVector(scope, bound, BlockKind::kSegment, "principal_axes").value_or(Vec3{});
-    // The segment's own contact ellipsoids.
+    // The segment's own contact ellipsoids; named ones are `segment.name`.
+    Scope* ellipsoid_scope = nullptr;
     for (const ast::Statement* child : bound.declarations) {
       Ellipsoid ellipsoid;
       ellipsoid.name = segment.name;
       if (child->target) {
         if (child->target->kind == ast::ExprKind::kPath && child->target->path.size() == 1) {
           ellipsoid.name += "." + child->target->path[0];
+          if (!ellipsoid_scope) {
+            ellipsoid_scope = NewScope(nullptr, segment.name + ".", scope.directory);
+            auto entity = scope.names.find(pending.statement->target->path[0]);
+            if (entity != scope.names.end()) entity->second.inner = ellipsoid_scope;
+          }
+          Declare(*ellipsoid_scope, child->target->path[0],
+                  Entity{EntityKind::kEllipsoid, static_cast<int>(scenario_.ellipsoids.size()),
+                         child->target->range});
         } else {
           Report(DiagnosticKind::kMalformedStatement, child->target->range,
                  "an ellipsoid's name is a plain name", "not a plain name");
@@ -148,7 +157,7 @@ void Checker::CheckBodyDetails() {
     const std::string type = call->PathText();
     const auto found = std::find(kJointTypes.begin(), kJointTypes.end(), type);
     if (found == kJointTypes.end()) {
-      Report(DiagnosticKind::kUnknownName, call->range,
+      Report(DiagnosticKind::kInvalidEnumValue, call->range,
              fmt::format("unknown joint type `{}`", type), "not a joint type",
              lang::DidYouMean(type, kJointTypes));
       joint.parent = joint.child = -1;
@@ -196,10 +205,10 @@ void Checker::CheckBodyDetails() {
     const std::array<FrameRef, 2> frames = {FrameRef{FrameRef::Kind::kSegment, joint.parent},
                                             FrameRef{FrameRef::Kind::kSegment, joint.child}};
     const bool is_null = joint.type == JointType::kNull;
-    auto locations = ReadAtPoints(scope, bound, "at", frames, statement.range, !is_null);
+    auto locations = ReadAtPoints(scope, bound, "at", frames, statement.range, !is_null, true);
     joint.location_in_parent = locations[0].value_or(Vec3{});
     joint.location_in_child = locations[1].value_or(Vec3{});
-    auto axes = ReadAtPoints(scope, bound, "axes", frames, statement.range, false);
+    auto axes = ReadAtPoints(scope, bound, "axes", frames, statement.range, false, true);
     joint.axes_in_parent = axes[0].value_or(Vec3{});
     joint.axes_in_child = axes[1].value_or(Vec3{});
 
@@ -208,7 +217,7 @@ void Checker::CheckBodyDetails() {
     auto only_for = [&](std::string_view name, bool allowed, std::string_view types) {
       const ast::Statement* attribute = One(bound, name);
       if (attribute && !allowed) {
-        Report(DiagnosticKind::kInvalidLockAxes, attribute->keyword_range,
+        Report(DiagnosticKind::kMisplacedStatement, attribute->keyword_range,
                fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name, types, joint.name,
                            JointTypeName(joint.type)),
                "not for this joint type");
@@ -240,7 +249,7 @@ void Checker::CheckBodyDetails() {
     if (is_null) {
       for (const auto& [name, statements] : bound.attributes) {
         if (name != "at" && name != "axes") {
-          Report(DiagnosticKind::kInvalidLockAxes, statements[0]->keyword_range,
+          Report(DiagnosticKind::kMisplacedStatement, statements[0]->keyword_range,
                  fmt::format("`{}` has no meaning for a null joint", name),
                  "a null joint starts a new body and carries no torque");
         }

@@ -123,10 +123,14 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
     function.kind = Function::Kind::kPolynomial;
     function.coefficients = {0.0, value->components[0]};
   } else {
+    const std::string slope =
+        argument.IsDimensionless()
+            ? std::string()
+            : fmt::format(" or a slope {}", DescribeDimension(result / argument));
     Report(DiagnosticKind::kDimensionMismatch, expr.range,
-           fmt::format("`{}` expects a function {}, a constant {} or a slope {}, found {}", what,
-                       Signature(argument, result), DescribeDimension(result),
-                       DescribeDimension(result / argument), DescribeDimension(value->dimension)),
+           fmt::format("`{}` expects a function {}, a constant {}{}, found {}", what,
+                       Signature(argument, result), DescribeDimension(result), slope,
+                       DescribeDimension(value->dimension)),
            "wrong dimension", MismatchHelp(result / argument, value->dimension));
     return std::nullopt;
   }
@@ -339,8 +343,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     return true;
   }
 
-  Report(DiagnosticKind::kUnknownName, call.range, fmt::format("unknown function form `{}`", form),
-         "not a function form",
+  Report(DiagnosticKind::kInvalidEnumValue, call.range,
+         fmt::format("unknown function form `{}`", form), "not a function form",
          lang::DidYouMean(form, {"constant", "table", "polynomial"}).empty()
              ? "functions are `constant(...)`, `table(x -> y) { rows }` or `polynomial(...)`"
              : lang::DidYouMean(form, {"constant", "table", "polynomial"}));
@@ -356,6 +360,7 @@ void Checker::DefineFunction(Scope& scope, const ast::Statement& statement, int 
     Report(DiagnosticKind::kMalformedStatement, statement.range,
            "a function is declared as `function NAME = table(x -> y) { rows }`", "no single value");
   } else if (value->kind == ast::ExprKind::kCall) {
+    function_valid_[static_cast<std::size_t>(index)] = true;  // MatchSignature may need it
     ok = BuildFunction(scope, statement, *value, std::nullopt, function, index);
   } else {
     auto quantity = Evaluate(scope, *value);

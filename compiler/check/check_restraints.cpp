@@ -62,7 +62,15 @@ std::optional<std::array<FrameRef, 2>> Checker::ReadConnection(Scope& scope,
 std::array<std::optional<Vec3>, 2> Checker::ReadAtPoints(Scope& scope, const BoundBlock& bound,
                                                          std::string_view keyword,
                                                          const std::array<FrameRef, 2>& frames,
-                                                         SourceRange owner, bool required) {
+                                                         SourceRange owner, bool required,
+                                                         bool local_names) {
+  // Inside a body, segments are written by their own name: `at pelvis`, not `at occupant.pelvis`.
+  auto written = [&](const FrameRef& frame) {
+    std::string name = FrameName(frame);
+    if (local_names && name.rfind('.') != std::string::npos)
+      name = name.substr(name.rfind('.') + 1);
+    return name;
+  };
   std::array<std::optional<Vec3>, 2> points;
   auto it = bound.attributes.find(std::string(keyword));
   if (it != bound.attributes.end()) {
@@ -96,8 +104,8 @@ std::array<std::optional<Vec3>, 2> Checker::ReadAtPoints(Scope& scope, const Bou
       if (!points[side]) {
         Report(DiagnosticKind::kMissingAttribute, owner,
                fmt::format("the location in `{}` is missing", FrameName(frames[side])),
-               fmt::format("no `{} {}`", keyword, FrameName(frames[side])),
-               fmt::format("add `{} {} = (x, y, z) mm`", keyword, FrameName(frames[side])));
+               fmt::format("no `{} {}`", keyword, written(frames[side])),
+               fmt::format("add `{} {} = (x, y, z) mm`", keyword, written(frames[side])));
       }
     }
   }
@@ -151,6 +159,12 @@ void Checker::CheckContacts() {
         ReadQuantity(scope, bound, BlockKind::kContact, "restitution").value_or(0.0);
     if (!force) continue;
     contact.force = *force;
+    if (!firsts.empty() && firsts == seconds) {
+      Report(DiagnosticKind::kJointToItself, statement.range,
+             fmt::format("`{}` is in contact with itself", statement.target->PathText()),
+             "the same surface twice", "a contact acts between two different surfaces");
+      continue;
+    }
     for (const SurfaceRef& first : firsts) {
       for (const SurfaceRef& second : seconds) {
         if (first == second) continue;
@@ -225,8 +239,25 @@ void Checker::CheckRestraints() {
     harness.frame = read_frame(pending);
     harness.friction =
         ReadQuantity(*pending.scope, bound, BlockKind::kHarness, "friction").value_or(0.0);
+    // The harness's belts are named `harness.belt`.
+    Scope* belts_scope = NewScope(nullptr, harness.name + ".", pending.scope->directory);
+    auto harness_entity = pending.scope->names.find(pending.statement->target->path[0]);
+    if (harness_entity != pending.scope->names.end()) harness_entity->second.inner = belts_scope;
     for (const ast::Statement* child : bound.declarations) {
-      if (!child->target || child->target->kind != ast::ExprKind::kPath) continue;
+      if (!child->target || child->target->kind != ast::ExprKind::kPath ||
+          child->target->path.size() != 1) {
+        Report(DiagnosticKind::kMalformedStatement, child->range,
+               "a harness belt needs a plain name: `belt NAME { ... }`", "no plain name");
+        continue;
+      }
+      if (const ast::Clause* on = child->FindClause("on")) {
+        Report(DiagnosticKind::kMalformedStatement, on->word_range,
+               "the belts of a harness are anchored in the harness's frame", "`on` not allowed",
+               "move `on` to the harness: `harness NAME on FRAME { belt ... }`");
+      }
+      Declare(*belts_scope, child->target->path[0],
+              Entity{EntityKind::kBelt, static_cast<int>(scenario_.belts.size()),
+                     child->target->range});
       Belt belt;
       belt.name = harness.name + "." + child->target->PathText();
       belt.harness = pending.index;
@@ -318,7 +349,7 @@ void Checker::CheckRestraints() {
     const std::string kind = call->PathText();
     const auto found = std::find(kKinds.begin(), kKinds.end(), kind);
     if (found == kKinds.end()) {
-      Report(DiagnosticKind::kUnknownName, call->range,
+      Report(DiagnosticKind::kInvalidEnumValue, call->range,
              fmt::format("unknown constraint kind `{}`", kind), "not a constraint kind",
              lang::DidYouMean(kind, kKinds));
       continue;

@@ -367,8 +367,9 @@ void Checker::CheckSceneElements() {
                "a motion table needs rows: `{ 0 ms -> 0 g  10 ms -> 20 g }`", "no rows");
       }
     } else {
-      Report(DiagnosticKind::kUnknownName, call->range, fmt::format("unknown motion `{}`", form),
-             "not a motion", lang::DidYouMean(form, {"half_sine", "trapezoid", "table"}));
+      Report(DiagnosticKind::kInvalidEnumValue, call->range,
+             fmt::format("unknown motion `{}`", form), "not a motion",
+             lang::DidYouMean(form, {"half_sine", "trapezoid", "table"}));
     }
   }
 

@@ -104,7 +104,13 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
           }
           Entity* left = Resolve(scope, pair->values[0], {EntityKind::kSegment});
           Entity* right = Resolve(scope, pair->values[1], {EntityKind::kSegment});
-          if (left && right) run.mirror_pairs.push_back({left->index, right->index});
+          if (left && right && left->index == right->index) {
+            Report(DiagnosticKind::kJointToItself, pair->range,
+                   fmt::format("`{}` is paired with itself", pair->values[0].PathText()),
+                   "the same segment twice", "a mirror pair names a left and a right segment");
+          } else if (left && right) {
+            run.mirror_pairs.push_back({left->index, right->index});
+          }
         }
       }
       if (run.symmetry == Symmetry::kPlanar && !run.mirror_pairs.empty()) {
@@ -239,8 +245,9 @@ void Checker::CheckOutputs() {
                              request->target->PathText(), with->value.PathText()));
           continue;
         }
-        // fmt rather than operator+: GCC 12 reports a false -Wrestrict on string concatenation.
-        output.label = fmt::format("{}.{}", output.label, with->value.PathText());
+        if (!request->FindClause("as")) {
+          output.label = fmt::format("{}.{}", output.label, with->value.PathText());
+        }
         scenario_.outputs.push_back(std::move(output));
         continue;
       }
@@ -274,7 +281,7 @@ void Checker::CheckOutputs() {
         if (!spec) {
           std::vector<std::string> names;
           for (const CriterionSpec& c : AllCriterionSpecs()) names.emplace_back(c.name);
-          Report(DiagnosticKind::kUnknownName, value.range,
+          Report(DiagnosticKind::kInvalidEnumValue, value.range,
                  fmt::format("unknown injury criterion `{}`", value.PathText()), "not a criterion",
                  lang::DidYouMean(value.PathText(), names));
           continue;

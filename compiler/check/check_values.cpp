@@ -45,6 +45,12 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
         continue;
       }
       const AttributeSpec* spec = FindAttribute(kind, keyword);
+      if (!spec && keyword == "scenario" && kind == BlockKind::kModule) {
+        Report(DiagnosticKind::kMultipleScenarios, statement.keyword_range,
+               "a module cannot hold a scenario", "scenario in a module",
+               "a file with a scenario is a scene; import modules from it, not the other way");
+        continue;
+      }
       if (!spec) {
         const std::vector<BlockKind> elsewhere = BlocksAllowing(keyword);
         if (!elsewhere.empty()) {
@@ -61,7 +67,9 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
           const auto closest = lang::ClosestMatch(keyword, KeywordsOf(kind));
           if (closest) misspellings.push_back(*closest);
           Report(DiagnosticKind::kUnknownStatement, statement.keyword_range,
-                 fmt::format("unknown attribute `{}` in {} block", keyword, Article(block_name)),
+                 fmt::format("unknown {} `{}` in {} block",
+                             kind == BlockKind::kOutput ? "output request" : "attribute", keyword,
+                             Article(block_name)),
                  "unknown here", lang::DidYouMean(keyword, KeywordsOf(kind)));
         }
         continue;
@@ -130,6 +138,8 @@ const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
 std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
   switch (expr.kind) {
     case ast::ExprKind::kNumber: {
+      // The parser marks a number it could not read as NaN, after reporting it.
+      if (std::isnan(expr.number)) return std::nullopt;
       Value value{{expr.number}, dim::kDimensionless, true};
       if (expr.unit) {
         auto unit = ResolveUnit(*expr.unit, diagnostics_);
@@ -141,6 +151,22 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       return value;
     }
     case ast::ExprKind::kVector: {
+      if (expr.operands.size() == 1 && expr.unit) {
+        // `(40 + 2) kg`: a parenthesised number with a unit.
+        auto inner = Evaluate(scope, expr.operands[0]);
+        auto unit = ResolveUnit(*expr.unit, diagnostics_);
+        if (!inner || !unit) return std::nullopt;
+        if (!inner->bare) {
+          Report(DiagnosticKind::kDimensionMismatch, expr.operands[0].range,
+                 "the value in parentheses has its own unit and a unit follows", "unit given twice",
+                 "write the unit once");
+          return std::nullopt;
+        }
+        for (double& component : inner->components) component *= unit->scale_to_si;
+        inner->dimension = unit->dimension;
+        inner->bare = false;
+        return inner;
+      }
       if (expr.operands.size() != 3) {
         Report(DiagnosticKind::kWrongVectorSize, expr.range,
                fmt::format("a vector has three components, found {}", expr.operands.size()),
@@ -200,7 +226,7 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       if (!entity) return std::nullopt;
       Parameter& parameter = *parameters_.at(static_cast<std::size_t>(entity->index));
       if (parameter.state == Parameter::State::kEvaluating) {
-        Report(DiagnosticKind::kUnknownName, expr.range,
+        Report(DiagnosticKind::kCyclicDefinition, expr.range,
                fmt::format("`{}` is defined in terms of itself", parameter.name),
                "used in its own definition", "break the cycle with a literal value");
         parameter.state = Parameter::State::kFailed;

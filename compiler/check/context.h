@@ -162,7 +162,8 @@ class Checker {
   std::array<std::optional<Vec3>, 2> ReadAtPoints(Scope& scope, const BoundBlock& bound,
                                                   std::string_view keyword,
                                                   const std::array<FrameRef, 2>& frames,
-                                                  SourceRange owner, bool required);
+                                                  SourceRange owner, bool required,
+                                                  bool local_names = false);
   // `: kind(A -> B)` or `: A -> B`: the two frames a joint, spring or constraint connects.
   std::optional<std::array<FrameRef, 2>> ReadConnection(Scope& scope,
                                                         const ast::Statement& statement,

@@ -181,7 +181,7 @@ double InitialPenetration(const CheckedScenario& scenario, const InitialPoses& p
       reach += (e.semi_axes[i] * n_local[i]) * (e.semi_axes[i] * n_local[i]);
     reach = std::sqrt(reach);
     const double height = Dot(Sub(e.center, p[0]), n);
-    if (height < 0) return 0.0;  // behind the plane: it cannot be reached from there
+    if (height <= -reach) return 0.0;  // wholly behind the plane: nothing to push against
     // The centre must project inside the parallelogram (with the ellipsoid's reach as margin).
     const Vec3 d = Sub(e.center, p[0]);
     const double uu = Dot(u, u), uv = Dot(u, v), vv = Dot(v, v);

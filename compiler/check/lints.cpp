@@ -45,6 +45,13 @@ double StiffnessOf(const Function& function) {
   return 0.0;
 }
 
+// Two significant digits, rounded towards zero, so a suggested limit is never above the real one.
+std::string RoundDown(double value) {
+  if (!(value > 0)) return "0";
+  const double scale = std::pow(10.0, std::floor(std::log10(value)) - 1);
+  return fmt::format("{:g}", std::floor(value / scale) * scale);
+}
+
 }  // namespace
 
 void Checker::RunLints() {
@@ -126,13 +133,13 @@ void Checker::RunLints() {
     if (!(stiffness > 0) || !(mass > 0) || std::isinf(mass)) return;
     const double period = 2.0 * std::numbers::pi * std::sqrt(mass / stiffness);
     if (max_step > period / 10.0) {
-      Report(
-          DiagnosticKind::kStepTooLarge, range,
-          fmt::format("max_step {:g} ms is too long for {}: its natural period is {:.3g} ms "
-                      "(stiffness {:.3g} N/m against {:.3g} kg)",
-                      max_step * 1e3, what, period * 1e3, stiffness, mass),
-          "too stiff for the step",
-          fmt::format("set `max_step` to {:.2g} ms or less (a tenth of the period)", period * 1e2));
+      Report(DiagnosticKind::kStepTooLarge, range,
+             fmt::format("max_step {:g} ms is too long for {}: its natural period is {:.3g} ms "
+                         "(stiffness {:.3g} N/m against {:.3g} kg)",
+                         max_step * 1e3, what, period * 1e3, stiffness, mass),
+             "too stiff for the step",
+             fmt::format("set `max_step` to {} ms or less (a tenth of the period)",
+                         RoundDown(period * 1e2)));
     }
   };
   for (const Contact& contact : scenario_.contacts) {

@@ -176,9 +176,11 @@ struct skip_statement {
       if (depth == 0 && (c == '\n' || c == ';' || c == '}')) break;
       if (c == '\n' && braces == 0) break;  // an unclosed `(` ends with its line
       if (c == '"') {
-        ++i;
-        while (i < size && p[i] != '"' && p[i] != '\n') i += (p[i] == '\\' && i + 1 < size) ? 2 : 1;
-        if (i < size && p[i] == '"') ++i;
+        // A string is one unit; an unclosed one ends at its opening quote, so that a `}` later on
+        // its line still closes the block.
+        std::size_t j = i + 1;
+        while (j < size && p[j] != '"' && p[j] != '\n') j += (p[j] == '\\' && j + 1 < size) ? 2 : 1;
+        i = (j < size && p[j] == '"') ? j + 1 : i + 1;
         continue;
       }
       if (c == '/' && i + 1 < size && p[i + 1] == '/') {

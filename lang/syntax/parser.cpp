@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include <fmt/format.h>
@@ -209,12 +210,34 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
       code = (code << 6) | (next & 0x3Fu);
     }
     if (length == 1 || i != length) return fmt::format("the byte 0x{:02X}", lead);
-    return fmt::format("`{}` (U+{:04X})", text.substr(at, length), code);
+    return fmt::format("character `{}` (U+{:04X})", text.substr(at, length), code);
   }
   if (static_cast<unsigned char>(c) < 0x20) {
-    return fmt::format("the control character 0x{:02X}", static_cast<unsigned char>(c));
+    return fmt::format("control character 0x{:02X}", static_cast<unsigned char>(c));
   }
   return fmt::format("`{}`", c);
+}
+
+// True when the word starting at `begin` is a complete number: 12, 0.5, 1e-5, 2.5E+3.
+bool IsWholeNumber(std::string_view text, std::size_t begin) {
+  std::size_t i = begin;
+  auto digits = [&] {
+    const std::size_t from = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    return i > from;
+  };
+  if (!digits()) return false;
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    digits();
+  }
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i >= text.size() ||
+         !(std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == '.');
 }
 
 std::string JoinExpected(const std::vector<const char*>& expected) {
@@ -238,7 +261,22 @@ struct Action<g::skip> {
     const bool control = at < text.size() && static_cast<unsigned char>(c) < 0x20 && c != '\n' &&
                          c != '\r' && c != '\t';
     const bool non_ascii = at < text.size() && static_cast<unsigned char>(c) >= 0x80;
-    if (control || non_ascii) {
+    const bool meaningless =
+        at < text.size() && std::string_view("@#$%&|~?!`'[]\\").find(c) != std::string_view::npos;
+    const auto is_word = [](char x) {
+      return std::isalnum(static_cast<unsigned char>(x)) || x == '_' || x == '.';
+    };
+    // A number run into letters or a second decimal point: `12abc`, `1.2.3`.
+    std::uint32_t number_start = at;
+    while (number_start > 0 && is_word(text[number_start - 1])) --number_start;
+    const bool malformed_number = at < text.size() && is_word(text[at]) &&
+                                  std::isdigit(static_cast<unsigned char>(text[number_start])) &&
+                                  !IsWholeNumber(text, number_start);
+    const bool expects_close_paren =
+        std::find(state.expected.begin(), state.expected.end(), kExpectedName<g::close_paren>) !=
+        state.expected.end();
+    const bool at_line_end = at >= text.size() || c == '\n' || c == '\r';
+    if (control || non_ascii || meaningless) {
       problem.kind = DiagnosticKind::kInvalidCharacter;
       std::uint32_t end = at + 1;
       while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u) {
@@ -249,6 +287,28 @@ struct Action<g::skip> {
           fmt::format("unexpected {} outside a string or comment", DescribeFound(text, at));
       problem.label = "not part of the language";
       problem.help = "names, units and keywords use ASCII letters, digits and `_`";
+    } else if (malformed_number) {
+      std::uint32_t end = at;
+      while (end < text.size() && is_word(text[end])) ++end;
+      problem.kind = DiagnosticKind::kInvalidNumber;
+      problem.begin = number_start;
+      problem.end = end;
+      problem.message =
+          fmt::format("malformed number `{}`", text.substr(number_start, end - number_start));
+      problem.label = "not a number";
+      problem.help = "numbers are written like 12, 0.5 or 1e-5, with a space before the unit";
+    } else if (c == ')' && !expects_close_paren) {
+      problem.kind = DiagnosticKind::kUnmatchedClosing;
+      problem.end = at + 1;
+      problem.message = "`)` closes nothing";
+      problem.label = "no `(` is open here";
+      problem.help = "remove it, or check the `(` before it";
+    } else if (expects_close_paren && at_line_end) {
+      problem.kind = DiagnosticKind::kUnclosedDelimiter;
+      problem.end = at;
+      problem.message = "`(` is not closed before the end of the line";
+      problem.label = "expected `)` here";
+      problem.help = "close the parenthesis; a value may continue on the next line only after `,`";
     } else if (std::find(state.expected.begin(), state.expected.end(),
                          kExpectedName<g::close_quote>) != state.expected.end()) {
       problem.kind = DiagnosticKind::kUnclosedDelimiter;
@@ -281,9 +341,6 @@ struct Action<g::skip> {
     // A word or a symbol is underlined whole.
     if (problem.kind == DiagnosticKind::kSyntaxError && at < text.size() && text[at] != '\n') {
       std::uint32_t end = at;
-      auto is_word = [](char x) {
-        return std::isalnum(static_cast<unsigned char>(x)) || x == '_' || x == '.';
-      };
       while (end < text.size() && is_word(text[end])) ++end;
       problem.end = end > at ? end : at + 1;
     }
@@ -520,7 +577,7 @@ class Converter {
         d.help = "numbers must lie within about 1e-308 to 1e308 in magnitude";
         return d;
       }());
-      expr.number = 0.0;
+      expr.number = std::numeric_limits<double>::quiet_NaN();  // the checker skips it
     }
     return expr;
   }
