@@ -45,7 +45,9 @@ bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result
       if (!(coefficient.dimension == wanted) && !IsBareZero(coefficient)) {
         auto diagnostic = lang::MakeDiagnostic(
             DiagnosticKind::kDimensionMismatch, polynomial.ranges[k],
-            fmt::format("coefficient {} of `{}` should be {}, found {}", k, function.name,
+            fmt::format("coefficient {} of {} should be {}, found {}", k,
+                        function.name.empty() ? std::string("the polynomial")
+                                              : fmt::format("`{}`", function.name),
                         DescribeDimension(wanted), DescribeDimension(coefficient.dimension)),
             "wrong dimension for this power");
         diagnostic.labels.push_back({use, "used here as " + Signature(argument, result), false});
@@ -65,6 +67,15 @@ bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result
   const bool argument_ok =
       function.kind == Function::Kind::kConstant || function.argument == argument;
   if (result_ok && argument_ok) return true;
+  // `function k = 80 kN/m` used where deflection -> force is needed: a slope, as it is inline.
+  if (function.kind == Function::Kind::kConstant && !argument.IsDimensionless() &&
+      function.result == result / argument) {
+    function.kind = Function::Kind::kPolynomial;
+    function.coefficients = {0.0, function.constant};
+    function.argument = argument;
+    function.result = result;
+    return true;
+  }
   auto diagnostic = lang::MakeDiagnostic(
       DiagnosticKind::kDimensionMismatch, use,
       fmt::format("function `{}` maps {}, but {} is needed here", function.name,

@@ -66,6 +66,25 @@ double Inside(const WorldEllipsoid& e, const Vec3& point) {
   return 1.0 - sum;
 }
 
+Mat3 RotationAbout(const Vec3& axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
+  const double x = axis[0], y = axis[1], z = axis[2];
+  return {{{t * x * x + c, t * x * y - s * z, t * x * z + s * y},
+           {t * x * y + s * z, t * y * y + c, t * y * z - s * x},
+           {t * x * z - s * y, t * y * z + s * x, t * z * z + c}}};
+}
+
+// The rotation a joint's angles make: about the pin axis for pin and slip joints, and
+// precession about z, nutation about y, spin about z for ball and Euler joints.
+Mat3 JointRotation(const Joint& joint, const Vec3& angles) {
+  if (joint.type == JointType::kPin || joint.type == JointType::kSlip) {
+    return RotationAbout(joint.axis, angles[0]);
+  }
+  const Vec3 z{0, 0, 1};
+  return Multiply(Multiply(RotationAbout(z, angles[0]), RotationAbout({0, 1, 0}, angles[1])),
+                  RotationAbout(z, angles[2]));
+}
+
 }  // namespace
 
 Mat3 RotationFromYawPitchRoll(const Vec3& ypr) {
@@ -126,6 +145,14 @@ InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
       children[static_cast<std::size_t>(joint.parent)].push_back(static_cast<int>(j));
     }
   }
+  // Initial joint angles, where given.
+  std::vector<Vec3> joint_angles(scenario.joints.size(), Vec3{});
+  for (const InitialCondition& initial : scenario.initial_conditions) {
+    if (initial.kind == InitialCondition::Kind::kJoint && initial.joint_angles &&
+        initial.index >= 0) {
+      joint_angles[static_cast<std::size_t>(initial.index)] = *initial.joint_angles;
+    }
+  }
   std::vector<bool> placed(scenario.segments.size(), false);
   std::vector<int> stack;
   for (const Body& body : scenario.bodies) {
@@ -145,7 +172,8 @@ InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
       if (placed[static_cast<std::size_t>(joint.child)]) continue;
       Pose& child = poses.segments[static_cast<std::size_t>(joint.child)];
       const Mat3 joint_frame =
-          Multiply(parent_pose.rotation, RotationFromYawPitchRoll(joint.axes_in_parent));
+          Multiply(Multiply(parent_pose.rotation, RotationFromYawPitchRoll(joint.axes_in_parent)),
+                   JointRotation(joint, joint_angles[static_cast<std::size_t>(joint_index)]));
       child.rotation =
           Multiply(joint_frame, Transpose(RotationFromYawPitchRoll(joint.axes_in_child)));
       child.position =

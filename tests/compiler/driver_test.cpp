@@ -84,8 +84,8 @@ class DriverTest : public ::testing::Test {
  protected:
   void SetUp() override {
     sled_ = SledBinary();
-    ASSERT_TRUE(fs::exists(sled_)) << "no sled binary at " << sled_
-                                   << "; build the `sled` target first";
+    ASSERT_TRUE(fs::exists(sled_))
+        << "no sled binary at " << sled_ << "; build the `sled` target first";
     ASSERT_FALSE(temp_.path().empty()) << "cannot create a temporary folder";
   }
 
@@ -109,8 +109,7 @@ class DriverTest : public ::testing::Test {
 };
 
 TEST_F(DriverTest, CheckOfACleanScenarioExitsZeroAndPrintsNothing) {
-  const Result result =
-      Sled({"check", "tests/golden/ok_belts.sled", "--diagnostics=compact"});
+  const Result result = Sled({"check", "tests/golden/ok_belts.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err, "");
   EXPECT_EQ(result.out, "");
@@ -130,8 +129,7 @@ TEST_F(DriverTest, RichDiagnosticsAreTheDefaultAndEndWithASummary) {
   const Result result = Sled({"check", "tests/golden/rich_e0204.sled"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err.rfind("error[E", 0), 0u) << result.err;
-  EXPECT_NE(result.err.find(" --> tests/golden/rich_e0204.sled:"), std::string::npos)
-      << result.err;
+  EXPECT_NE(result.err.find(" --> tests/golden/rich_e0204.sled:"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("1 error, 0 warnings"), std::string::npos) << result.err;
 }
 
@@ -189,8 +187,7 @@ TEST_F(DriverTest, ExplainOfAnUnknownCodeIsAUsageError) {
 }
 
 TEST_F(DriverTest, MissingFileReportsE0107) {
-  const Result result =
-      Sled({"check", "tests/golden/no_such_file.sled", "--diagnostics=compact"});
+  const Result result = Sled({"check", "tests/golden/no_such_file.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("error[E0107]"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("tests/golden/no_such_file.sled"), std::string::npos) << result.err;
@@ -237,8 +234,8 @@ TEST_F(DriverTest, SetOverridesADeclaredParameter) {
 }
 
 TEST_F(DriverTest, SetOfAnUndeclaredParameterReportsE0213) {
-  const Result result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set",
-                              "nosuch=1", "--diagnostics=compact"});
+  const Result result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set", "nosuch=1",
+                              "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("error[E0213]"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("`--set nosuch`"), std::string::npos) << result.err;

@@ -236,9 +236,8 @@ TEST_P(GoldenTest, MatchesExpectedOutput) {
     }
     ExpectMatchesFile(outcome->Compact(), folder / (stem + ".stderr"));
   } else if (StartsWith(name, "ok_")) {
-    EXPECT_EQ(outcome->diagnostics.diagnostics().size(), 0u)
-        << name << " must check clean:\n"
-        << outcome->Compact();
+    EXPECT_EQ(outcome->diagnostics.diagnostics().size(), 0u) << name << " must check clean:\n"
+                                                             << outcome->Compact();
     ExpectMatchesFile(Dump(outcome->scenario), folder / (stem + ".checked"));
   } else {
     EXPECT_TRUE(outcome->diagnostics.has_errors()) << name << " reports no error";
@@ -260,9 +259,7 @@ INSTANTIATE_TEST_SUITE_P(Golden, GoldenTest, ::testing::ValuesIn(GoldenFiles()),
 
 // Codes that need no golden file: E0107 (an unreadable file, tested through the driver) and the
 // legacy-deck codes E05xx, which have their own tests.
-bool ExemptFromGolden(std::string_view code) {
-  return code == "E0107" || StartsWith(code, "E05");
-}
+bool ExemptFromGolden(std::string_view code) { return code == "E0107" || StartsWith(code, "E05"); }
 
 std::string AllExpectedDiagnostics() {
   std::string all;
@@ -368,9 +365,9 @@ TEST(GoldenRegistry, CodesFollowTheNumberingScheme) {
   for (const lang::DiagnosticInfo& info : lang::AllDiagnostics()) {
     const std::string_view code = info.code;
     ASSERT_EQ(code.size(), 5u) << code;
-    EXPECT_TRUE(std::all_of(code.begin() + 1, code.end(),
-                            [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-        << code;
+    EXPECT_TRUE(std::all_of(code.begin() + 1, code.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c));
+    })) << code;
     if (code[0] == 'E') {
       EXPECT_EQ(info.severity, lang::Severity::kError) << code;
       EXPECT_TRUE(code[1] == '0' && code[2] >= '1' && code[2] <= '5') << code;
