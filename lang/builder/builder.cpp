@@ -1,4 +1,5 @@
 #include "lang/builder/builder.h"
+#include "lang/syntax/lexical.h"
 
 #include <charconv>
 #include <cmath>
@@ -159,28 +160,8 @@ std::optional<ast::Unit> ParseUnit(std::string_view text, std::string_view funct
 
 // --- Precedence, as the grammar and the formatter see it ------------------------------------
 
-enum Level : int {
-  kArrowLevel = 0,
-  kSumLevel,
-  kProductLevel,
-  kUnaryLevel,
-  kPowerLevel,
-  kPrimaryLevel,
-};
-
 int LevelOf(const Node& node) {
-  switch (node.kind) {
-    case ast::ExprKind::kArrow:
-      return kArrowLevel;
-    case ast::ExprKind::kBinary:
-      return node.op == '+' || node.op == '-' ? kSumLevel
-             : node.op == '^'                 ? kPowerLevel
-                                              : kProductLevel;
-    case ast::ExprKind::kUnary:
-      return kUnaryLevel;
-    default:
-      return kPrimaryLevel;  // numbers are never negative here: see MakeNumber
-  }
+  return PrecedenceOf(node.kind, node.op);  // numbers are never negative here: see MakeQuantity
 }
 
 // The operand, in parentheses when it binds more loosely than its place allows, so that the
@@ -201,9 +182,10 @@ Value MakeBinary(char op, Value left, Value right) {
   node.op = op;
   node.where = Access::NodeOf(left).where;
   const int level = LevelOf(node);
-  node.operands.push_back(Bracket(std::move(left), level == kPowerLevel ? kPrimaryLevel : level));
   node.operands.push_back(
-      Bracket(std::move(right), level == kPowerLevel ? kUnaryLevel : level + 1));
+      Bracket(std::move(left), level == kPowerPrecedence ? kPrimaryPrecedence : level));
+  node.operands.push_back(
+      Bracket(std::move(right), level == kPowerPrecedence ? kUnaryPrecedence : level + 1));
   return Access::Make(std::move(node));
 }
 
@@ -212,7 +194,7 @@ Value MakeUnary(Value operand, const SourceLocation& where) {
   node.kind = ast::ExprKind::kUnary;
   node.op = '-';
   node.where = where;
-  node.operands.push_back(Bracket(std::move(operand), kUnaryLevel));
+  node.operands.push_back(Bracket(std::move(operand), kUnaryPrecedence));
   return Access::Make(std::move(node));
 }
 
@@ -325,7 +307,7 @@ Value Arrow(std::initializer_list<Value> chain, SourceLocation where) {
   if (chain.size() < 2) Fail("Arrow", where, "an arrow chain has at least two values");
   Node node;
   node.kind = ast::ExprKind::kArrow;
-  for (const Value& value : chain) node.operands.push_back(Bracket(value, kSumLevel));
+  for (const Value& value : chain) node.operands.push_back(Bracket(value, kSumPrecedence));
   node.where = where;
   return Access::Make(std::move(node));
 }

@@ -1,4 +1,5 @@
 #include "lang/format/formatter.h"
+#include "lang/syntax/lexical.h"
 
 #include <cstddef>
 #include <string>
@@ -15,17 +16,6 @@ constexpr std::size_t kIndentWidth = 2;
 constexpr std::size_t kContinuationIndent = 4;
 constexpr std::size_t kColumnLimit = 100;
 
-// Binding strength, loosest first, following the grammar: arrow, sum, product, unary, power,
-// primary. An operand weaker than its position allows is printed in parentheses.
-enum Level : int {
-  kArrowLevel = 0,
-  kSumLevel,
-  kProductLevel,
-  kUnaryLevel,
-  kPowerLevel,
-  kPrimaryLevel,
-};
-
 // Display columns: UTF-8 continuation bytes take none.
 std::size_t Columns(std::string_view text) {
   std::size_t columns = 0;
@@ -33,54 +23,14 @@ std::size_t Columns(std::string_view text) {
   return columns;
 }
 
-bool IsDigit(char c) { return c >= '0' && c <= '9'; }
-
-// Whether `text` is a number the grammar reads: digits [. digits] [e [+-] digits]. Trees from
-// other front ends may carry no spelling or a foreign one.
-bool IsNumberSpelling(std::string_view text) {
-  std::size_t i = 0;
-  const auto digits = [&] {
-    const std::size_t start = i;
-    while (i < text.size() && IsDigit(text[i])) ++i;
-    return i - start;
-  };
-  if (digits() == 0) return false;
-  if (i < text.size() && text[i] == '.') {
-    ++i;
-    digits();
-  }
-  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-    if (digits() == 0) return false;
-  }
-  return i == text.size();
-}
-
 bool HasOwnSpelling(const ast::Expr& expr) { return IsNumberSpelling(expr.text); }
 
 int LevelOf(const ast::Expr& expr) {
-  switch (expr.kind) {
-    case ast::ExprKind::kArrow:
-      return kArrowLevel;
-    case ast::ExprKind::kBinary:
-      switch (expr.op) {
-        case '+':
-        case '-':
-          return kSumLevel;
-        case '^':
-          return kPowerLevel;
-        default:
-          return kProductLevel;
-      }
-    case ast::ExprKind::kUnary:
-      return kUnaryLevel;
-    case ast::ExprKind::kNumber:
-      // A negative number without a spelling prints with a sign, which reads as unary minus.
-      return !HasOwnSpelling(expr) && expr.number < 0 ? kUnaryLevel : kPrimaryLevel;
-    default:
-      return kPrimaryLevel;
+  // A negative number without a spelling prints with a sign, which reads as unary minus.
+  if (expr.kind == ast::ExprKind::kNumber && !HasOwnSpelling(expr) && expr.number < 0) {
+    return kUnaryPrecedence;
   }
+  return PrecedenceOf(expr.kind, expr.op);
 }
 
 void AppendUnit(const ast::Unit& unit, std::string& out) {
@@ -153,7 +103,7 @@ void AppendExpr(const ast::Expr& expr, std::string& out) {
       out += '(';
       for (std::size_t i = 0; i < expr.operands.size(); ++i) {
         if (i > 0) out += ", ";
-        AppendOperand(expr.operands[i], kArrowLevel, out);
+        AppendOperand(expr.operands[i], kArrowPrecedence, out);
       }
       out += ')';
       if (expr.unit) {
@@ -177,20 +127,20 @@ void AppendExpr(const ast::Expr& expr, std::string& out) {
         const ast::Argument& argument = expr.arguments[i];
         if (i > 0) out += ", ";
         if (!argument.name.empty()) out += argument.name + " = ";
-        if (argument.value) AppendOperand(*argument.value, kArrowLevel, out);
+        if (argument.value) AppendOperand(*argument.value, kArrowPrecedence, out);
       }
       out += ')';
       return;
     case ast::ExprKind::kUnary:
       out += expr.op;
-      if (!expr.operands.empty()) AppendOperand(expr.operands[0], kUnaryLevel, out);
+      if (!expr.operands.empty()) AppendOperand(expr.operands[0], kUnaryPrecedence, out);
       return;
     case ast::ExprKind::kBinary: {
       if (expr.operands.size() != 2) return;
       // Left-associative + - * /; `^` takes a primary on the left and a unary on the right.
       const int level = LevelOf(expr);
-      const int left = level == kPowerLevel ? kPrimaryLevel : level;
-      const int right = level == kPowerLevel ? kUnaryLevel : level + 1;
+      const int left = level == kPowerPrecedence ? kPrimaryPrecedence : level;
+      const int right = level == kPowerPrecedence ? kUnaryPrecedence : level + 1;
       AppendOperand(expr.operands[0], left, out);
       out += ' ';
       out += expr.op;
@@ -201,7 +151,7 @@ void AppendExpr(const ast::Expr& expr, std::string& out) {
     case ast::ExprKind::kArrow:
       for (std::size_t i = 0; i < expr.operands.size(); ++i) {
         if (i > 0) out += " -> ";
-        AppendOperand(expr.operands[i], kSumLevel, out);
+        AppendOperand(expr.operands[i], kSumPrecedence, out);
       }
       return;
     case ast::ExprKind::kParen:

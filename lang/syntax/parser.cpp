@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "lang/syntax/grammar.h"
+#include "lang/syntax/lexical.h"
 #include "lang/syntax/syntax_tree.h"
 
 namespace sled::lang {
@@ -220,24 +221,10 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
 
 // True when the word starting at `begin` is a complete number: 12, 0.5, 1e-5, 2.5E+3.
 bool IsWholeNumber(std::string_view text, std::size_t begin) {
-  std::size_t i = begin;
-  auto digits = [&] {
-    const std::size_t from = i;
-    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
-    return i > from;
-  };
-  if (!digits()) return false;
-  if (i < text.size() && text[i] == '.') {
-    ++i;
-    digits();
-  }
-  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
-    ++i;
-    if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-    if (!digits()) return false;
-  }
-  return i >= text.size() ||
-         !(std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == '.');
+  const std::size_t end = begin + NumberSpellingLength(text, begin);
+  return end > begin &&
+         (end >= text.size() || !(std::isalnum(static_cast<unsigned char>(text[end])) ||
+                                  text[end] == '_' || text[end] == '.'));
 }
 
 std::string JoinExpected(const std::vector<const char*>& expected) {
