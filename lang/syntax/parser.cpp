@@ -97,6 +97,7 @@ struct ParseState {
   const char* base = nullptr;
   std::vector<std::unique_ptr<Node>> stack;
   std::vector<SourceRange> comments;
+  std::vector<std::uint32_t> child_marks;  // children of the top node when a rule started
   FileId file;
   int depth = 0;
   int max_depth = 64;
@@ -121,6 +122,12 @@ struct ParseState {
 // The PEGTL control: builds the syntax tree, tracks the farthest failure and limits depth.
 template <typename Rule>
 struct Control : pegtl::normal<Rule> {
+  // Every rule, PEGTL's internal ones included, reports to the control: a sequence that fails
+  // after some of its parts succeeded must take back the nodes those parts added
+  // (`opt<op_power, unary>` where `^` matched but no operand followed).
+  static constexpr bool enable = true;
+  static constexpr bool kComposite = Rule::subs_t::size > 0;
+
   template <typename Input>
   static void start(const Input& in, ParseState& state) {
     if constexpr (kCountsDepth<Rule>) {
@@ -131,6 +138,9 @@ struct Control : pegtl::normal<Rule> {
       node->type = kNodeOf<Rule>;
       node->begin = state.Offset(in.current());
       state.stack.push_back(std::move(node));
+    } else if constexpr (kComposite) {
+      state.child_marks.push_back(
+          static_cast<std::uint32_t>(state.stack.back()->children.size()));
     }
   }
 
@@ -142,13 +152,20 @@ struct Control : pegtl::normal<Rule> {
       state.stack.pop_back();
       node->end = state.Offset(in.current());
       state.stack.back()->children.push_back(std::move(node));
+    } else if constexpr (kComposite) {
+      state.child_marks.pop_back();
     }
   }
 
   template <typename Input>
   static void failure(const Input& in, ParseState& state) {
     if constexpr (kCountsDepth<Rule>) --state.depth;
-    if constexpr (kNodeOf<Rule> != NodeType::kNone) state.stack.pop_back();
+    if constexpr (kNodeOf<Rule> != NodeType::kNone) {
+      state.stack.pop_back();
+    } else if constexpr (kComposite) {
+      state.stack.back()->children.resize(state.child_marks.back());
+      state.child_marks.pop_back();
+    }
     if constexpr (kExpectedName<Rule> != nullptr) {
       const std::uint32_t at = state.Offset(in.current());
       if (at > state.farthest) {
@@ -210,7 +227,7 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
       if ((next & 0xC0u) != 0x80u) break;
       code = (code << 6) | (next & 0x3Fu);
     }
-    if (length == 1 || i != length) return fmt::format("the byte 0x{:02X}", lead);
+    if (length == 1 || i != length) return fmt::format("byte 0x{:02X}", lead);
     return fmt::format("character `{}` (U+{:04X})", text.substr(at, length), code);
   }
   if (static_cast<unsigned char>(c) < 0x20) {

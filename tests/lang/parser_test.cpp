@@ -801,3 +801,22 @@ TEST(SourceRange, JoinCoversBothAndPrecedesOrdersByFileThenOffset) {
 
 }  // namespace
 }  // namespace sled::lang
+
+namespace sled::lang {
+namespace {
+
+// Found by the check fuzzer: `^` matched, its operand did not, and the operator's node stayed in
+// the tree, so building the AST read past the end of a node's children.
+TEST(ParseRegression, AnOperatorWhoseOperandFailsLeavesNoNodeBehind) {
+  SourceManager sources;
+  const FileId file = sources.Add("regression.sled", "x = a ^ 0.5end\ny = (b ^ ) + 1\n");
+  DiagnosticCollector diagnostics;
+  ParseOptions options;
+  options.diagnostics = &diagnostics;
+  const ast::File parsed = Parse(sources, file, options);
+  EXPECT_TRUE(diagnostics.has_errors());
+  EXPECT_NO_THROW((void)ast::Dump(parsed));
+}
+
+}  // namespace
+}  // namespace sled::lang
