@@ -123,6 +123,11 @@ const ast::Statement* Checker::One(const BoundBlock& bound, std::string_view nam
   return it == bound.attributes.end() || it->second.empty() ? nullptr : it->second.front();
 }
 
+const ast::Expr* Checker::ValueOf(const BoundBlock& bound, std::string_view name) {
+  const ast::Statement* statement = One(bound, name);
+  return statement ? SingleValue(*statement) : nullptr;
+}
+
 const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
   if (statement.values.size() != 1) {
     Report(
@@ -487,9 +492,7 @@ bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange ra
 
 std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
                                             std::string_view name) {
-  const ast::Statement* statement = One(bound, name);
-  if (!statement) return std::nullopt;
-  const ast::Expr* expr = SingleValue(*statement);
+  const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
   const AttributeSpec* spec = FindAttribute(kind, name);
   auto value = ExpectQuantity(scope, *expr, spec->dimension, name);
@@ -499,9 +502,7 @@ std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& boun
 
 std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
                                         std::string_view name) {
-  const ast::Statement* statement = One(bound, name);
-  if (!statement) return std::nullopt;
-  const ast::Expr* expr = SingleValue(*statement);
+  const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
   const AttributeSpec* spec = FindAttribute(kind, name);
   if (spec->dimension == dim::kDimensionless && name == "axis") {
@@ -511,9 +512,7 @@ std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, B
 }
 
 std::optional<bool> Checker::ReadBool(const BoundBlock& bound, std::string_view name) {
-  const ast::Statement* statement = One(bound, name);
-  if (!statement) return std::nullopt;
-  const ast::Expr* expr = SingleValue(*statement);
+  const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
   return ExpectBool(*expr, name);
 }

@@ -138,6 +138,8 @@ class Checker {
   const ast::Statement* One(const BoundBlock& bound, std::string_view name) const;
   // A statement that must be `keyword = value` (one value, no target or clauses).
   const ast::Expr* SingleValue(const ast::Statement& statement);
+  // The one value of attribute `name`, or nullptr when it is absent (or reported as malformed).
+  const ast::Expr* ValueOf(const BoundBlock& bound, std::string_view name);
 
   // Typed attribute readers over a bound block; absent attributes give nullopt silently.
   std::optional<double> ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,

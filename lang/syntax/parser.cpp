@@ -139,8 +139,7 @@ struct Control : pegtl::normal<Rule> {
       node->begin = state.Offset(in.current());
       state.stack.push_back(std::move(node));
     } else if constexpr (kComposite) {
-      state.child_marks.push_back(
-          static_cast<std::uint32_t>(state.stack.back()->children.size()));
+      state.child_marks.push_back(static_cast<std::uint32_t>(state.stack.back()->children.size()));
     }
   }
 

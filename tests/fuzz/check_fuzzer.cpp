@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   lang::SourceManager sources;
   // Inside the source tree, so relative imports reach real modules as well as missing ones.
-  const lang::FileId file = sources.Add(std::string(SLED_SOURCE_ROOT) + "/examples/fuzz.sled", text);
+  const lang::FileId file =
+      sources.Add(std::string(SLED_SOURCE_ROOT) + "/examples/fuzz.sled", text);
   lang::DiagnosticCollector collector;
   lang::ParseOptions parse_options;
   parse_options.diagnostics = &collector;

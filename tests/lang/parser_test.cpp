@@ -553,10 +553,16 @@ TEST(ParseError, BlockCommentIsNotAComment) {
   EXPECT_THAT(parsed->Problems(), ElementsAre("E0101@2:7"));
 }
 
-TEST(ParseError, OperatorWithoutOperandIsReported) {
-  auto parsed = ParseText("x = 1 *\n");
-  ASSERT_EQ(parsed->diagnostics.error_count(), 1);
-  EXPECT_EQ(parsed->diagnostics.diagnostics()[0].code(), "E0101");
+TEST(ParseError, OperatorWithoutOperandIsReportedNotThrown) {
+  // `x = 2 ^` once escaped as std::out_of_range from building the tree (found by the fuzzer).
+  for (const char* text : {"x = 1 *\n", "x = 1 +\n", "x = 1 /", "x = 1 ->\n", "x = 2 ^\n",
+                           "x = 2 ^", "x = 2 ^ // c\n", "x = 2 ^ 3 ^\n", "a { e = 2 ^ }\n"}) {
+    std::unique_ptr<Parsed> parsed;
+    ASSERT_NO_THROW(parsed = ParseText(text)) << text;
+    ASSERT_EQ(parsed->diagnostics.error_count(), 1) << text;
+    EXPECT_EQ(parsed->diagnostics.diagnostics()[0].code(), "E0101") << text;
+    EXPECT_EQ(parsed->Problems()[0].substr(0, 7), "E0101@1") << text;
+  }
 }
 
 TEST(ParseError, ParseRequiresADiagnosticConsumer) {
