@@ -1,0 +1,37 @@
+#include "runtime/data.h"
+
+namespace sled::runtime {
+
+Data MakeData(const Model& model) {
+  const std::size_t n = model.nsegment();
+  Data data;
+  data.model = &model;
+  data.time = model.start_time;
+  data.q = model.q0;
+  data.v = model.v0;
+  data.q.resize(static_cast<std::size_t>(model.nq), 0.0);
+  data.v.resize(static_cast<std::size_t>(model.nv), 0.0);
+  data.locked.assign(model.joint_locked.begin(), model.joint_locked.end());
+  data.locked.resize(n, 0);
+  data.rotation.assign(n, Mat3::Identity());
+  data.position.assign(n, Vec3::Zero());
+  data.parent_to_child.assign(n, Transform{});
+  data.subspace.assign(n, MotionSubspace(6, 0));
+  data.velocity.assign(n, Vec6::Zero());
+  data.bias_acceleration.assign(n, Vec6::Zero());
+  data.acceleration.assign(n, Vec6::Zero());
+  data.external.assign(n, Vec6::Zero());
+  data.generalized_force.assign(static_cast<std::size_t>(model.nv), 0.0);
+  data.joint_wrench.assign(n, Vec6::Zero());
+  data.vdot.assign(static_cast<std::size_t>(model.nv), 0.0);
+  data.articulated_inertia.assign(n, Mat6::Zero());
+  data.articulated_bias.assign(n, Vec6::Zero());
+  data.u_matrix.assign(n, MotionSubspace(6, 0));
+  data.d_inverse.assign(n, SmallMatrix(0, 0));
+  data.u_vector.assign(n, SmallVector(0));
+  data.spring_length.assign(model.nspring(), 0.0);
+  data.spring_force.assign(model.nspring(), 0.0);
+  return data;
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,61 @@
+// runtime::Data: everything that changes during a run of one Model: time, state, lock states,
+// the kinematic and dynamic caches and the solver workspace. Sized by MakeData; nothing in a
+// step allocates. A Data is only valid with the Model that made it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "runtime/model.h"
+#include "runtime/spatial.h"
+
+namespace sled::runtime {
+
+// A numerical failure: when, where and why. The run keeps its outputs up to `time`.
+struct Failure {
+  double time = 0.0;
+  std::string where;  // a segment or joint name
+  std::string cause;
+  SourcePosition source;
+};
+
+struct Data {
+  const Model* model = nullptr;  // the Model this Data belongs to
+  double time = 0.0;
+  std::vector<double> q;             // generalized positions (nq)
+  std::vector<double> v;             // generalized velocities (nv)
+  std::vector<std::uint8_t> locked;  // per segment: bit k locks axis k of its joint
+
+  // Kinematics, per segment.
+  std::vector<Mat3> rotation;              // R_WS: segment to world
+  std::vector<Vec3> position;              // centre of mass in the world frame
+  std::vector<Transform> parent_to_child;  // X from the parent (or world) frame
+  std::vector<MotionSubspace> subspace;    // S: active joint axes as motion vectors
+  std::vector<Vec6> velocity;              // spatial velocity in the segment frame
+  std::vector<Vec6> bias_acceleration;     // c = v x S qdot + Sdot qdot
+  std::vector<Vec6> acceleration;          // spatial acceleration in the segment frame
+
+  // Forces.
+  std::vector<Vec6> external;             // applied wrench at the centre of mass, segment frame
+  std::vector<double> generalized_force;  // joint torques and forces (nv)
+  std::vector<Vec6> joint_wrench;  // force the parent transmits to the segment, segment frame
+  std::vector<double> vdot;        // generalized accelerations (nv)
+
+  // Articulated-body workspace.
+  std::vector<Mat6> articulated_inertia;
+  std::vector<Vec6> articulated_bias;
+  std::vector<MotionSubspace> u_matrix;  // U = I^A S
+  std::vector<SmallMatrix> d_inverse;    // (S^T U)^-1
+  std::vector<SmallVector> u_vector;     // tau - S^T p^A
+
+  // Spring–dampers: current length and force (positive in tension).
+  std::vector<double> spring_length;
+  std::vector<double> spring_force;
+
+  std::int64_t evaluations = 0;
+};
+
+Data MakeData(const Model& model);
+
+}  // namespace sled::runtime

@@ -1,0 +1,247 @@
+// runtime::DumpModel: a stable text form of a Model for `sled check --dump-model` and golden
+// tests. One line per entity; numbers in their shortest round-trip form; rotation matrices row by
+// row. Equal dumps mean equal models.
+#include <string>
+
+#include <fmt/format.h>
+
+#include "runtime/model.h"
+
+namespace sled::runtime {
+namespace {
+
+std::string Text(const Vec3& v) { return fmt::format("({}, {}, {})", v.x(), v.y(), v.z()); }
+
+std::string Text(const Mat3& m) {
+  return fmt::format("[[{}, {}, {}], [{}, {}, {}], [{}, {}, {}]]", m(0, 0), m(0, 1), m(0, 2),
+                     m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2));
+}
+
+std::string Text(const FrameRef& frame) {
+  switch (frame.kind) {
+    case FrameRef::Kind::kVehicle:
+      return fmt::format("vehicle {}", frame.index);
+    case FrameRef::Kind::kSegment:
+      return fmt::format("segment {}", frame.index);
+    case FrameRef::Kind::kGround:
+      break;
+  }
+  return "ground";
+}
+
+std::string Text(const SourcePosition& source) {
+  if (source.file.empty() && source.line == 0) return "-";
+  return fmt::format("{}:{}:{}", source.file, source.line, source.column);
+}
+
+template <typename T>
+std::string List(const std::vector<T>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    out += fmt::format("{}{}", i == 0 ? "" : ", ", values[i]);
+  }
+  return out + "]";
+}
+
+template <typename T>
+const T& Get(const std::vector<T>& values, std::size_t i) {
+  return values.at(i);
+}
+
+const char* Name(JointKind kind) {
+  switch (kind) {
+    case JointKind::kFree:
+      return "free";
+    case JointKind::kBall:
+      return "ball";
+    case JointKind::kPin:
+      return "pin";
+    case JointKind::kSlip:
+      return "slip";
+    case JointKind::kEuler:
+      return "euler";
+  }
+  return "?";
+}
+
+const char* Name(Model::ConstraintKind kind) {
+  switch (kind) {
+    case Model::ConstraintKind::kFixedPoint:
+      return "fixed_point";
+    case Model::ConstraintKind::kFixedDistance:
+      return "fixed_distance";
+    case Model::ConstraintKind::kRolling:
+      return "rolling";
+    case Model::ConstraintKind::kSliding:
+      return "sliding";
+  }
+  return "?";
+}
+
+const char* Name(Model::OutputKind kind) {
+  switch (kind) {
+    case Model::OutputKind::kAcceleration:
+      return "acceleration";
+    case Model::OutputKind::kVelocity:
+      return "velocity";
+    case Model::OutputKind::kPosition:
+      return "position";
+    case Model::OutputKind::kAngularAcceleration:
+      return "angular_acceleration";
+    case Model::OutputKind::kAngularVelocity:
+      return "angular_velocity";
+    case Model::OutputKind::kOrientation:
+      return "orientation";
+    case Model::OutputKind::kJointAngle:
+      return "joint_angle";
+    case Model::OutputKind::kJointTorque:
+      return "joint_torque";
+    case Model::OutputKind::kJointForce:
+      return "joint_force";
+    case Model::OutputKind::kSpringForce:
+      return "spring_force";
+  }
+  return "?";
+}
+
+std::string MotionText(const VehicleMotion& motion) {
+  switch (motion.kind) {
+    case VehicleMotion::Kind::kNone:
+      return "none";
+    case VehicleMotion::Kind::kHalfSine:
+      return fmt::format("half_sine axis {} start {} delta_v {} duration {}", Text(motion.axis),
+                         motion.start, motion.delta_v, motion.duration);
+    case VehicleMotion::Kind::kTrapezoid:
+      return fmt::format("trapezoid axis {} start {} peak {} rise {} dwell {} fall {}",
+                         Text(motion.axis), motion.start, motion.peak, motion.rise, motion.dwell,
+                         motion.fall);
+    case VehicleMotion::Kind::kTable: {
+      std::string out =
+          fmt::format("table axis {} start {} rows [", Text(motion.axis), motion.start);
+      for (std::size_t i = 0; i < motion.table.size(); ++i) {
+        out +=
+            fmt::format("{}({}, {})", i == 0 ? "" : ", ", motion.table[i][0], motion.table[i][1]);
+      }
+      return out + "]";
+    }
+    case VehicleMotion::Kind::kSixDof: {
+      std::string out = fmt::format("six_dof start {} rows [", motion.start);
+      for (std::size_t i = 0; i < motion.six_dof.size(); ++i) {
+        const auto& r = motion.six_dof[i];
+        out += fmt::format("{}({}, {}, {}, {}, {}, {}, {})", i == 0 ? "" : ", ", r[0], r[1], r[2],
+                           r[3], r[4], r[5], r[6]);
+      }
+      return out + "]";
+    }
+  }
+  return "?";
+}
+
+std::string FunctionText(const FunctionTable& f, std::size_t i) {
+  const auto first = static_cast<std::size_t>(Get(f.first, i) < 0 ? 0 : Get(f.first, i));
+  const auto count = static_cast<std::size_t>(Get(f.count, i) < 0 ? 0 : Get(f.count, i));
+  std::string out;
+  switch (Get(f.kind, i)) {
+    case FunctionTable::Kind::kConstant:
+      out = fmt::format("constant {}", Get(f.constant, i));
+      break;
+    case FunctionTable::Kind::kTable:
+      out = "table [";
+      for (std::size_t k = 0; k < count; ++k) {
+        out += fmt::format("{}({}, {})", k == 0 ? "" : ", ", Get(f.points_x, first + k),
+                           Get(f.points_y, first + k));
+      }
+      out += "]";
+      break;
+    case FunctionTable::Kind::kPolynomial:
+      out = "polynomial [";
+      for (std::size_t k = 0; k < count; ++k) {
+        out += fmt::format("{}{}", k == 0 ? "" : ", ", Get(f.coefficients, first + k));
+      }
+      out += "]";
+      break;
+  }
+  return out + fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
+                           Get(f.permanent_set, i));
+}
+
+}  // namespace
+
+std::string DumpModel(const Model& m) {
+  std::string out;
+  auto line = [&out](const std::string& text) {
+    out += text;
+    out += '\n';
+  };
+  line(fmt::format("title {}", m.title));
+  line(fmt::format("gravity {}", Text(m.gravity)));
+  line(
+      fmt::format("run start {} end {} output_every {} integrator {} relative_tolerance {} "
+                  "absolute_tolerance {} min_step {} max_step {} initial_step {}",
+                  m.start_time, m.end_time, m.output_every, m.integrator, m.relative_tolerance,
+                  m.absolute_tolerance, m.min_step, m.max_step, m.initial_step));
+  line(
+      fmt::format("sizes segments {} nq {} nv {} vehicles {} functions {} springs {} "
+                  "constraints {} outputs {}",
+                  m.nsegment(), m.nq, m.nv, m.nvehicle(), m.functions.size(), m.nspring(),
+                  m.nconstraint(), m.output_kind.size()));
+  for (std::size_t s = 0; s < m.nsegment(); ++s) {
+    line(fmt::format("segment {} {} parent {} mass {} inertia {} source {}", s, m.segment_name[s],
+                     Get(m.segment_parent, s), Get(m.segment_mass, s),
+                     Text(Get(m.segment_inertia, s)), Text(Get(m.segment_source, s))));
+    const JointKind kind = Get(m.joint_kind, s);
+    std::string joint =
+        fmt::format("joint {} {} {} q {}+{} v {}+{}", s,
+                    Get(m.joint_name, s).empty() ? "-" : Get(m.joint_name, s), Name(kind),
+                    Get(m.q_address, s), Get(m.q_count, s), Get(m.v_address, s), Get(m.v_count, s));
+    if (kind != JointKind::kFree) {
+      const auto& functions = Get(m.joint_function, s);
+      joint += fmt::format(
+          " point_in_parent {} frame_in_parent {} point_in_child {} frame_in_child {} axis {} "
+          "functions [{}, {}, {}] viscous {} coulomb {} stop {} twist_stop {} stop_impulse {} "
+          "restitution {} locked {} lock_below {} unlock_above {} source {}",
+          Text(Get(m.joint_point_in_parent, s)), Text(Get(m.joint_frame_in_parent, s)),
+          Text(Get(m.joint_point_in_child, s)), Text(Get(m.joint_frame_in_child, s)),
+          Text(Get(m.joint_axis, s)), functions[0], functions[1], functions[2],
+          Get(m.joint_viscous, s), Get(m.joint_coulomb, s), Get(m.joint_stop, s),
+          Get(m.joint_twist_stop, s), Get(m.joint_stop_impulse, s), Get(m.joint_restitution, s),
+          Get(m.joint_locked, s), Get(m.joint_lock_below, s), Get(m.joint_unlock_above, s),
+          Text(Get(m.joint_source, s)));
+    }
+    line(joint);
+  }
+  line(fmt::format("q0 {}", List(m.q0)));
+  line(fmt::format("v0 {}", List(m.v0)));
+  for (std::size_t v = 0; v < m.nvehicle(); ++v) {
+    line(fmt::format("vehicle {} {} position {} orientation {} velocity {} motion {}", v,
+                     m.vehicle_name[v], Text(Get(m.vehicle_position, v)),
+                     Text(Get(m.vehicle_orientation, v)), Text(Get(m.vehicle_velocity, v)),
+                     MotionText(Get(m.vehicle_motion, v))));
+  }
+  for (std::size_t f = 0; f < m.functions.size(); ++f) {
+    line(fmt::format("function {} {}", f, FunctionText(m.functions, f)));
+  }
+  for (std::size_t s = 0; s < m.nspring(); ++s) {
+    line(fmt::format(
+        "spring {} {} first {} {} second {} {} function {} damping {} free_length {} "
+        "tension_only {}",
+        s, m.spring_name[s], Text(Get(m.spring_first, s)), Text(Get(m.spring_point_first, s)),
+        Text(Get(m.spring_second, s)), Text(Get(m.spring_point_second, s)),
+        Get(m.spring_function, s), Get(m.spring_damping, s), Get(m.spring_free_length, s),
+        Get(m.spring_tension_only, s)));
+  }
+  for (std::size_t c = 0; c < m.nconstraint(); ++c) {
+    line(fmt::format("constraint {} {} {} first {} {} second {} {} distance {} axis {}", c,
+                     m.constraint_name[c], Name(Get(m.constraint_kind, c)),
+                     Text(Get(m.constraint_first, c)), Text(Get(m.constraint_point_first, c)),
+                     Text(Get(m.constraint_second, c)), Text(Get(m.constraint_point_second, c)),
+                     Get(m.constraint_distance, c), Text(Get(m.constraint_axis, c))));
+  }
+  for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
+    line(fmt::format("output {} {} {} index {} point {}", o, Name(m.output_kind[o]),
+                     Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o))));
+  }
+  return out;
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,29 @@
+// The force elements of issue 3: gravity, joint characteristics (torque functions, viscous and
+// Coulomb damping) and spring–dampers / tension elements. They write data.external (wrenches at
+// each centre of mass, segment frame) and data.generalized_force (joint torques).
+#pragma once
+
+#include "runtime/data.h"
+
+namespace sled::runtime {
+
+void ComputeForces(const Model& model, Data& data);
+
+// The flexure and twist angles of a ball joint's quaternion about the joint's z axis (swing–twist
+// decomposition), with the unit flexure axis in the parent joint frame.
+struct SwingTwist {
+  double flexure = 0.0;
+  Vec3 flexure_axis = Vec3::UnitX();
+  double twist = 0.0;
+};
+SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation);
+
+// World position and velocity of a point fixed in a frame.
+struct PointState {
+  Vec3 position;
+  Vec3 velocity;
+};
+PointState PointInFrame(const Model& model, const Data& data, const FrameRef& frame,
+                        const Vec3& point);
+
+}  // namespace sled::runtime

@@ -1,0 +1,45 @@
+#include "runtime/functions.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sled::runtime {
+
+double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double x) {
+  if (id < 0) return 0.0;
+  const auto f = static_cast<std::size_t>(id);
+  const auto first = static_cast<std::size_t>(functions.first[f]);
+  const auto count = static_cast<std::size_t>(functions.count[f]);
+  switch (functions.kind[f]) {
+    case FunctionTable::Kind::kConstant:
+      return functions.constant[f];
+    case FunctionTable::Kind::kPolynomial: {
+      double value = 0.0;
+      for (std::size_t k = count; k-- > 0;) value = value * x + functions.coefficients[first + k];
+      return value;
+    }
+    case FunctionTable::Kind::kTable: {
+      const double* xs = functions.points_x.data() + first;
+      const double* ys = functions.points_y.data() + first;
+      if (count == 1) return ys[0];
+      // The segment containing x (or the end segment beyond the table).
+      const double* upper = std::upper_bound(xs + 1, xs + count - 1, x);
+      const std::size_t i = static_cast<std::size_t>(upper - xs) - 1;
+      const double slope = (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i]);
+      return ys[i] + slope * (x - xs[i]);
+    }
+  }
+  return 0.0;
+}
+
+double RestoringTorque(const FunctionTable& functions, std::int32_t id, double x) {
+  if (id < 0) return 0.0;
+  const auto f = static_cast<std::size_t>(id);
+  const bool covers_negative = functions.kind[f] == FunctionTable::Kind::kTable &&
+                               functions.points_x[static_cast<std::size_t>(functions.first[f])] < 0;
+  if (covers_negative) return -EvaluateFunction(functions, id, x);
+  const double magnitude = EvaluateFunction(functions, id, std::abs(x));
+  return x >= 0 ? -magnitude : magnitude;
+}
+
+}  // namespace sled::runtime

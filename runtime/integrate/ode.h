@@ -1,0 +1,113 @@
+// The interface between the integrators and what they integrate. The dynamics implements
+// OdeSystem for a Model; tests implement it for analytic ODEs. Integrators know nothing of
+// segments or joints, only of a flat state vector, its 3-vector groups (for the CVS exponential
+// method), events, and optional Jacobians.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sled::runtime {
+
+// y' = f(t, y), with events g_k(t, y) whose sign changes the integrator must locate.
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+
+  virtual std::size_t size() const = 0;
+
+  // dy = f(t, y). Returns false when f cannot be evaluated (NaN, a singular system): the
+  // integrator then rejects the step or, at the minimum step, fails with the system's reason.
+  virtual bool Derivative(double t, std::span<const double> y, std::span<double> dy) = 0;
+
+  // The Jacobian df/dy, row-major n x n, if the system can give it cheaply; the default says it
+  // cannot, and implicit methods fall back on finite differences of Derivative.
+  virtual bool Jacobian(double t, std::span<const double> y, std::span<double> jacobian) {
+    (void)t, (void)y, (void)jacobian;
+    return false;
+  }
+
+  // State components that form 3-vectors (a segment's angular velocity, say), as the starting
+  // index of each group; the CVS exponential integrator estimates one decay rate per group.
+  // Components outside every group are integrated with a decay rate of zero.
+  virtual std::vector<std::size_t> VectorGroups() const { return {}; }
+
+  // After an accepted step: renormalise quaternions and the like. Must not change the solution
+  // more than the tolerance; it exists so drift does not accumulate.
+  virtual void Project(double t, std::span<double> y) { (void)t, (void)y; }
+
+  // Events: the integrator locates each sign change of g_k within a step (to `event_tolerance`
+  // in time), stops there, and calls HandleEvent, which may change y (an impulse) and the
+  // system itself (a joint locks). After an event the integrator restarts its history.
+  virtual std::size_t EventCount() const { return 0; }
+  virtual void Events(double t, std::span<const double> y, std::span<double> g) {
+    (void)t, (void)y, (void)g;
+  }
+  // `direction` is +1 when g_k went from negative to positive, -1 the other way.
+  virtual void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
+    (void)k, (void)direction, (void)t, (void)y;
+  }
+
+  // Why Derivative last returned false, for the failure report.
+  virtual std::string FailureReason() const { return {}; }
+};
+
+struct IntegratorOptions {
+  double relative_tolerance = 1e-6;
+  double absolute_tolerance = 1e-9;
+  double min_step = 1e-12;
+  double max_step = 0.0;      // 0: no limit beyond the output step
+  double initial_step = 0.0;  // 0: chosen by the integrator
+  double event_tolerance = 1e-12;
+};
+
+struct IntegratorStats {
+  long steps = 0;           // accepted
+  long rejected = 0;
+  long evaluations = 0;     // calls of Derivative
+  long jacobians = 0;       // Jacobians formed (analytic or by differences)
+  long factorizations = 0;  // linear systems factored (implicit methods)
+  long events = 0;
+  // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance),
+  // and an estimate of the global error: the sum over steps of the local error estimates in
+  // the weighted norm, times the tolerance scale.
+  double max_local_error = 0.0;
+  double accumulated_error = 0.0;
+};
+
+enum class IntegratorStatus {
+  kOk,
+  kMinStepReached,  // the error test failed at the minimum step: never silently accepted
+  kEvaluationFailed,  // Derivative returned false at the minimum step
+  kNotFinite,       // the state became NaN or infinite
+};
+
+struct AdvanceResult {
+  IntegratorStatus status = IntegratorStatus::kOk;
+  double t = 0.0;  // where the integration stopped (the target time when kOk)
+  std::string reason;
+};
+
+// One interface for every method. Advance integrates from the current (t, y) to t_end, taking
+// as many internal steps as the tolerances need, and leaves the state at t_end (or where it
+// failed). Calling Advance repeatedly with increasing t_end continues the same solution, so
+// output at fixed times is Advance(t1), Advance(t2), ...
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual std::string_view name() const = 0;
+  virtual int order() const = 0;
+  // Starts a solution at (t0, y0). Allocates all workspace here, never in Advance.
+  virtual void Reset(OdeSystem& system, double t0, std::span<const double> y0,
+                     const IntegratorOptions& options) = 0;
+  virtual AdvanceResult Advance(double t_end) = 0;
+  virtual double time() const = 0;
+  virtual std::span<const double> state() const = 0;
+  // Lets the caller change the state between calls (an external event); restarts history.
+  virtual std::span<double> mutable_state() = 0;
+  virtual const IntegratorStats& stats() const = 0;
+};
+
+}  // namespace sled::runtime

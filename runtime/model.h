@@ -1,0 +1,213 @@
+// runtime::Model: the compiled scene. Flat, structure-of-arrays, SI units, sized once by
+// compiler::Lower and never resized; it holds only what the scene uses. A Data (data.h) holds
+// everything that changes during a run. The runtime knows nothing of the language: the only
+// link back to the scenario is the side table of source positions.
+//
+// Dynamics are in joint coordinates: each body of segments is a tree whose root is a free
+// segment (6 degrees of freedom) and whose other segments hang from joints. Solving this tree
+// with the articulated-body recursion is the leaf-first elimination of the CVS block system
+// (the joint constraint forces are eliminated, then recovered by the backward pass), so joints
+// never drift apart. Closed loops (fixed-point, fixed-distance, rolling and sliding constraints)
+// add Lagrange multipliers.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace sled::runtime {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+// Typed indices: a SegmentId cannot be passed where a JointId belongs.
+template <typename Tag>
+struct Id {
+  std::int32_t value = -1;
+  constexpr bool valid() const { return value >= 0; }
+  constexpr std::size_t index() const { return static_cast<std::size_t>(value); }
+  friend constexpr bool operator==(Id, Id) = default;
+};
+using SegmentId = Id<struct SegmentTag>;
+using VehicleId = Id<struct VehicleTag>;
+using FunctionId = Id<struct FunctionTag>;
+using SpringId = Id<struct SpringTag>;
+using ConstraintId = Id<struct ConstraintTag>;
+
+// Where a point or frame is attached: the ground (inertial), a vehicle (prescribed motion) or a
+// segment (integrated).
+struct FrameRef {
+  enum class Kind : std::uint8_t { kGround, kVehicle, kSegment };
+  Kind kind = Kind::kGround;
+  std::int32_t index = -1;
+};
+
+// How a segment moves relative to its parent. kFree: a reference segment (position and
+// quaternion); kBall: a quaternion; kPin: an angle about `joint_axis`; kSlip: a displacement
+// along `joint_axis`; kEuler: precession, nutation and spin (z, then y, then x of the joint
+// frame; each axis can be locked).
+enum class JointKind : std::uint8_t { kFree, kBall, kPin, kSlip, kEuler };
+
+// A function of one variable (CVS: constant, table with linear interpolation, polynomial up to
+// degree five) and its unloading parameters.
+struct FunctionTable {
+  enum class Kind : std::uint8_t { kConstant, kTable, kPolynomial };
+  std::vector<Kind> kind;
+  std::vector<double> constant;
+  std::vector<std::int32_t> first;  // into points (kTable) or coefficients (kPolynomial)
+  std::vector<std::int32_t> count;
+  std::vector<double> energy_loss;
+  std::vector<double> permanent_set;
+  std::vector<double> points_x;
+  std::vector<double> points_y;
+  std::vector<double> coefficients;
+  std::size_t size() const { return kind.size(); }
+};
+
+// Prescribed vehicle motion: the vehicle's acceleration as a function of time.
+struct VehicleMotion {
+  enum class Kind : std::uint8_t { kNone, kHalfSine, kTrapezoid, kTable, kSixDof };
+  Kind kind = Kind::kNone;
+  Vec3 axis = Vec3::UnitX();
+  double start = 0.0;
+  double delta_v = 0.0;
+  double duration = 0.0;
+  double peak = 0.0;
+  double rise = 0.0;
+  double dwell = 0.0;
+  double fall = 0.0;
+  std::vector<std::array<double, 2>> table;    // (t, a)
+  std::vector<std::array<double, 7>> six_dof;  // t, linear (3), angular (3)
+};
+
+// A line back to the scenario, so runtime messages can name it.
+struct SourcePosition {
+  std::string file;
+  std::uint32_t line = 0;
+  std::uint32_t column = 0;
+};
+
+struct Model {
+  std::string title;
+  Vec3 gravity{0, 0, -9.80665};
+
+  // --- Segments, in tree order: a segment's parent comes before it (nsegment entries).
+  std::vector<std::string> segment_name;
+  std::vector<std::int32_t> segment_parent;  // -1 for a root: a reference segment
+  // For a root: the frame its joint attaches to. A floating reference segment has a kFree joint
+  // to the ground; a root held at a point of the ground or of a vehicle (a pendulum, an occupant
+  // tethered to a sled) has a ball or pin joint to that frame, whose joint point and frame are
+  // then given in the base frame.
+  std::vector<FrameRef> segment_base;
+  std::vector<double> segment_mass;
+  std::vector<Mat3> segment_inertia;    // about the centre of mass, in the segment frame
+  std::vector<JointKind> joint_kind;    // of the joint above the segment (kFree for a root)
+  std::vector<std::string> joint_name;  // empty for a root
+  std::vector<std::int32_t> q_address;  // first position coordinate of the joint
+  std::vector<std::int32_t> v_address;  // first velocity coordinate of the joint
+  std::vector<std::int32_t> q_count;
+  std::vector<std::int32_t> v_count;
+  // Joint geometry: the joint point and the joint frame in the parent and in the child.
+  std::vector<Vec3> joint_point_in_parent;
+  std::vector<Mat3> joint_frame_in_parent;  // columns: joint axes in parent coordinates
+  std::vector<Vec3> joint_point_in_child;
+  std::vector<Mat3> joint_frame_in_child;
+  std::vector<Vec3> joint_axis;  // pin and slip: unit axis in the joint frame
+  // Joint characteristics (functions of angle giving torque; -1 when absent).
+  std::vector<std::array<std::int32_t, 3>> joint_function;  // flexure, twist, -; or
+                                                            // precession, nutation, spin
+  std::vector<double> joint_viscous;
+  std::vector<double> joint_coulomb;
+  std::vector<double> joint_stop;        // flexure stop [rad]; <= 0 when none
+  std::vector<double> joint_twist_stop;  // [rad]; <= 0 when none
+  std::vector<std::uint8_t> joint_stop_impulse;
+  std::vector<double> joint_restitution;
+  std::vector<std::uint8_t> joint_locked;  // initial lock mask: bit k locks axis k
+  std::vector<double> joint_lock_below;    // < 0 when none
+  std::vector<double> joint_unlock_above;  // < 0 when none
+
+  std::int32_t nq = 0;  // position coordinates (quaternions count four)
+  std::int32_t nv = 0;  // velocity coordinates (degrees of freedom)
+
+  // --- Initial state, as lowered: generalized positions and velocities.
+  std::vector<double> q0;
+  std::vector<double> v0;
+
+  // --- Vehicles (prescribed motion).
+  std::vector<std::string> vehicle_name;
+  std::vector<VehicleMotion> vehicle_motion;
+  std::vector<Vec3> vehicle_position;     // at t = 0
+  std::vector<Mat3> vehicle_orientation;  // at t = 0, vehicle to world
+  std::vector<Vec3> vehicle_velocity;     // at t = 0
+
+  // --- Functions.
+  FunctionTable functions;
+
+  // --- Spring–dampers and tension elements between two frames.
+  std::vector<std::string> spring_name;
+  std::vector<FrameRef> spring_first;
+  std::vector<FrameRef> spring_second;
+  std::vector<Vec3> spring_point_first;       // in the first frame
+  std::vector<Vec3> spring_point_second;      // in the second frame
+  std::vector<std::int32_t> spring_function;  // elongation -> force; -1: none
+  std::vector<double> spring_damping;
+  std::vector<double> spring_free_length;
+  std::vector<std::uint8_t> spring_tension_only;
+
+  // --- Loop-closing constraints (solved with Lagrange multipliers).
+  enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
+  std::vector<std::string> constraint_name;
+  std::vector<ConstraintKind> constraint_kind;
+  std::vector<FrameRef> constraint_first;
+  std::vector<FrameRef> constraint_second;
+  std::vector<Vec3> constraint_point_first;
+  std::vector<Vec3> constraint_point_second;
+  std::vector<double> constraint_distance;
+  std::vector<Vec3> constraint_axis;
+
+  // --- Run settings.
+  double start_time = 0.0;
+  double end_time = 0.0;
+  double output_every = 0.0;
+  std::string integrator = "exponential";
+  double relative_tolerance = 1e-6;
+  double absolute_tolerance = 1e-9;
+  double min_step = 1e-9;
+  double max_step = 0.0;      // 0: none
+  double initial_step = 0.0;  // 0: automatic
+
+  // --- Output requests, as compiled channel groups.
+  enum class OutputKind : std::uint8_t {
+    kAcceleration,
+    kVelocity,
+    kPosition,
+    kAngularAcceleration,
+    kAngularVelocity,
+    kOrientation,
+    kJointAngle,
+    kJointTorque,
+    kJointForce,
+    kSpringForce,
+  };
+  std::vector<OutputKind> output_kind;
+  std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
+  std::vector<std::int32_t> output_index;  // segment, joint (= child segment) or spring
+  std::vector<Vec3> output_point;          // in the segment frame
+
+  // --- Side table: where each entity was declared.
+  std::vector<SourcePosition> segment_source;
+  std::vector<SourcePosition> joint_source;  // by child segment
+
+  std::size_t nsegment() const { return segment_name.size(); }
+  std::size_t nvehicle() const { return vehicle_name.size(); }
+  std::size_t nspring() const { return spring_name.size(); }
+  std::size_t nconstraint() const { return constraint_name.size(); }
+};
+
+// A stable text form of the model for `sled check --dump-model` and golden tests.
+std::string DumpModel(const Model& model);
+
+}  // namespace sled::runtime

@@ -1,0 +1,71 @@
+// Spatial (6-D) algebra in body coordinates, Featherstone's convention: a motion vector is
+// [angular; linear], a force vector [moment; force], both expressed in a segment's frame with
+// the segment's centre of mass as origin.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace sled::runtime {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+// Up to six columns without heap allocation: a joint's active axes and the small matrices of
+// the articulated-body recursion.
+using MotionSubspace = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+
+inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+// The motion cross product v x m (how a motion vector m changes seen from a frame moving with v).
+inline Vec6 CrossMotion(const Vec6& v, const Vec6& m) {
+  Vec6 out;
+  out.head<3>() = v.head<3>().cross(m.head<3>());
+  out.tail<3>() = v.head<3>().cross(m.tail<3>()) + v.tail<3>().cross(m.head<3>());
+  return out;
+}
+
+// The force cross product v x* f.
+inline Vec6 CrossForce(const Vec6& v, const Vec6& f) {
+  Vec6 out;
+  out.head<3>() = v.head<3>().cross(f.head<3>()) + v.tail<3>().cross(f.tail<3>());
+  out.tail<3>() = v.head<3>().cross(f.tail<3>());
+  return out;
+}
+
+// The transform of motion vectors from a parent frame P to a child frame C, where E rotates
+// parent coordinates into child coordinates (E = R_PC^T) and r is the child origin in parent
+// coordinates: X m = [E w; E (v - r x w)].
+struct Transform {
+  Eigen::Matrix3d E = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+
+  Vec6 ApplyMotion(const Vec6& m) const {
+    Vec6 out;
+    out.head<3>() = E * m.head<3>();
+    out.tail<3>() = E * (m.tail<3>() - r.cross(m.head<3>()));
+    return out;
+  }
+  // X^T f: a force in child coordinates expressed in parent coordinates.
+  Vec6 TransposeApplyForce(const Vec6& f) const {
+    Vec6 out;
+    const Eigen::Vector3d force = E.transpose() * f.tail<3>();
+    out.head<3>() = E.transpose() * f.head<3>() + r.cross(force);
+    out.tail<3>() = force;
+    return out;
+  }
+  Mat6 Matrix() const {
+    Mat6 x = Mat6::Zero();
+    x.topLeftCorner<3, 3>() = E;
+    x.bottomRightCorner<3, 3>() = E;
+    x.bottomLeftCorner<3, 3>() = -E * Skew(r);
+    return x;
+  }
+};
+
+}  // namespace sled::runtime

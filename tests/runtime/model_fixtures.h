@@ -1,0 +1,64 @@
+// Small Models built by hand for the runtime's tests: the runtime is tested without the compiler.
+#pragma once
+
+#include <string>
+
+#include "runtime/data.h"
+
+namespace sled::runtime::testing {
+
+// Appends a segment whose joint attaches it to `parent` (-1: to the ground or `base`).
+inline std::size_t AddSegment(Model& model, std::string name, int parent, JointKind kind,
+                              double mass, const Vec3& principal_inertia,
+                              const Vec3& point_in_parent = Vec3::Zero(),
+                              const Vec3& point_in_child = Vec3::Zero(),
+                              const Vec3& axis = Vec3::UnitY(), FrameRef base = {}) {
+  const std::size_t s = model.segment_name.size();
+  model.segment_name.push_back(std::move(name));
+  model.segment_parent.push_back(parent);
+  model.segment_base.push_back(base);
+  model.segment_mass.push_back(mass);
+  model.segment_inertia.push_back(principal_inertia.asDiagonal());
+  model.joint_kind.push_back(kind);
+  model.joint_name.push_back(parent >= 0 || kind != JointKind::kFree ? "j" + std::to_string(s)
+                                                                     : std::string());
+  const int nq = kind == JointKind::kFree    ? 7
+                 : kind == JointKind::kBall  ? 4
+                 : kind == JointKind::kEuler ? 3
+                                             : 1;
+  const int nv = kind == JointKind::kFree                                ? 6
+                 : kind == JointKind::kBall || kind == JointKind::kEuler ? 3
+                                                                         : 1;
+  model.q_address.push_back(model.nq);
+  model.v_address.push_back(model.nv);
+  model.q_count.push_back(nq);
+  model.v_count.push_back(nv);
+  model.q0.resize(static_cast<std::size_t>(model.nq + nq), 0.0);
+  model.v0.resize(static_cast<std::size_t>(model.nv + nv), 0.0);
+  if (kind == JointKind::kFree || kind == JointKind::kBall) {
+    // Identity quaternion (w first), after the position for a free joint.
+    model.q0[static_cast<std::size_t>(model.nq + (kind == JointKind::kFree ? 3 : 0))] = 1.0;
+  }
+  model.nq += nq;
+  model.nv += nv;
+  model.joint_point_in_parent.push_back(point_in_parent);
+  model.joint_frame_in_parent.push_back(Mat3::Identity());
+  model.joint_point_in_child.push_back(point_in_child);
+  model.joint_frame_in_child.push_back(Mat3::Identity());
+  model.joint_axis.push_back(axis.normalized());
+  model.joint_function.push_back({-1, -1, -1});
+  model.joint_viscous.push_back(0.0);
+  model.joint_coulomb.push_back(0.0);
+  model.joint_stop.push_back(0.0);
+  model.joint_twist_stop.push_back(0.0);
+  model.joint_stop_impulse.push_back(0);
+  model.joint_restitution.push_back(0.0);
+  model.joint_locked.push_back(0);
+  model.joint_lock_below.push_back(-1.0);
+  model.joint_unlock_above.push_back(-1.0);
+  model.segment_source.push_back({});
+  model.joint_source.push_back({});
+  return s;
+}
+
+}  // namespace sled::runtime::testing
