@@ -186,9 +186,11 @@ std::string DumpModel(const Model& m) {
                   m.nsegment(), m.nq, m.nv, m.nvehicle(), m.functions.size(), m.nspring(),
                   m.nconstraint(), m.output_kind.size()));
   for (std::size_t s = 0; s < m.nsegment(); ++s) {
-    line(fmt::format("segment {} {} parent {} mass {} inertia {} source {}", s, m.segment_name[s],
-                     Get(m.segment_parent, s), Get(m.segment_mass, s),
-                     Text(Get(m.segment_inertia, s)), Text(Get(m.segment_source, s))));
+    line(fmt::format("segment {} {} parent {} base {} mass {} inertia {} source {}", s,
+                     m.segment_name[s], Get(m.segment_parent, s),
+                     s < m.segment_base.size() ? Text(m.segment_base[s]) : std::string("-"),
+                     Get(m.segment_mass, s), Text(Get(m.segment_inertia, s)),
+                     Text(Get(m.segment_source, s))));
     const JointKind kind = Get(m.joint_kind, s);
     std::string joint =
         fmt::format("joint {} {} {} q {}+{} v {}+{}", s,

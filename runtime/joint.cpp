@@ -65,7 +65,7 @@ void ComputeJointMotion(const Model& model, std::size_t s, std::span<const doubl
 
   switch (model.joint_kind[s]) {
     case JointKind::kFree: {
-      motion.rotation = QuaternionAt(q, qa).normalized().toRotationMatrix();
+      motion.rotation = QuaternionAt(q, qa + 3).normalized().toRotationMatrix();
       motion.translation = Vec3(q[qa], q[qa + 1], q[qa + 2]);
       motion.subspace.setIdentity();
       return;
@@ -127,7 +127,7 @@ void PositionDerivative(const Model& model, std::span<const double> q, std::span
     const auto va = static_cast<std::size_t>(model.v_address[s]);
     switch (model.joint_kind[s]) {
       case JointKind::kFree: {
-        const Eigen::Quaterniond quaternion = QuaternionAt(q, qa);
+        const Eigen::Quaterniond quaternion = QuaternionAt(q, qa + 3);
         const Vec3 w(v[va], v[va + 1], v[va + 2]);
         const Vec3 velocity_body(v[va + 3], v[va + 4], v[va + 5]);
         const Vec3 velocity_world = quaternion.normalized() * velocity_body;

@@ -19,6 +19,7 @@ packages=(
   libgtest-dev
   libgmock-dev
   libbenchmark-dev
+  libmujoco-dev       # test- and benchmark-only peer (tests/verification, tests/bench)
 )
 
 missing=()

@@ -74,15 +74,19 @@ Mat3 RotationAbout(const Vec3& axis, double angle) {
            {t * x * z - s * y, t * y * z + s * x, t * z * z + c}}};
 }
 
-// The rotation a joint's angles make: about the pin axis for pin and slip joints, and
-// precession about z, nutation about y, spin about z for ball and Euler joints.
+// The rotation a joint's angles make, from the child's joint frame to the parent's (R_J, as the
+// runtime): about the pin axis for pin joints (given in the parent segment, so turned into the
+// joint frame first); none for slip joints, which slide; and precession about z, nutation about
+// the new y, spin about the new x (z-y-x) for ball and Euler joints.
 Mat3 JointRotation(const Joint& joint, const Vec3& angles) {
-  if (joint.type == JointType::kPin || joint.type == JointType::kSlip) {
-    return RotationAbout(joint.axis, angles[0]);
+  if (joint.type == JointType::kSlip) return Mat3{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  if (joint.type == JointType::kPin) {
+    return RotationAbout(
+        ApplyTransposed(RotationFromYawPitchRoll(joint.axes_in_parent), joint.axis), angles[0]);
   }
-  const Vec3 z{0, 0, 1};
-  return Multiply(Multiply(RotationAbout(z, angles[0]), RotationAbout({0, 1, 0}, angles[1])),
-                  RotationAbout(z, angles[2]));
+  return Multiply(
+      Multiply(RotationAbout({0, 0, 1}, angles[0]), RotationAbout({0, 1, 0}, angles[1])),
+      RotationAbout({1, 0, 0}, angles[2]));
 }
 
 }  // namespace

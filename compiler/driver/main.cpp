@@ -13,6 +13,8 @@
 
 #include "compiler/check/check.h"
 #include "compiler/driver/explain_pages.h"
+#include "compiler/driver/run_command.h"
+#include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
 #include "lang/syntax/parser.h"
@@ -32,15 +34,20 @@ commands:
   check FILE...        parse, check and lint scenarios; print diagnostics
   fmt FILE... [--check]
                        rewrite files in canonical form (--check: only report)
+  run FILE [-o DIR]    compile and simulate; write DIR/timeseries.csv and DIR/summary.json
+                       (DIR defaults to FILE's name with `-out`); exit 3 on a numerical
+                       failure, keeping the outputs up to it
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
-options for check:
+options for check and run:
   --diagnostics=rich|compact   diagnostic style (default rich)
   --set NAME=VALUE             override a `param` of the scenario
   --stdlib DIR                 the standard library folder
   --no-lints                   report errors only
   --dump-ast                   print the syntax tree
   --dump-checked               print the checked scenario
+  --dump-model                 print the compiled runtime model (and, on standard error,
+                               what it leaves out)
 )";
 
 struct Options {
@@ -50,8 +57,10 @@ struct Options {
   bool check_only = false;
   bool dump_ast = false;
   bool dump_checked = false;
+  bool dump_model = false;
   bool lints = true;
   std::string stdlib;
+  std::string output_directory;
   std::vector<std::pair<std::string, std::string>> overrides;
 };
 
@@ -110,6 +119,13 @@ int RunCheck(const Options& options) {
       const auto scenario = sled::compiler::Check(sources, ast, check_options);
       if (options.dump_checked && !collector.has_errors()) {
         std::cout << sled::compiler::Dump(scenario);
+      }
+      if (options.dump_model && !collector.has_errors()) {
+        sled::compiler::LowerOptions lower_options;
+        lower_options.diagnostics = &collector;
+        const auto lowered = sled::compiler::Lower(scenario, sources, lower_options);
+        std::cout << sled::runtime::DumpModel(lowered.model);
+        for (const std::string& note : lowered.notes) std::cerr << note << '\n';
       }
     }
     PrintDiagnostics(sources, collector, options.compact);
@@ -199,8 +215,13 @@ int main(int argc, char** argv) {
       options.dump_ast = true;
     } else if (arg == "--dump-checked") {
       options.dump_checked = true;
+    } else if (arg == "--dump-model") {
+      options.dump_model = true;
     } else if (arg == "--no-lints") {
       options.lints = false;
+    } else if (arg == "-o" || arg == "--output") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a folder", arg));
+      options.output_directory = args[++i];
     } else if (arg == "--stdlib" || arg == "--set") {
       if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
       const std::string& value = args[++i];
@@ -223,6 +244,18 @@ int main(int argc, char** argv) {
     if (options.command == "check") return RunCheck(options);
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
+    if (options.command == "run") {
+      if (options.files.size() != 1) return UsageError("`run` takes one scenario file");
+      sled::driver::RunCommandOptions run;
+      run.file = options.files[0];
+      run.output_directory = options.output_directory;
+      run.stdlib = options.stdlib;
+      run.overrides = options.overrides;
+      run.compact_diagnostics = options.compact;
+      run.color = ColorWanted();
+      run.progress = isatty(STDERR_FILENO) != 0;
+      return sled::driver::RunCommand(run);
+    }
   } catch (const std::exception& error) {
     // A programming error, never the user's (the fuzzers look for these): say so plainly, and
     // keep to the documented exit codes rather than crash.

@@ -1,0 +1,122 @@
+#include "compiler/driver/run_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "compiler/check/check.h"
+#include "compiler/lower/lower.h"
+#include "lang/diagnostics/render.h"
+#include "lang/syntax/parser.h"
+#include "runtime/output_writer.h"
+#include "runtime/run.h"
+
+namespace sled::driver {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputErrors = 1;
+constexpr int kExitNumericalFailure = 3;
+
+void PrintDiagnostics(const lang::SourceManager& sources, lang::DiagnosticCollector& collector,
+                      const RunCommandOptions& options) {
+  collector.SortByPosition();
+  for (const auto& diagnostic : collector.diagnostics()) {
+    std::cerr << (options.compact_diagnostics
+                      ? lang::RenderCompact(sources, diagnostic) + "\n"
+                      : lang::RenderRich(sources, diagnostic, {options.color}) + "\n");
+  }
+}
+
+void ShowProgress(double fraction, void* context) {
+  (void)context;
+  std::fprintf(stderr, "\r  simulating: %3d %%", static_cast<int>(fraction * 100 + 0.5));
+  std::fflush(stderr);
+}
+
+}  // namespace
+
+int RunCommand(const RunCommandOptions& options) {
+  lang::SourceManager sources;
+  lang::DiagnosticCollector collector;
+  const auto file = sources.Load(options.file);
+  if (!file) {
+    std::cerr << fmt::format("sled: cannot read `{}`\n", options.file);
+    return kExitInputErrors;
+  }
+  lang::ParseOptions parse_options;
+  parse_options.diagnostics = &collector;
+  const lang::ast::File ast = lang::Parse(sources, *file, parse_options);
+  compiler::CheckOptions check_options;
+  check_options.diagnostics = &collector;
+  check_options.stdlib_root = options.stdlib;
+  check_options.overrides = options.overrides;
+  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+  PrintDiagnostics(sources, collector, options);
+  if (collector.has_errors()) return kExitInputErrors;
+
+  compiler::LowerOptions lower_options;
+  lower_options.diagnostics = &collector;
+  compiler::Lowered lowered = compiler::Lower(scenario, sources, lower_options);
+  for (const std::string& note : lowered.notes) std::cerr << note << '\n';
+
+  std::string directory = options.output_directory;
+  if (directory.empty()) directory = std::filesystem::path(options.file).stem().string() + "-out";
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) {
+    std::cerr << fmt::format("sled: cannot create `{}`: {}\n", directory, error.message());
+    return kExitInputErrors;
+  }
+
+  runtime::Data data = runtime::MakeData(lowered.model);
+  runtime::TimeSeries series;
+  runtime::RunOptions run_options;
+  if (options.progress) run_options.progress = ShowProgress;
+  runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
+  if (options.progress) std::fprintf(stderr, "\r%30s\r", "");
+  // Name the scenario line of the segment or joint that failed.
+  if (summary.failed) {
+    const runtime::Model& model = lowered.model;
+    for (std::size_t s = 0; s < model.nsegment(); ++s) {
+      if (model.segment_name[s] == summary.failure.where) {
+        summary.failure.source = model.segment_source[s];
+      } else if (model.joint_name[s] == summary.failure.where) {
+        summary.failure.source = model.joint_source[s];
+      }
+    }
+  }
+
+  std::string write_error;
+  const std::string csv = (std::filesystem::path(directory) / "timeseries.csv").string();
+  const std::string json = (std::filesystem::path(directory) / "summary.json").string();
+  const bool written =
+      runtime::WriteTimeSeriesCsv(csv, series, &write_error) &&
+      runtime::WriteSummaryJson(json, lowered.model, series, summary, lowered.notes, &write_error);
+  if (!written) {
+    std::cerr << "sled: " << write_error << '\n';
+    return kExitInputErrors;
+  }
+  if (summary.failed) {
+    const runtime::Failure& f = summary.failure;
+    std::cerr << fmt::format(
+        "sled: the simulation failed at t = {:.6g} s{}: {}{}\n  outputs up to the failure are in "
+        "`{}`\n",
+        f.time, f.where.empty() ? "" : fmt::format(" in `{}`", f.where), f.cause,
+        f.source.file.empty()
+            ? ""
+            : fmt::format(" ({}:{}:{})", f.source.file, f.source.line, f.source.column),
+        directory);
+    return kExitNumericalFailure;
+  }
+  std::cerr << fmt::format(
+      "sled: {} rows to `{}` in {:.3f} s ({} steps, {} rejected, {} "
+      "evaluations)\n",
+      series.rows(), directory, summary.wall_seconds, summary.stats.steps, summary.stats.rejected,
+      summary.stats.evaluations);
+  return kExitOk;
+}
+
+}  // namespace sled::driver

@@ -1,0 +1,143 @@
+#include "compiler/lower/lower.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "compiler/lower/lowering.h"
+
+namespace sled::compiler {
+namespace lowering {
+namespace {
+
+std::size_t At(int index, std::size_t size, const char* what) {
+  if (index < 0 || static_cast<std::size_t>(index) >= size) {
+    throw std::logic_error(
+        fmt::format("compiler::Lower: {} index {} out of range (size {})", what, index, size));
+  }
+  return static_cast<std::size_t>(index);
+}
+
+}  // namespace
+
+const Segment& Lowering::segment(int old) const {
+  return scenario_.segments[At(old, scenario_.segments.size(), "segment")];
+}
+
+const Joint& Lowering::joint(int index) const {
+  return scenario_.joints[At(index, scenario_.joints.size(), "joint")];
+}
+
+std::int32_t Lowering::Function(FunctionId id) {
+  if (id < 0) return -1;
+  const std::size_t old = At(id, scenario_.functions.size(), "function");
+  if (function_map_.empty()) function_map_.assign(scenario_.functions.size(), -1);
+  if (function_map_[old] >= 0) return function_map_[old];
+  const compiler::Function& f = scenario_.functions[old];
+  runtime::FunctionTable& table = model_.functions;
+  const auto id_in_model = static_cast<std::int32_t>(table.size());
+  function_map_[old] = id_in_model;
+  table.constant.push_back(f.kind == compiler::Function::Kind::kConstant ? f.constant : 0.0);
+  table.energy_loss.push_back(f.energy_loss);
+  table.permanent_set.push_back(f.permanent_set);
+  switch (f.kind) {
+    case compiler::Function::Kind::kConstant:
+      table.kind.push_back(runtime::FunctionTable::Kind::kConstant);
+      table.first.push_back(-1);
+      table.count.push_back(0);
+      break;
+    case compiler::Function::Kind::kTable:
+      table.kind.push_back(runtime::FunctionTable::Kind::kTable);
+      table.first.push_back(static_cast<std::int32_t>(table.points_x.size()));
+      table.count.push_back(static_cast<std::int32_t>(f.points.size()));
+      for (const auto& [x, y] : f.points) {
+        table.points_x.push_back(x);
+        table.points_y.push_back(y);
+      }
+      break;
+    case compiler::Function::Kind::kPolynomial:
+      table.kind.push_back(runtime::FunctionTable::Kind::kPolynomial);
+      table.first.push_back(static_cast<std::int32_t>(table.coefficients.size()));
+      table.count.push_back(static_cast<std::int32_t>(f.coefficients.size()));
+      table.coefficients.insert(table.coefficients.end(), f.coefficients.begin(),
+                                f.coefficients.end());
+      break;
+  }
+  if (f.unload_slope) {
+    AddNote(f.range,
+            fmt::format("the unloading slope of function {} is not simulated yet; it unloads "
+                        "by its energy loss and permanent set only",
+                        f.name.empty() ? "here" : fmt::format("`{}`", f.name)));
+  }
+  return id_in_model;
+}
+
+runtime::FrameRef Lowering::Frame(const FrameRef& frame) const {
+  switch (frame.kind) {
+    case FrameRef::Kind::kSegment:
+      return {runtime::FrameRef::Kind::kSegment,
+              new_index[At(frame.index, new_index.size(), "segment")]};
+    case FrameRef::Kind::kVehicle:
+      At(frame.index, scenario_.vehicles.size(), "vehicle");
+      return {runtime::FrameRef::Kind::kVehicle, frame.index};
+    case FrameRef::Kind::kGround:
+      break;
+  }
+  return {runtime::FrameRef::Kind::kGround, -1};
+}
+
+runtime::Vec3 Lowering::WorldPoint(const FrameRef& frame, const Vec3& point) const {
+  const Pose pose = poses.Of(frame);
+  return ToEigen(pose.position) + ToEigen(pose.rotation) * ToEigen(point);
+}
+
+runtime::SourcePosition Lowering::Position(const SourceRange& range) const {
+  if (!range.valid()) return {};
+  const lang::SourceBuffer& buffer = sources_.buffer(range.file);
+  const lang::LineColumn at = buffer.Locate(range.begin);
+  return {buffer.path(), at.line, at.column};
+}
+
+void Lowering::AddNote(const SourceRange& range, std::string message) {
+  notes_.push_back({range, std::move(message)});
+}
+
+std::vector<std::string> Lowering::TakeNotes() {
+  std::stable_sort(notes_.begin(), notes_.end(), [](const Note& a, const Note& b) {
+    if (a.range.valid() != b.range.valid()) return a.range.valid();
+    return a.range.valid() && lang::Precedes(a.range, b.range);
+  });
+  std::vector<std::string> out;
+  out.reserve(notes_.size());
+  for (const Note& note : notes_) {
+    if (!note.range.valid()) {
+      out.push_back(fmt::format("note: {}", note.message));
+      continue;
+    }
+    const runtime::SourcePosition at = Position(note.range);
+    out.push_back(fmt::format("{}:{}:{}: note: {}", at.file, at.line, at.column, note.message));
+  }
+  notes_.clear();
+  return out;
+}
+
+}  // namespace lowering
+
+Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
+              const LowerOptions& options) {
+  (void)options;
+  Lowered lowered;
+  lowering::Lowering lowering(scenario, sources, lowered.model);
+  lowered.model.title = scenario.title;
+  lowering.poses = ComputeInitialPoses(scenario);
+  lowering::LowerTree(lowering);
+  lowering::LowerScene(lowering);
+  lowering::LowerInitialState(lowering);
+  lowering::NoteLeftOut(lowering);
+  lowered.notes = lowering.TakeNotes();
+  return lowered;
+}
+
+}  // namespace sled::compiler

@@ -1,0 +1,293 @@
+// Vehicles, spring–dampers, constraints, run settings and output requests; and the notes for
+// the features the Model does not hold yet.
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "compiler/check/schema.h"
+#include "compiler/lower/lowering.h"
+
+namespace sled::compiler::lowering {
+namespace {
+
+using runtime::Model;
+
+runtime::VehicleMotion LowerMotion(const Motion& motion) {
+  runtime::VehicleMotion out;
+  switch (motion.kind) {
+    case Motion::Kind::kNone:
+      out.kind = runtime::VehicleMotion::Kind::kNone;
+      break;
+    case Motion::Kind::kHalfSine:
+      out.kind = runtime::VehicleMotion::Kind::kHalfSine;
+      break;
+    case Motion::Kind::kTrapezoid:
+      out.kind = runtime::VehicleMotion::Kind::kTrapezoid;
+      break;
+    case Motion::Kind::kTable:
+      out.kind = runtime::VehicleMotion::Kind::kTable;
+      break;
+    case Motion::Kind::kSixDof:
+      out.kind = runtime::VehicleMotion::Kind::kSixDof;
+      break;
+  }
+  out.axis = ToEigen(motion.axis);
+  out.start = motion.start;
+  out.delta_v = motion.delta_v;
+  out.duration = motion.duration;
+  out.peak = motion.peak;
+  out.rise = motion.rise;
+  out.dwell = motion.dwell;
+  out.fall = motion.fall;
+  out.table = motion.table;
+  out.six_dof = motion.six_dof;
+  return out;
+}
+
+void LowerVehicles(Lowering& lowering) {
+  const CheckedScenario& scenario = lowering.scenario();
+  Model& model = lowering.model();
+  for (const Vehicle& vehicle : scenario.vehicles) {
+    model.vehicle_name.push_back(vehicle.name);
+    model.vehicle_motion.push_back(LowerMotion(vehicle.motion));
+    model.vehicle_position.push_back(ToEigen(vehicle.position));
+    model.vehicle_orientation.push_back(RotationMatrix(vehicle.orientation));
+    model.vehicle_velocity.push_back(ToEigen(vehicle.velocity));
+  }
+  for (const InitialCondition& initial : scenario.initial_conditions) {
+    if (initial.kind != InitialCondition::Kind::kVehicle) continue;
+    const auto v = static_cast<std::size_t>(initial.index);
+    if (initial.position) model.vehicle_position.at(v) = ToEigen(*initial.position);
+    if (initial.orientation) model.vehicle_orientation.at(v) = RotationMatrix(*initial.orientation);
+    if (initial.velocity) model.vehicle_velocity.at(v) = ToEigen(*initial.velocity);
+    if (initial.angular_velocity) {
+      lowering.AddNote(initial.range,
+                       fmt::format("the initial angular velocity of vehicle `{}` is left out: "
+                                   "vehicles turn only by a `six_dof` motion",
+                                   model.vehicle_name[v]));
+    }
+  }
+}
+
+void LowerSprings(Lowering& lowering) {
+  Model& model = lowering.model();
+  for (const SpringDamper& spring : lowering.scenario().springs) {
+    model.spring_name.push_back(spring.name);
+    model.spring_first.push_back(lowering.Frame(spring.first));
+    model.spring_second.push_back(lowering.Frame(spring.second));
+    model.spring_point_first.push_back(ToEigen(spring.point_in_first));
+    model.spring_point_second.push_back(ToEigen(spring.point_in_second));
+    model.spring_function.push_back(lowering.Function(spring.stiffness));
+    model.spring_damping.push_back(spring.damping);
+    model.spring_free_length.push_back(
+        spring.free_length ? *spring.free_length
+                           : (lowering.WorldPoint(spring.first, spring.point_in_first) -
+                              lowering.WorldPoint(spring.second, spring.point_in_second))
+                                 .norm());
+    model.spring_tension_only.push_back(spring.tension_only ? 1 : 0);
+  }
+}
+
+void LowerConstraints(Lowering& lowering) {
+  Model& model = lowering.model();
+  for (std::size_t c = 0; c < lowering.scenario().constraints.size(); ++c) {
+    // A constraint that became a root's joint to its base is no loop.
+    if (lowering.constraint_is_base_joint[c]) continue;
+    const Constraint& constraint = lowering.scenario().constraints[c];
+    model.constraint_name.push_back(constraint.name);
+    switch (constraint.kind) {
+      case Constraint::Kind::kFixedPoint:
+        model.constraint_kind.push_back(Model::ConstraintKind::kFixedPoint);
+        break;
+      case Constraint::Kind::kFixedDistance:
+        model.constraint_kind.push_back(Model::ConstraintKind::kFixedDistance);
+        break;
+      case Constraint::Kind::kRolling:
+        model.constraint_kind.push_back(Model::ConstraintKind::kRolling);
+        break;
+      case Constraint::Kind::kSliding:
+        model.constraint_kind.push_back(Model::ConstraintKind::kSliding);
+        break;
+    }
+    model.constraint_first.push_back(lowering.Frame(constraint.first));
+    model.constraint_second.push_back(lowering.Frame(constraint.second));
+    model.constraint_point_first.push_back(ToEigen(constraint.point_in_first));
+    model.constraint_point_second.push_back(ToEigen(constraint.point_in_second));
+    double distance = constraint.distance.value_or(0.0);
+    if (constraint.kind == Constraint::Kind::kFixedDistance && !constraint.distance) {
+      distance = (lowering.WorldPoint(constraint.first, constraint.point_in_first) -
+                  lowering.WorldPoint(constraint.second, constraint.point_in_second))
+                     .norm();
+    }
+    model.constraint_distance.push_back(distance);
+    model.constraint_axis.push_back(ToEigen(constraint.axis));
+  }
+}
+
+void LowerRunSettings(Lowering& lowering) {
+  const RunSettings& run = lowering.scenario().run;
+  Model& model = lowering.model();
+  model.gravity = ToEigen(run.gravity);
+  model.start_time = run.start;
+  model.end_time = run.end;
+  model.output_every = run.output_every;
+  switch (run.method) {
+    case IntegratorMethod::kExponential:
+      model.integrator = "exponential";
+      break;
+    case IntegratorMethod::kDormandPrince:
+      model.integrator = "dopri5";
+      break;
+    case IntegratorMethod::kRosenbrock:
+      model.integrator = "rosenbrock";
+      break;
+  }
+  model.relative_tolerance = run.relative_tolerance;
+  model.absolute_tolerance = run.absolute_tolerance;
+  model.min_step = run.min_step;
+  model.max_step = run.max_step.value_or(0.0);
+  model.initial_step = run.initial_step.value_or(0.0);
+}
+
+std::string_view OutputKeyword(OutputRequest::Kind kind) {
+  return AllOutputSpecs().at(static_cast<std::size_t>(kind)).keyword;
+}
+
+void LowerOutputs(Lowering& lowering) {
+  Model& model = lowering.model();
+  for (const OutputRequest& output : lowering.scenario().outputs) {
+    Model::OutputKind kind{};
+    std::int32_t index = -1;
+    using Kind = OutputRequest::Kind;
+    switch (output.kind) {
+      case Kind::kAcceleration:
+      case Kind::kVelocity:
+      case Kind::kPosition:
+      case Kind::kAngularAcceleration:
+      case Kind::kAngularVelocity:
+      case Kind::kOrientation: {
+        static constexpr Model::OutputKind kSegmentKinds[] = {
+            Model::OutputKind::kAcceleration,    Model::OutputKind::kVelocity,
+            Model::OutputKind::kPosition,        Model::OutputKind::kAngularAcceleration,
+            Model::OutputKind::kAngularVelocity, Model::OutputKind::kOrientation};
+        kind = kSegmentKinds[static_cast<int>(output.kind) - static_cast<int>(Kind::kAcceleration)];
+        lowering.segment(output.index);
+        index = lowering.new_index[static_cast<std::size_t>(output.index)];
+        break;
+      }
+      case Kind::kJointAngle:
+      case Kind::kJointTorque:
+      case Kind::kJointForce: {
+        kind = output.kind == Kind::kJointAngle    ? Model::OutputKind::kJointAngle
+               : output.kind == Kind::kJointTorque ? Model::OutputKind::kJointTorque
+                                                   : Model::OutputKind::kJointForce;
+        const Joint& joint = lowering.joint(output.index);
+        if (joint.type == JointType::kNull) {
+          lowering.AddNote(output.range,
+                           fmt::format("`{} {}` is left out: `{}` is a null joint, which "
+                                       "transmits no force",
+                                       OutputKeyword(output.kind), output.label, joint.name));
+          continue;
+        }
+        lowering.segment(joint.child);
+        index = lowering.new_index[static_cast<std::size_t>(joint.child)];
+        break;
+      }
+      case Kind::kSpringForce:
+        kind = Model::OutputKind::kSpringForce;
+        index = output.index;
+        if (index < 0 || static_cast<std::size_t>(index) >= model.nspring()) {
+          throw std::logic_error(fmt::format("compiler::Lower: output `{}` names spring {} of {}",
+                                             output.label, index, model.nspring()));
+        }
+        break;
+      case Kind::kContactForce:
+      case Kind::kBeltForce:
+      case Kind::kAirbagPressure:
+        lowering.AddNote(output.range,
+                         fmt::format("output `{} {}` is left out: {} are not simulated yet",
+                                     OutputKeyword(output.kind), output.label,
+                                     output.kind == Kind::kContactForce ? "contacts"
+                                     : output.kind == Kind::kBeltForce  ? "belts"
+                                                                        : "airbags"));
+        continue;
+    }
+    model.output_kind.push_back(kind);
+    model.output_label.push_back(output.label);
+    model.output_index.push_back(index);
+    model.output_point.push_back(ToEigen(output.point));
+  }
+}
+
+// A contact side by name (segment ellipsoids are named after their segment: occupant.pelvis).
+std::string SurfaceName(const CheckedScenario& scenario, const SurfaceRef& surface) {
+  return surface.kind == SurfaceRef::Kind::kPlane
+             ? scenario.planes.at(static_cast<std::size_t>(surface.index)).name
+             : scenario.ellipsoids.at(static_cast<std::size_t>(surface.index)).name;
+}
+
+}  // namespace
+
+void LowerScene(Lowering& lowering) {
+  LowerVehicles(lowering);
+  LowerSprings(lowering);
+  LowerConstraints(lowering);
+  LowerRunSettings(lowering);
+  LowerOutputs(lowering);
+}
+
+void NoteLeftOut(Lowering& lowering) {
+  const CheckedScenario& scenario = lowering.scenario();
+  for (const Contact& contact : scenario.contacts) {
+    lowering.AddNote(
+        contact.range,
+        fmt::format("contact between `{}` and `{}` is not simulated yet; left out",
+                    SurfaceName(scenario, contact.first), SurfaceName(scenario, contact.second)));
+  }
+  for (const Harness& harness : scenario.harnesses) {
+    lowering.AddNote(harness.range,
+                     fmt::format("harness `{}` is not simulated yet; left out", harness.name));
+  }
+  for (const Belt& belt : scenario.belts) {
+    if (belt.harness >= 0) continue;  // in its harness's note
+    lowering.AddNote(belt.range,
+                     fmt::format("belt `{}` is not simulated yet; left out", belt.name));
+  }
+  for (const Airbag& airbag : scenario.airbags) {
+    lowering.AddNote(airbag.range,
+                     fmt::format("airbag `{}` is not simulated yet; left out", airbag.name));
+  }
+  for (const Criterion& criterion : scenario.criteria) {
+    const std::string_view name =
+        AllCriterionSpecs().at(static_cast<std::size_t>(criterion.kind)).name;
+    const std::string& target =
+        criterion.segment >= 0
+            ? scenario.segments.at(static_cast<std::size_t>(criterion.segment)).name
+            : scenario.joints.at(static_cast<std::size_t>(criterion.joint)).name;
+    lowering.AddNote(
+        criterion.range,
+        fmt::format("injury criterion `{}({})` is not computed yet; left out", name, target));
+  }
+  const RunSettings& run = scenario.run;
+  if (run.symmetry != Symmetry::kNone) {
+    lowering.AddNote({}, fmt::format("{} symmetry is not applied yet: every segment keeps all "
+                                     "its degrees of freedom",
+                                     run.symmetry == Symmetry::kPlanar ? "planar" : "mirror"));
+  }
+  if (run.settle_duration) {
+    lowering.AddNote({},
+                     "equilibrium settling is not simulated yet; the run starts from the "
+                     "initial conditions as given");
+  }
+  if (run.checkpoint_every) {
+    lowering.AddNote({}, "checkpoints are not written yet; left out");
+  }
+  if (!run.resume_from.empty()) {
+    lowering.AddNote({}, fmt::format("restart from `{}` is not supported yet; the run starts "
+                                     "from the initial conditions",
+                                     run.resume_from));
+  }
+}
+
+}  // namespace sled::compiler::lowering

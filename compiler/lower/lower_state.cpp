@@ -1,0 +1,252 @@
+// The initial state q0, v0. Reference segments take their position, orientation and velocities
+// from `initial` (of the body, for its first reference segment, or of the segment); joints take
+// their angles. A segment that hangs from a joint may be given an angular velocity: the joint's
+// rates are chosen to give it, as far as the joint's free axes allow.
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <fmt/format.h>
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+
+#include "compiler/lower/lowering.h"
+
+namespace sled::compiler::lowering {
+namespace {
+
+using runtime::JointKind;
+
+struct Given {
+  std::optional<Vec3> value;
+  SourceRange range;
+  void Set(const std::optional<Vec3>& v, const SourceRange& r) {
+    if (!v) return;
+    value = v;
+    range = r;
+  }
+};
+
+// The initial conditions of one segment, merged in declaration order (later ones win).
+struct SegmentStart {
+  Given position;
+  Given orientation;
+  Given velocity;
+  Given angular_velocity;
+};
+
+// Rz(a0) Ry(a1) Rx(a2) as a quaternion with w >= 0: yaw, pitch, roll for orientations and
+// precession, nutation, spin for ball joints.
+Eigen::Quaterniond QuaternionZyx(const Vec3& a) {
+  Eigen::Quaterniond q = Eigen::AngleAxisd(a[0], Eigen::Vector3d::UnitZ()) *
+                         Eigen::AngleAxisd(a[1], Eigen::Vector3d::UnitY()) *
+                         Eigen::AngleAxisd(a[2], Eigen::Vector3d::UnitX());
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
+  return q;
+}
+
+// Columns: the child joint frame's angular velocity per unit precession, nutation and spin rate
+// (the runtime's EulerRates for R_J = Rz(precession) Ry(nutation) Rx(spin)).
+runtime::Mat3 EulerRates(double nutation, double spin) {
+  const double sn = std::sin(nutation), cn = std::cos(nutation);
+  const double ss = std::sin(spin), cs = std::cos(spin);
+  runtime::Mat3 rates;
+  rates.col(0) << -sn, ss * cn, cs * cn;
+  rates.col(1) << 0, cs, -ss;
+  rates.col(2) << 1, 0, 0;
+  return rates;
+}
+
+void PutQuaternion(std::vector<double>& q, std::size_t at, const Eigen::Quaterniond& quaternion) {
+  q[at] = quaternion.w();
+  q[at + 1] = quaternion.x();
+  q[at + 2] = quaternion.y();
+  q[at + 3] = quaternion.z();
+}
+
+const char* KindName(JointKind kind) {
+  switch (kind) {
+    case JointKind::kBall:
+      return "ball";
+    case JointKind::kPin:
+      return "pin";
+    case JointKind::kSlip:
+      return "slip";
+    case JointKind::kEuler:
+      return "euler";
+    case JointKind::kFree:
+      break;
+  }
+  return "free";
+}
+
+}  // namespace
+
+void LowerInitialState(Lowering& lowering) {
+  const CheckedScenario& scenario = lowering.scenario();
+  runtime::Model& model = lowering.model();
+  std::vector<SegmentStart> starts(scenario.segments.size());
+  std::vector<std::optional<Vec3>> angles(scenario.joints.size());
+  for (const InitialCondition& initial : scenario.initial_conditions) {
+    int target = -1;
+    switch (initial.kind) {
+      case InitialCondition::Kind::kBody: {
+        const Body& body = scenario.bodies.at(static_cast<std::size_t>(initial.index));
+        if (!body.reference_segments.empty()) target = body.reference_segments.front();
+        break;
+      }
+      case InitialCondition::Kind::kSegment:
+        target = initial.index;
+        break;
+      case InitialCondition::Kind::kJoint: {
+        const Joint& joint = lowering.joint(initial.index);
+        if (!initial.joint_angles) break;
+        if (joint.type == JointType::kNull) {
+          lowering.AddNote(
+              initial.range,
+              fmt::format("`{}` is a null joint: it has no angles; left out", joint.name));
+          break;
+        }
+        angles[static_cast<std::size_t>(initial.index)] = initial.joint_angles;
+        break;
+      }
+      case InitialCondition::Kind::kVehicle:
+        break;  // LowerScene
+    }
+    if (target < 0) continue;
+    SegmentStart& start = starts[static_cast<std::size_t>(target)];
+    lowering.segment(target);
+    start.position.Set(initial.position, initial.range);
+    start.orientation.Set(initial.orientation, initial.range);
+    start.velocity.Set(initial.velocity, initial.range);
+    start.angular_velocity.Set(initial.angular_velocity, initial.range);
+  }
+
+  model.q0.assign(static_cast<std::size_t>(model.nq), 0.0);
+  model.v0.assign(static_cast<std::size_t>(model.nv), 0.0);
+  // Angular velocity of each segment in the world frame, to give a child's relative rate.
+  std::vector<runtime::Vec3> w_world(model.nsegment(), runtime::Vec3::Zero());
+  for (std::size_t s = 0; s < model.nsegment(); ++s) {
+    const int old = lowering.old_index[s];
+    const SegmentStart& start = starts[static_cast<std::size_t>(old)];
+    const auto qa = static_cast<std::size_t>(model.q_address[s]);
+    const auto va = static_cast<std::size_t>(model.v_address[s]);
+    const JointKind kind = model.joint_kind[s];
+    if (kind == JointKind::kFree) {
+      const Vec3 p = start.position.value.value_or(Vec3{});
+      const Eigen::Quaterniond quaternion = QuaternionZyx(start.orientation.value.value_or(Vec3{}));
+      for (std::size_t k = 0; k < 3; ++k) model.q0[qa + k] = p[k];
+      PutQuaternion(model.q0, qa + 3, quaternion);
+      // Given in the world frame; the state holds them in the segment frame.
+      const runtime::Mat3 r_ws = quaternion.toRotationMatrix();
+      w_world[s] = ToEigen(start.angular_velocity.value.value_or(Vec3{}));
+      const runtime::Vec3 w_s = r_ws.transpose() * w_world[s];
+      const runtime::Vec3 v_s = r_ws.transpose() * ToEigen(start.velocity.value.value_or(Vec3{}));
+      for (std::size_t k = 0; k < 3; ++k) {
+        model.v0[va + k] = w_s[k];
+        model.v0[va + 3 + k] = v_s[k];
+      }
+      continue;
+    }
+
+    if (lowering.joint_above[s] < 0) {
+      // A root held at a base point by a ball joint: its orientation relative to the base.
+      const runtime::Mat3 r_ws =
+          QuaternionZyx(start.orientation.value.value_or(Vec3{})).toRotationMatrix();
+      const runtime::FrameRef& base = model.segment_base[s];
+      const runtime::Mat3 r_wb =
+          base.kind == runtime::FrameRef::Kind::kVehicle
+              ? model.vehicle_orientation[static_cast<std::size_t>(base.index)]
+              : runtime::Mat3::Identity();
+      const Eigen::Quaterniond relative(r_wb.transpose() * r_ws);
+      PutQuaternion(model.q0, qa,
+                    relative.w() < 0 ? Eigen::Quaterniond(-relative.coeffs()) : relative);
+      w_world[s] = ToEigen(start.angular_velocity.value.value_or(Vec3{}));
+      const runtime::Vec3 w_s = r_ws.transpose() * w_world[s];
+      for (std::size_t k = 0; k < 3; ++k) model.v0[va + k] = w_s[k];
+      continue;
+    }
+    const int j = lowering.joint_above[s];
+    const Joint& joint = lowering.joint(j);
+    const Vec3 a = angles[static_cast<std::size_t>(j)].value_or(Vec3{});
+    switch (kind) {
+      case JointKind::kBall:
+        PutQuaternion(model.q0, qa, QuaternionZyx(a));
+        break;
+      case JointKind::kEuler:
+        for (std::size_t k = 0; k < 3; ++k) model.q0[qa + k] = a[k];
+        break;
+      case JointKind::kPin:
+      case JointKind::kSlip:
+        model.q0[qa] = a[0];
+        break;
+      case JointKind::kFree:
+        break;
+    }
+
+    const std::string& name = model.segment_name[s];
+    auto left_out = [&](const Given& given, const char* what, const char* instead) {
+      if (!given.value) return;
+      lowering.AddNote(given.range,
+                       fmt::format("the initial {} of `{}` is left out: it hangs from joint "
+                                   "`{}`, so {}",
+                                   what, name, joint.name, instead));
+    };
+    left_out(start.position, "position", "the joint's `angles` place it");
+    left_out(start.orientation, "orientation", "the joint's `angles` turn it");
+    left_out(start.velocity, "velocity", "it moves with its reference segment");
+
+    // The joint's velocity columns: the segment's angular velocity relative to its parent, in
+    // the segment frame, per unit rate of each free axis.
+    const std::uint8_t locked = model.joint_locked[s];
+    const runtime::Mat3& frame_in_child = model.joint_frame_in_child[s];
+    Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> columns(3, 0);
+    std::vector<int> axes;
+    if (kind == JointKind::kBall && locked == 0) {
+      columns = runtime::Mat3::Identity();
+      axes = {0, 1, 2};
+    } else if (kind == JointKind::kPin && locked == 0) {
+      columns = frame_in_child * model.joint_axis[s];
+      axes = {0};
+    } else if (kind == JointKind::kEuler) {
+      const runtime::Mat3 rates = frame_in_child * EulerRates(a[1], a[2]);
+      for (int k = 0; k < 3; ++k) {
+        if (locked & (1u << k)) continue;
+        columns.conservativeResize(3, columns.cols() + 1);
+        columns.col(columns.cols() - 1) = rates.col(k);
+        axes.push_back(k);
+      }
+    }
+    const int parent = model.segment_parent[s];
+    const runtime::Mat3 r_ws =
+        ToEigen(lowering.poses.segments[static_cast<std::size_t>(old)].rotation);
+    if (start.angular_velocity.value) {
+      const runtime::Vec3 target = ToEigen(*start.angular_velocity.value);
+      const runtime::Vec3 w_relative =
+          r_ws.transpose() * (target - w_world[static_cast<std::size_t>(parent)]);
+      Eigen::VectorXd rates = Eigen::VectorXd::Zero(columns.cols());
+      if (columns.cols() > 0) rates = columns.colPivHouseholderQr().solve(w_relative);
+      for (std::size_t k = 0; k < axes.size(); ++k) {
+        model.v0[va + static_cast<std::size_t>(axes[k])] = rates[static_cast<Eigen::Index>(k)];
+      }
+      const double miss = (columns * rates - w_relative).norm();
+      if (!(miss <= 1e-9 * std::max(1.0, w_relative.norm()))) {
+        lowering.AddNote(
+            start.angular_velocity.range,
+            fmt::format("the initial angular velocity of `{}` is matched only in part: it "
+                        "hangs from {} joint `{}`{}, which cannot turn it that way relative to "
+                        "`{}`",
+                        name, KindName(kind), joint.name, locked != 0 ? " (locked)" : "",
+                        model.segment_name[static_cast<std::size_t>(parent)]));
+      }
+    }
+    runtime::Vec3 w_relative = runtime::Vec3::Zero();
+    for (std::size_t k = 0; k < axes.size(); ++k) {
+      w_relative += columns.col(static_cast<Eigen::Index>(k)) *
+                    model.v0[va + static_cast<std::size_t>(axes[k])];
+    }
+    w_world[s] = w_world[static_cast<std::size_t>(parent)] + r_ws * w_relative;
+  }
+}
+
+}  // namespace sled::compiler::lowering

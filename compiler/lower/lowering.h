@@ -1,0 +1,88 @@
+// The shared state of one compiler::Lower call, and the steps that fill the Model. Internal to
+// compiler/lower/.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "compiler/check/checked_scenario.h"
+#include "compiler/check/initial_pose.h"
+#include "lang/source/source_manager.h"
+#include "runtime/model.h"
+
+namespace sled::compiler::lowering {
+
+// Conversions between the checker's arrays and the runtime's Eigen types.
+inline runtime::Vec3 ToEigen(const Vec3& v) { return {v[0], v[1], v[2]}; }
+inline runtime::Mat3 ToEigen(const Mat3& rows) {
+  runtime::Mat3 m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m(i, j) = rows[i][j];
+  }
+  return m;
+}
+inline runtime::Mat3 RotationMatrix(const Vec3& yaw_pitch_roll) {
+  return ToEigen(RotationFromYawPitchRoll(yaw_pitch_roll));
+}
+
+struct Note {
+  SourceRange range;  // invalid: about the scenario as a whole
+  std::string message;
+};
+
+class Lowering {
+ public:
+  Lowering(const CheckedScenario& scenario, const lang::SourceManager& sources,
+           runtime::Model& model)
+      : scenario_(scenario), sources_(sources), model_(model) {}
+
+  const CheckedScenario& scenario() const { return scenario_; }
+  runtime::Model& model() { return model_; }
+
+  // Segment indices: checked scenario to Model (tree order) and back.
+  std::vector<int> new_index;
+  std::vector<int> old_index;
+  // By Model segment: the checked joint above it, -1 for a root (a null joint's child included).
+  std::vector<int> joint_above;
+  // By Model segment: for a root held at a point of the ground or a vehicle by a fixed-point
+  // constraint, that constraint (it becomes the root's ball joint to its base); -1 otherwise.
+  std::vector<int> base_constraint;
+  // By checked constraint: true when it became a base joint and is no loop constraint.
+  std::vector<bool> constraint_is_base_joint;
+  // Poses at t = 0 in the checked scenario's segment order.
+  InitialPoses poses;
+
+  // The Model's id of a checked function, copying it into the table on first use; -1 for -1.
+  std::int32_t Function(FunctionId id);
+  runtime::FrameRef Frame(const FrameRef& frame) const;
+  // A point given in a frame, in world coordinates at t = 0.
+  runtime::Vec3 WorldPoint(const FrameRef& frame, const Vec3& point) const;
+  runtime::SourcePosition Position(const SourceRange& range) const;
+  const Segment& segment(int old) const;
+  const Joint& joint(int index) const;
+
+  void AddNote(const SourceRange& range, std::string message);
+  // The notes in source order (those without a position last), formatted.
+  std::vector<std::string> TakeNotes();
+
+ private:
+  const CheckedScenario& scenario_;
+  const lang::SourceManager& sources_;
+  runtime::Model& model_;
+  std::vector<std::int32_t> function_map_;
+  std::vector<Note> notes_;
+};
+
+// Segments in tree order, their inertia, the joints above them and their coordinates.
+void LowerTree(Lowering& lowering);
+// q0 and v0 from the initial conditions (after LowerTree).
+void LowerInitialState(Lowering& lowering);
+// Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).
+void LowerScene(Lowering& lowering);
+// Notes for the features the Model does not hold yet.
+void NoteLeftOut(Lowering& lowering);
+
+}  // namespace sled::compiler::lowering

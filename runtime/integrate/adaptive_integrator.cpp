@@ -1,0 +1,298 @@
+#include "runtime/integrate/adaptive_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace sled::runtime {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+bool AllFinite(std::span<const double> values) {
+  for (const double value : values) {
+    if (!std::isfinite(value)) return false;
+  }
+  return true;
+}
+
+// Stretch the step by up to 1% to land on the target rather than leave a sliver (dopri5.f).
+constexpr double kLandingStretch = 1.01;
+
+// Look-ahead for settling event signs after an event, in event tolerances: large enough that a
+// handler that reverses and scales a velocity by a restitution of 0.1 or more has moved the
+// state back over the surface (see EventLocator::Start).
+constexpr double kLookAheadTolerances = 10.0;
+
+}  // namespace
+
+void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const double> y0,
+                               const IntegratorOptions& options) {
+  const std::size_t n = system.size();
+  if (y0.size() != n) {
+    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
+                                ": Reset with " + std::to_string(y0.size()) +
+                                " initial values for a system of size " + std::to_string(n));
+  }
+  if (!(options.relative_tolerance >= 0.0) || !(options.absolute_tolerance >= 0.0) ||
+      options.relative_tolerance + options.absolute_tolerance <= 0.0) {
+    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
+                                ": tolerances must be non-negative and not both zero");
+  }
+  if (!(options.min_step >= 0.0) || !(options.max_step >= 0.0) ||
+      (options.max_step > 0.0 && options.max_step < options.min_step)) {
+    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
+                                ": need 0 <= min_step <= max_step (max_step 0: no limit)");
+  }
+  system_ = &system;
+  options_ = options;
+  stats_ = {};
+  t_ = t0;
+  step_ = 0.0;
+  h_ = 0.0;
+  y_.assign(y0.begin(), y0.end());
+  f0_.assign(n, 0.0);
+  y1_.assign(n, 0.0);
+  f1_.assign(n, 0.0);
+  y_event_.assign(n, 0.0);
+  y_project_.assign(n, 0.0);
+  controller_.Configure(ErrorPower());
+  events_.Reset(system);
+  ResizeWorkspace(n);
+  restart_pending_ = true;
+}
+
+std::span<double> AdaptiveIntegrator::mutable_state() {
+  restart_pending_ = true;
+  return y_;
+}
+
+AdvanceResult AdaptiveIntegrator::Advance(double t_end) { return Run(t_end, 0.0); }
+
+AdvanceResult AdaptiveIntegrator::AdvanceFixed(double t_end, long steps) {
+  if (steps <= 0) {
+    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
+                                ": AdvanceFixed needs a positive number of steps");
+  }
+  return Run(t_end, (t_end - t_) / static_cast<double>(steps));
+}
+
+bool AdaptiveIntegrator::Evaluate(double t, std::span<const double> y, std::span<double> dy) {
+  ++stats_.evaluations;
+  return system_->Derivative(t, y, dy);
+}
+
+void AdaptiveIntegrator::Interpolate(double t, std::span<double> y) const {
+  const double theta = step_ != 0.0 ? (t - t_) / step_ : 0.0;
+  HermiteInterpolate(theta, step_, y_, f0_, y1_, f1_, y);
+}
+
+double AdaptiveIntegrator::MaxStep() const {
+  return options_.max_step > 0.0 ? options_.max_step : std::numeric_limits<double>::infinity();
+}
+
+double AdaptiveIntegrator::MinStep() const {
+  // With min_step 0 the floor is what time can still resolve, so repeated rejections end.
+  return std::max(
+      {options_.min_step, 4.0 * kEps * std::abs(t_), std::numeric_limits<double>::min()});
+}
+
+double AdaptiveIntegrator::ClampStep(double h) const {
+  return std::max(std::min(h, MaxStep()), MinStep());
+}
+
+double AdaptiveIntegrator::EventTolerance() const {
+  return std::max(options_.event_tolerance, 4.0 * kEps * std::abs(t_));
+}
+
+double AdaptiveIntegrator::InitialStep() {
+  // dopri5.f HINIT: a step whose Euler increment is 1% of the state, then refined by a second
+  // derivative estimate so that h^order * max(|f|, |f'|) is about 0.01 in the weighted norm.
+  const std::size_t n = y_.size();
+  const double rtol = options_.relative_tolerance;
+  const double atol = options_.absolute_tolerance;
+  double dnf = 0.0;
+  double dny = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double weight = atol + rtol * std::abs(y_[i]);
+    dnf += (f0_[i] / weight) * (f0_[i] / weight);
+    dny += (y_[i] / weight) * (y_[i] / weight);
+  }
+  double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : std::sqrt(dny / dnf) * 0.01;
+  h = std::min(h, MaxStep());
+  // y1_ and f1_ are free between steps: use them for the trial Euler step.
+  for (std::size_t i = 0; i < n; ++i) y1_[i] = y_[i] + h * f0_[i];
+  if (!Evaluate(t_ + h, y1_, f1_) || !AllFinite(f1_)) return h;
+  double der2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double weight = atol + rtol * std::abs(y_[i]);
+    const double scaled = (f1_[i] - f0_[i]) / weight;
+    der2 += scaled * scaled;
+  }
+  der2 = std::sqrt(der2) / h;
+  const double der12 = std::max(der2, std::sqrt(dnf));
+  const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3)
+                                   : std::pow(0.01 / der12, 1.0 / static_cast<double>(order()));
+  return std::min({100.0 * h, h1, MaxStep()});
+}
+
+bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
+  result->t = t_;
+  if (!AllFinite(y_)) {
+    result->status = IntegratorStatus::kNotFinite;
+    result->reason = "the state is not finite";
+    return false;
+  }
+  if (!Evaluate(t_, y_, f0_)) {
+    result->status = IntegratorStatus::kEvaluationFailed;
+    result->reason = system_->FailureReason();
+    return false;
+  }
+  if (!AllFinite(f0_)) {
+    result->status = IntegratorStatus::kNotFinite;
+    result->reason = "the derivative is not finite at the start";
+    return false;
+  }
+  controller_.Restart();
+  RestartHistory();
+  if (events_.active()) {
+    events_.Start(t_, y_, f0_, kLookAheadTolerances * EventTolerance(), y_event_);
+  }
+  if (!fixed) {
+    h_ = ClampStep(options_.initial_step > 0.0 ? options_.initial_step : InitialStep());
+  }
+  restart_pending_ = false;
+  return true;
+}
+
+AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) {
+  // Only failure reports build strings; the step loop itself never allocates.
+  AdvanceResult result;
+  result.t = t_;
+  switch (failure) {
+    case Failure::kEvaluation:
+      result.status = IntegratorStatus::kEvaluationFailed;
+      result.reason = system_->FailureReason();
+      if (result.reason.empty()) result.reason = "the derivative could not be evaluated";
+      break;
+    case Failure::kNotFinite:
+      result.status = IntegratorStatus::kNotFinite;
+      result.reason = "the state or its derivative became NaN or infinite";
+      break;
+    case Failure::kErrorTest:
+    case Failure::kNone:
+      result.status = IntegratorStatus::kMinStepReached;
+      result.reason = fmt::format(
+          "the error test failed at the minimum step (step {:.3g}, weighted error {:.3g})", h,
+          error);
+      break;
+  }
+  return result;
+}
+
+AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
+  if (system_ == nullptr) {
+    throw std::logic_error("sled::runtime integrator " + std::string(name()) +
+                           ": Advance before Reset");
+  }
+  if (t_end < t_) {
+    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
+                                ": Advance to " + std::to_string(t_end) +
+                                ", before the current time " + std::to_string(t_));
+  }
+  const bool fixed = fixed_step > 0.0;
+  AdvanceResult result;
+  result.t = t_;
+
+  while (t_ < t_end) {
+    if (restart_pending_ && !Restart(fixed, &result)) return result;
+
+    const double natural = fixed ? fixed_step : std::min(h_, MaxStep());
+    double h = natural;
+    bool last = false;
+    if (t_ + kLandingStretch * h >= t_end) {
+      h = t_end - t_;
+      last = true;
+    }
+    step_ = h;
+
+    double error = 0.0;
+    Failure failure = Failure::kNone;
+    if (!TryStep(h, &error)) {
+      failure = Failure::kEvaluation;
+    } else if (!AllFinite(y1_) || std::isnan(error)) {
+      failure = Failure::kNotFinite;
+    } else if (!fixed && !(error <= 1.0)) {
+      failure = Failure::kErrorTest;
+    } else if (!HasEndDerivative() && !Evaluate(t_ + h, y1_, f1_)) {
+      failure = Failure::kEvaluation;
+    } else if (!AllFinite(f1_)) {
+      failure = Failure::kNotFinite;
+    }
+
+    if (failure != Failure::kNone) {
+      ++stats_.rejected;
+      StepRejected();
+      if (fixed || h <= MinStep()) return Fail(failure, h, error);
+      const double smaller = failure == Failure::kErrorTest ? controller_.Rejected(h, error)
+                                                            : h * StepSizeController::kMinFactor;
+      h_ = std::max(smaller, MinStep());
+      continue;
+    }
+
+    // Accepted.
+    const double t1 = last ? t_end : t_ + h;
+    ++stats_.steps;
+    stats_.max_local_error = std::max(stats_.max_local_error, error);
+    stats_.accumulated_error +=
+        error * ToleranceScale(y1_, options_.relative_tolerance, options_.absolute_tolerance);
+
+    if (events_.active() && events_.Check(t1, y1_)) {
+      const double t_event = events_.Locate(*this, t_, t1, EventTolerance(), y_event_);
+      StepAccepted();
+      t_ = t_event;
+      std::copy(y_event_.begin(), y_event_.end(), y_.begin());
+      const std::span<const int> crossings = events_.crossings();
+      for (std::size_t k = 0; k < crossings.size(); ++k) {
+        if (crossings[k] == 0) continue;
+        ++stats_.events;
+        system_->HandleEvent(k, crossings[k], t_, y_);
+      }
+      system_->Project(t_, y_);
+      restart_pending_ = true;  // the next pass restarts f0, the history and the first step
+      continue;
+    }
+
+    // Project, and re-evaluate the end derivative only if the projection moved the state, so
+    // the next step (and the FSAL stage) starts from a consistent pair.
+    std::copy(y1_.begin(), y1_.end(), y_project_.begin());
+    system_->Project(t1, y1_);
+    if (!std::equal(y1_.begin(), y1_.end(), y_project_.begin())) {
+      if (!Evaluate(t1, y1_, f1_) || !AllFinite(f1_)) {
+        ++stats_.rejected;
+        return Fail(Failure::kEvaluation, h, error);
+      }
+    }
+    std::copy(y1_.begin(), y1_.end(), y_.begin());
+    std::copy(f1_.begin(), f1_.end(), f0_.begin());
+    t_ = t1;
+    events_.Advance();
+    StepAccepted();
+
+    if (!fixed) {
+      double next = controller_.Accepted(h, error);
+      // A step shortened to land on t_end says nothing against the step it replaced.
+      if (last && h < natural && next >= h) next = std::max(next, natural);
+      h_ = ClampStep(AdjustStep(next, h));
+    }
+  }
+  result.status = IntegratorStatus::kOk;
+  result.t = t_;
+  return result;
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,108 @@
+// The step loop every method shares: landing exactly on the target time, step-size control,
+// rejection, the minimum and maximum step, non-finite and failed evaluations, projection, event
+// location and the statistics. A method supplies one step attempt with its local error estimate
+// (and, optionally, a dense output); everything else is here, once.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "runtime/integrate/error_norm.h"
+#include "runtime/integrate/events.h"
+#include "runtime/integrate/ode.h"
+
+namespace sled::runtime {
+
+class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
+ public:
+  void Reset(OdeSystem& system, double t0, std::span<const double> y0,
+             const IntegratorOptions& options) final;
+  AdvanceResult Advance(double t_end) final;
+
+  // Takes `steps` equal steps to t_end with no error control (for convergence studies and
+  // tests): the local error estimates still go into the statistics, but never reject a step.
+  // Events are still located; after one, the remaining steps keep the same size.
+  AdvanceResult AdvanceFixed(double t_end, long steps);
+
+  double time() const final { return t_; }
+  std::span<const double> state() const final { return y_; }
+  std::span<double> mutable_state() final;
+  const IntegratorStats& stats() const final { return stats_; }
+
+  // The step size the next step will try (after Reset: 0 until the first Advance chooses one).
+  double step_size() const { return h_; }
+
+ protected:
+  AdaptiveIntegrator() = default;
+
+  // The power k of h in the local error estimate (lower embedded order + 1), for the controller.
+  virtual int ErrorPower() const = 0;
+  // Sizes the method's workspace for `size` states. Called from Reset; the only place a method
+  // may allocate.
+  virtual void ResizeWorkspace(std::size_t size) = 0;
+  // Forgets what the method carries from step to step (Jacobian, decay rates): after Reset, an
+  // event or an external change of the state.
+  virtual void RestartHistory() {}
+  // One attempt from (t_, y_), where f0_ = f(t_, y_), with step h: fills y1_ and sets *error to
+  // the weighted local error estimate. Returns false when Derivative failed.
+  virtual bool TryStep(double h, double* error) = 0;
+  // True when TryStep also leaves f(t_ + h, y1_) in f1_ (FSAL); otherwise the loop evaluates it
+  // after the error test passes, and it becomes the next step's f0_.
+  virtual bool HasEndDerivative() const { return false; }
+  // Told after each accepted or rejected attempt.
+  virtual void StepAccepted() {}
+  virtual void StepRejected() {}
+  // Lets a method keep the current step when the controller asks for a slightly different one
+  // (the Rosenbrock method does, to reuse its factorization). Default: take the proposal.
+  virtual double AdjustStep(double proposed, double current) const {
+    (void)current;
+    return proposed;
+  }
+  // y(t) on the step just attempted, [t_, t_ + step_]. Default: cubic Hermite from
+  // (y_, f0_, y1_, f1_).
+  void Interpolate(double t, std::span<double> y) const override;
+
+  // Calls Derivative and counts it.
+  bool Evaluate(double t, std::span<const double> y, std::span<double> dy);
+
+  OdeSystem& system() const { return *system_; }
+  const IntegratorOptions& options() const { return options_; }
+  IntegratorStats& mutable_stats() { return stats_; }
+
+  // The current state and the step being attempted, shared with the methods.
+  double t_ = 0.0;
+  double step_ = 0.0;       // size of the step being attempted
+  std::vector<double> y_;   // state at t_
+  std::vector<double> f0_;  // f(t_, y_)
+  std::vector<double> y1_;  // candidate at t_ + step_
+  std::vector<double> f1_;  // f(t_ + step_, y1_) once known
+
+ private:
+  enum class Failure { kNone, kEvaluation, kNotFinite, kErrorTest };
+
+  AdvanceResult Run(double t_end, double fixed_step);
+  // Evaluates f0_ at the current state, restarts history and events, and (adaptive runs) picks
+  // a first step. Returns false with `result` filled when the state cannot be started from.
+  bool Restart(bool fixed, AdvanceResult* result);
+  // Hairer's starting-step heuristic (dopri5.f HINIT), one extra evaluation.
+  double InitialStep();
+  double MinStep() const;
+  double MaxStep() const;
+  double ClampStep(double h) const;
+  double EventTolerance() const;
+  AdvanceResult Fail(Failure failure, double h, double error);
+
+  OdeSystem* system_ = nullptr;
+  IntegratorOptions options_;
+  IntegratorStats stats_;
+  StepSizeController controller_;
+  EventLocator events_;
+  double h_ = 0.0;  // next step to try
+  bool restart_pending_ = true;
+  std::vector<double> y_event_;    // state at a located event
+  std::vector<double> y_project_;  // copy to see whether Project changed the state
+};
+
+}  // namespace sled::runtime

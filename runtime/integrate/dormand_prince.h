@@ -1,0 +1,35 @@
+// Dormand–Prince 5(4): the explicit embedded Runge–Kutta pair of dopri5.f (Hairer, Nørsett &
+// Wanner, Solving ODEs I, §II.5 and II.6), with FSAL, the standard embedded error estimate, the
+// shared PI controller and the fourth-order continuous extension used for event location.
+// For non-stiff problems; on stiff ones its step is stability-bound (h |lambda| <= about 3.3).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "runtime/integrate/adaptive_integrator.h"
+
+namespace sled::runtime {
+
+class DormandPrince final : public AdaptiveIntegrator {
+ public:
+  std::string_view name() const override { return "dopri5"; }
+  int order() const override { return 5; }
+
+ protected:
+  int ErrorPower() const override { return 5; }  // the estimate is O(h^5)
+  void ResizeWorkspace(std::size_t size) override;
+  bool TryStep(double h, double* error) override;
+  bool HasEndDerivative() const override { return true; }  // stage 7 is f(t + h, y1)
+  void Interpolate(double t, std::span<double> y) const override;
+
+ private:
+  // Stages 2..6; stage 1 is f0_ and stage 7 is f1_.
+  std::vector<double> k2_, k3_, k4_, k5_, k6_;
+  std::vector<double> stage_;  // the argument of the next stage evaluation
+  std::vector<double> error_;  // the embedded error estimate
+};
+
+}  // namespace sled::runtime

@@ -1,0 +1,231 @@
+#include "runtime/integrate/rosenbrock.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "runtime/integrate/error_norm.h"
+
+namespace sled::runtime {
+namespace {
+
+constexpr int kS = Rosenbrock::kStages;
+using Square = std::array<std::array<double, kS>, kS>;
+using Row = std::array<double, kS>;
+
+// ROS34PW2 as published (see rosenbrock.h): alpha (strictly lower), Gamma (lower, gamma on the
+// diagonal), b and bhat.
+constexpr double kGamma = 4.3586652150845900e-01;
+constexpr Square kAlpha = {{{0.0, 0.0, 0.0, 0.0},
+                            {8.7173304301691801e-01, 0.0, 0.0, 0.0},
+                            {8.4457060015369423e-01, -1.1299064236484185e-01, 0.0, 0.0},
+                            {0.0, 0.0, 1.0, 0.0}}};
+constexpr Square kGammaMatrix = {
+    {{kGamma, 0.0, 0.0, 0.0},
+     {-8.7173304301691801e-01, kGamma, 0.0, 0.0},
+     {-9.0338057013044082e-01, 5.4180672388095326e-02, kGamma, 0.0},
+     {2.4212380706095346e-01, -1.2232505839045147e+00, 5.4526025533510214e-01, kGamma}}};
+constexpr Row kB = {2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00,
+                    kGamma};
+constexpr Row kBHat = {3.7810903145819369e-01, -9.6042292212423178e-02, 5.0e-01,
+                       2.1793326075422950e-01};
+
+// The W-free form (Hairer & Wanner II, (7.4)-(7.6)): with u = Gamma k,
+//   (1/(h gamma) I - W) u_i = f(t + alpha_i h, y0 + sum_j a_ij u_j) + sum_j (c_ij / h) u_j
+//                             + gamma_i h f_t,
+//   y1 = y0 + sum_j m_j u_j,  error = sum_j e_j u_j,
+// where a = alpha Gamma^-1, c = -Gamma^-1 below the diagonal, m = b Gamma^-1,
+// e = (b - bhat) Gamma^-1, alpha_i = sum_j alpha_ij and gamma_i = sum_j gamma_ij.
+struct Tableau {
+  Square a{};
+  Square c{};
+  Row m{};
+  Row e{};
+  Row alpha_sum{};
+  Row gamma_sum{};
+};
+
+constexpr Tableau MakeTableau() {
+  // Gamma^-1 by forward substitution (Gamma is lower triangular).
+  Square inverse{};
+  for (int col = 0; col < kS; ++col) {
+    for (int row = 0; row < kS; ++row) {
+      double value = row == col ? 1.0 : 0.0;
+      for (int k = 0; k < row; ++k) value -= kGammaMatrix[row][k] * inverse[k][col];
+      inverse[row][col] = value / kGammaMatrix[row][row];
+    }
+  }
+  Tableau t;
+  for (int i = 0; i < kS; ++i) {
+    for (int j = 0; j < kS; ++j) {
+      double a = 0.0;
+      for (int k = 0; k < kS; ++k) a += kAlpha[i][k] * inverse[k][j];
+      t.a[i][j] = j < i ? a : 0.0;
+      t.c[i][j] = j < i ? -inverse[i][j] : 0.0;
+      t.alpha_sum[i] += kAlpha[i][j];
+      t.gamma_sum[i] += kGammaMatrix[i][j];
+      t.m[j] += kB[i] * inverse[i][j];
+      t.e[j] += (kB[i] - kBHat[i]) * inverse[i][j];
+    }
+  }
+  return t;
+}
+
+constexpr Tableau kTableau = MakeTableau();
+
+}  // namespace
+
+void Rosenbrock::ResizeWorkspace(std::size_t size) {
+  const auto n = static_cast<Eigen::Index>(size);
+  jacobian_.setZero(n, n);
+  matrix_.setZero(n, n);
+  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  time_derivative_.setZero(n);
+  for (auto& u : u_) u.setZero(n);
+  rhs_.setZero(n);
+  stage_.setZero(n);
+  f_stage_.setZero(n);
+  error_.setZero(n);
+  jacobian_row_major_.assign(size * size, 0.0);
+  RestartHistory();
+}
+
+void Rosenbrock::RestartHistory() {
+  jacobian_valid_ = false;
+  jacobian_at_current_point_ = false;
+  jacobian_age_ = 0;
+  jacobian_step_ = 0.0;
+  factored_step_ = 0.0;
+}
+
+bool Rosenbrock::FormJacobian(double h) {
+  const std::size_t n = y_.size();
+  const auto ni = static_cast<Eigen::Index>(n);
+  const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
+  ++mutable_stats().jacobians;
+
+  if (system().Jacobian(t_, y_, jacobian_row_major_)) {
+    for (Eigen::Index i = 0; i < ni; ++i) {
+      for (Eigen::Index j = 0; j < ni; ++j) {
+        jacobian_(i, j) = jacobian_row_major_[static_cast<std::size_t>(i * ni + j)];
+      }
+    }
+  } else {
+    // Forward differences, one column per evaluation; stage_ holds the perturbed state.
+    const double rtol = options().relative_tolerance;
+    const double floor = std::max(rtol > 0.0 ? options().absolute_tolerance / rtol : 1.0, 1e-8);
+    std::copy(y_.begin(), y_.end(), stage_.data());
+    const std::span<double> perturbed(stage_.data(), n);
+    const std::span<double> f_perturbed(f_stage_.data(), n);
+    for (std::size_t j = 0; j < n; ++j) {
+      double delta = sqrt_eps * std::max(std::abs(y_[j]), floor);
+      // Retry the other way if the system cannot be evaluated on this side.
+      bool ok = false;
+      for (const double sign : {1.0, -1.0}) {
+        perturbed[j] = y_[j] + sign * delta;
+        const double actual = perturbed[j] - y_[j];  // the increment as represented
+        if (Evaluate(t_, perturbed, f_perturbed)) {
+          delta = actual;
+          ok = true;
+          break;
+        }
+      }
+      perturbed[j] = y_[j];
+      if (!ok) return false;
+      const auto col = static_cast<Eigen::Index>(j);
+      for (Eigen::Index i = 0; i < ni; ++i) {
+        jacobian_(i, col) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / delta;
+      }
+    }
+  }
+
+  // f_t by a forward difference in time; a W-method stays third order with any f_t, so if the
+  // system cannot be evaluated there we go on without it.
+  const double dt = sqrt_eps * std::max(std::abs(t_), h);
+  if (Evaluate(t_ + dt, y_, std::span<double>(f_stage_.data(), n)) && f_stage_.allFinite()) {
+    for (Eigen::Index i = 0; i < ni; ++i) {
+      time_derivative_(i) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / dt;
+    }
+  } else {
+    time_derivative_.setZero();
+  }
+
+  if (!jacobian_.allFinite() || !time_derivative_.allFinite()) return false;
+  jacobian_valid_ = true;
+  jacobian_at_current_point_ = true;
+  jacobian_age_ = 0;
+  jacobian_step_ = h;
+  factored_step_ = 0.0;  // the factorization belongs to the old Jacobian
+  return true;
+}
+
+bool Rosenbrock::TryStep(double h, double* error) {
+  const std::size_t n = y_.size();
+  const bool step_changed_much =
+      h > kJacobianStepRatio * jacobian_step_ || h * kJacobianStepRatio < jacobian_step_;
+  if (jacobian_valid_ && jacobian_at_current_point_) {
+    jacobian_step_ = h;  // a retry from the same point: the Jacobian is exact, keep it
+  } else if (!jacobian_valid_ || jacobian_age_ >= kMaxJacobianAge || step_changed_much) {
+    if (!FormJacobian(h)) return false;
+  }
+  if (factored_step_ != h) {
+    matrix_ = -jacobian_;
+    matrix_.diagonal().array() += 1.0 / (h * kGamma);
+    lu_.compute(matrix_);
+    ++mutable_stats().factorizations;
+    factored_step_ = h;
+  }
+
+  const Eigen::Map<const Eigen::VectorXd> y0(y_.data(), static_cast<Eigen::Index>(n));
+  const Eigen::Map<const Eigen::VectorXd> f0(f0_.data(), static_cast<Eigen::Index>(n));
+  for (int i = 0; i < kS; ++i) {
+    if (i == 0) {
+      rhs_ = f0;
+    } else {
+      stage_ = y0;
+      for (int j = 0; j < i; ++j) {
+        if (kTableau.a[i][j] != 0.0) stage_ += kTableau.a[i][j] * u_[j];
+      }
+      if (!Evaluate(t_ + kTableau.alpha_sum[i] * h, std::span<const double>(stage_.data(), n),
+                    std::span<double>(f_stage_.data(), n))) {
+        return false;
+      }
+      rhs_ = f_stage_;
+      for (int j = 0; j < i; ++j) rhs_ += (kTableau.c[i][j] / h) * u_[j];
+    }
+    if (kTableau.gamma_sum[i] != 0.0) rhs_ += (kTableau.gamma_sum[i] * h) * time_derivative_;
+    u_[i] = lu_.solve(rhs_);
+  }
+
+  Eigen::Map<Eigen::VectorXd> y1(y1_.data(), static_cast<Eigen::Index>(n));
+  y1 = y0;
+  error_.setZero();
+  for (int j = 0; j < kS; ++j) {
+    y1 += kTableau.m[j] * u_[j];
+    error_ += kTableau.e[j] * u_[j];
+  }
+  *error = WeightedRmsNorm(std::span<const double>(error_.data(), n), y_, y1_,
+                           options().relative_tolerance, options().absolute_tolerance);
+  return true;
+}
+
+void Rosenbrock::StepAccepted() {
+  ++jacobian_age_;
+  jacobian_at_current_point_ = false;  // the state has moved on
+}
+
+void Rosenbrock::StepRejected() {
+  // A stale W may be why the step failed: retry with a fresh one. A fresh one is exact here,
+  // so only the step size changes.
+  if (!jacobian_at_current_point_) jacobian_valid_ = false;
+}
+
+double Rosenbrock::AdjustStep(double proposed, double current) const {
+  if (jacobian_valid_ && proposed >= current && proposed <= kKeepStepRatio * current) {
+    return current;
+  }
+  return proposed;
+}
+
+}  // namespace sled::runtime

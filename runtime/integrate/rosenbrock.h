@@ -1,0 +1,88 @@
+// A linearly implicit (Rosenbrock-W) method for stiff problems: ROS34PW2 of Rang & Angermann,
+// "New Rosenbrock W-methods of order 3 for partial differential algebraic equations of index 1",
+// BIT Numer. Math. 45 (2005) 761-787. Four stages, order 3 with an embedded order-2 solution,
+// L-stable (R(inf) = 0) and stiffly accurate; being a W-method it keeps order 3 with any
+// approximation W of the Jacobian, which is what makes reusing a Jacobian across steps sound.
+//
+// In Hairer & Wanner's notation (Solving ODEs II, §IV.7), with W the Jacobian approximation:
+//   (I - h gamma W) k_i = h f(t + alpha_i h, y0 + sum_j alpha_ij k_j)
+//                         + h W sum_j gamma_ij k_j + gamma_i h^2 f_t,
+//   y1 = y0 + sum_i b_i k_i,  y1_hat = y0 + sum_i bhat_i k_i,
+// gamma = 0.435866521508459 and (rows i = 2..4, entries j < i; from the paper, as tabulated in
+// PETSc's TSROSWRA34PW2):
+//   alpha_21 =  0.87173304301691801
+//   alpha_31 =  0.84457060015369423, alpha_32 = -0.11299064236484185
+//   alpha_41 =  0,                   alpha_42 =  0,                   alpha_43 = 1
+//   gamma_21 = -0.87173304301691801
+//   gamma_31 = -0.90338057013044082, gamma_32 =  0.054180672388095326
+//   gamma_41 =  0.24212380706095346, gamma_42 = -1.2232505839045147,
+//   gamma_43 =  0.54526025533510214
+//   b    = ( 0.24212380706095346, -1.2232505839045147,   1.5452602553351020, gamma)
+//   bhat = ( 0.37810903145819369, -0.096042292212423178, 0.5,  0.2179332607542295)
+// The code uses the equivalent form without products by W (Hairer's u_i = sum_j gamma_ij k_j),
+// whose coefficients are computed from these at compile time.
+//
+// Jacobian: OdeSystem::Jacobian when it returns true, otherwise forward differences of
+// Derivative column by column with increment sqrt(eps) max(|y_j|, atol/rtol); f_t by a forward
+// difference in t. I - h gamma W is factored with Eigen's PartialPivLU.
+//
+// Reuse rule. The Jacobian (with f_t) is formed afresh at the start of a step when
+//   - there is none (after Reset, an event or an external change of the state),
+//   - the previous attempt was rejected and the Jacobian was formed at an earlier point,
+//   - it has served kMaxJacobianAge accepted steps, or
+//   - the step differs from the one it was first used with by more than a factor
+//     kJacobianStepRatio either way (the step size has changed much, so has h W's influence);
+// otherwise the stale one serves as W. The factorization is redone whenever the step size or
+// the Jacobian changes; to save refactorizations the step is kept when the controller proposes
+// a growth of less than kKeepStepRatio (Hairer's RADAU5 rule).
+#pragma once
+
+#include <Eigen/Dense>
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "runtime/integrate/adaptive_integrator.h"
+
+namespace sled::runtime {
+
+class Rosenbrock final : public AdaptiveIntegrator {
+ public:
+  static constexpr int kStages = 4;
+  static constexpr long kMaxJacobianAge = 20;
+  static constexpr double kJacobianStepRatio = 2.0;
+  static constexpr double kKeepStepRatio = 1.2;
+
+  std::string_view name() const override { return "rosenbrock"; }
+  int order() const override { return 3; }
+
+ protected:
+  int ErrorPower() const override { return 3; }  // order 3 with an order-2 embedded solution
+  void ResizeWorkspace(std::size_t size) override;
+  void RestartHistory() override;
+  bool TryStep(double h, double* error) override;
+  void StepAccepted() override;
+  void StepRejected() override;
+  double AdjustStep(double proposed, double current) const override;
+
+ private:
+  // Forms the Jacobian and f_t at (t_, y_) (f0_ is f there). False if Derivative failed.
+  bool FormJacobian(double h);
+
+  Eigen::MatrixXd jacobian_;
+  Eigen::MatrixXd matrix_;  // 1/(h gamma) I - J
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd time_derivative_;  // f_t
+  Eigen::VectorXd u_[kStages];
+  Eigen::VectorXd rhs_, stage_, f_stage_, error_;
+  std::vector<double> jacobian_row_major_;  // for OdeSystem::Jacobian
+
+  bool jacobian_valid_ = false;
+  bool jacobian_at_current_point_ = false;  // formed at (t_, y_) of the attempt in progress
+  long jacobian_age_ = 0;                   // accepted steps since it was formed
+  double jacobian_step_ = 0.0;              // the step it was first used with
+  double factored_step_ = 0.0;              // the step of the current factorization
+};
+
+}  // namespace sled::runtime

@@ -1,0 +1,118 @@
+#include "runtime/output_writer.h"
+
+#include <cstdio>
+#include <fstream>
+
+#include <fmt/format.h>
+
+namespace sled::runtime {
+
+std::string JsonString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    if (error) *error = fmt::format("cannot write `{}`", path);
+    return false;
+  }
+  // Names hold no commas or quotes (dotted names and units), so they need no CSV quoting.
+  out << "time [s]";
+  for (const std::string& name : series.names) out << ',' << name;
+  out << '\n';
+  std::string line;
+  for (std::size_t row = 0; row < series.rows(); ++row) {
+    line.clear();
+    for (std::size_t column = 0; column < series.columns; ++column) {
+      if (column > 0) line += ',';
+      // Shortest text that reads back to the same double.
+      line += fmt::format("{}", series.values[row * series.columns + column]);
+    }
+    out << line << '\n';
+  }
+  if (!out) {
+    if (error) *error = fmt::format("writing `{}` failed", path);
+    return false;
+  }
+  return true;
+}
+
+bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
+                      const RunSummary& summary, const std::vector<std::string>& warnings,
+                      std::string* error) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) {
+    if (error) *error = fmt::format("cannot write `{}`", path);
+    return false;
+  }
+  const IntegratorStats& s = summary.stats;
+  out << "{\n";
+  out << fmt::format("  \"scenario\": {},\n", JsonString(model.title));
+  out << fmt::format("  \"status\": {},\n", JsonString(summary.failed ? "failed" : "ok"));
+  out << fmt::format("  \"start_time\": {},\n  \"end_time\": {},\n  \"stopped_at\": {},\n",
+                     model.start_time, model.end_time, summary.end_time);
+  out << fmt::format("  \"output_every\": {},\n  \"rows\": {},\n  \"channels\": {},\n",
+                     model.output_every, series.rows(), series.names.size());
+  out << "  \"integrator\": {\n";
+  out << fmt::format("    \"method\": {},\n", JsonString(summary.integrator));
+  out << fmt::format("    \"relative_tolerance\": {},\n    \"absolute_tolerance\": {},\n",
+                     model.relative_tolerance, model.absolute_tolerance);
+  out << fmt::format("    \"steps\": {},\n    \"rejected_steps\": {},\n", s.steps, s.rejected);
+  out << fmt::format("    \"evaluations\": {},\n    \"jacobians\": {},\n", s.evaluations,
+                     s.jacobians);
+  out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
+                     s.events);
+  out << fmt::format("    \"max_local_error\": {},\n    \"error_estimate\": {}\n",
+                     s.max_local_error, s.accumulated_error);
+  out << "  },\n";
+  out << fmt::format("  \"wall_time_seconds\": {},\n", summary.wall_seconds);
+  if (summary.failed) {
+    const Failure& f = summary.failure;
+    out << "  \"failure\": {\n";
+    out << fmt::format("    \"time\": {},\n    \"where\": {},\n    \"cause\": {}", f.time,
+                       JsonString(f.where), JsonString(f.cause));
+    if (!f.source.file.empty()) {
+      out << fmt::format(
+          ",\n    \"source\": {}",
+          JsonString(fmt::format("{}:{}:{}", f.source.file, f.source.line, f.source.column)));
+    }
+    out << "\n  },\n";
+  }
+  out << "  \"warnings\": [";
+  for (std::size_t i = 0; i < warnings.size(); ++i) {
+    out << (i == 0 ? "\n    " : ",\n    ") << JsonString(warnings[i]);
+  }
+  out << (warnings.empty() ? "]\n" : "\n  ]\n");
+  out << "}\n";
+  if (!out) {
+    if (error) *error = fmt::format("writing `{}` failed", path);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,151 @@
+#include "runtime/outputs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "runtime/forces.h"
+#include "runtime/joint.h"
+
+namespace sled::runtime {
+namespace {
+
+struct ChannelGroup {
+  const char* quantity;
+  const char* unit;
+  std::vector<const char*> components;
+};
+
+// The channels one request produces.
+ChannelGroup GroupOf(const Model& model, std::size_t k) {
+  static const std::vector<const char*> kXyz = {"x", "y", "z"};
+  switch (model.output_kind[k]) {
+    case Model::OutputKind::kAcceleration:
+      return {"acceleration", "m/s^2", kXyz};
+    case Model::OutputKind::kVelocity:
+      return {"velocity", "m/s", kXyz};
+    case Model::OutputKind::kPosition:
+      return {"position", "m", kXyz};
+    case Model::OutputKind::kAngularAcceleration:
+      return {"angular_acceleration", "rad/s^2", kXyz};
+    case Model::OutputKind::kAngularVelocity:
+      return {"angular_velocity", "rad/s", kXyz};
+    case Model::OutputKind::kOrientation:
+      return {"orientation", "rad", {"yaw", "pitch", "roll"}};
+    case Model::OutputKind::kJointAngle: {
+      const auto s = static_cast<std::size_t>(model.output_index[k]);
+      switch (model.joint_kind[s]) {
+        case JointKind::kBall:
+          return {"joint_angle", "rad", {"flexure", "twist"}};
+        case JointKind::kEuler:
+          return {"joint_angle", "rad", {"precession", "nutation", "spin"}};
+        case JointKind::kSlip:
+          return {"joint_displacement", "m", {"axis"}};
+        default:
+          return {"joint_angle", "rad", {"axis"}};
+      }
+    }
+    case Model::OutputKind::kJointTorque:
+      return {"joint_torque", "N*m", kXyz};
+    case Model::OutputKind::kJointForce:
+      return {"joint_force", "N", kXyz};
+    case Model::OutputKind::kSpringForce:
+      return {"spring_force", "N", {"axial"}};
+  }
+  return {"value", "", {"value"}};
+}
+
+}  // namespace
+
+std::vector<std::string> ChannelNames(const Model& model) {
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
+    const ChannelGroup group = GroupOf(model, k);
+    for (const char* component : group.components) {
+      names.push_back(fmt::format("{}.{}.{} [{}]", model.output_label[k], group.quantity, component,
+                                  group.unit));
+    }
+  }
+  return names;
+}
+
+void EvaluateChannels(const Model& model, const Data& data, std::span<double> values) {
+  std::size_t column = 0;
+  auto put = [&](const Vec3& v) {
+    for (int i = 0; i < 3; ++i) values[column++] = v[i];
+  };
+  for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
+    const auto index = static_cast<std::size_t>(model.output_index[k]);
+    const Vec3& point = model.output_point[k];
+    switch (model.output_kind[k]) {
+      case Model::OutputKind::kAcceleration: {
+        // Classical acceleration of a body-fixed point, from the spatial acceleration.
+        const Vec3 w = data.velocity[index].head<3>();
+        const Vec3 v = data.velocity[index].tail<3>();
+        const Vec3 alpha = data.acceleration[index].head<3>();
+        const Vec3 a = data.acceleration[index].tail<3>();
+        put(a + w.cross(v) + alpha.cross(point) + w.cross(w.cross(point)));
+        break;
+      }
+      case Model::OutputKind::kVelocity: {
+        const PointState state =
+            PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
+        put(state.velocity);
+        break;
+      }
+      case Model::OutputKind::kPosition: {
+        const PointState state =
+            PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
+        put(state.position);
+        break;
+      }
+      case Model::OutputKind::kAngularAcceleration:
+        put(data.acceleration[index].head<3>());
+        break;
+      case Model::OutputKind::kAngularVelocity:
+        put(data.velocity[index].head<3>());
+        break;
+      case Model::OutputKind::kOrientation: {
+        // Yaw about z, pitch about y, roll about x (the input convention).
+        const Mat3& R = data.rotation[index];
+        const double pitch = std::asin(std::clamp(-R(2, 0), -1.0, 1.0));
+        put(Vec3(std::atan2(R(1, 0), R(0, 0)), pitch, std::atan2(R(2, 1), R(2, 2))));
+        break;
+      }
+      case Model::OutputKind::kJointAngle: {
+        const auto qa = static_cast<std::size_t>(model.q_address[index]);
+        switch (model.joint_kind[index]) {
+          case JointKind::kBall: {
+            const SwingTwist angles = DecomposeSwingTwist(QuaternionAt(data.q, qa).normalized());
+            values[column++] = angles.flexure;
+            values[column++] = angles.twist;
+            break;
+          }
+          case JointKind::kEuler:
+            for (std::size_t i = 0; i < 3; ++i) values[column++] = data.q[qa + i];
+            break;
+          default:
+            values[column++] = data.q[qa];
+            break;
+        }
+        break;
+      }
+      case Model::OutputKind::kJointTorque: {
+        // The wrench at the centre of mass, moved to the joint point.
+        const Vec6& wrench = data.joint_wrench[index];
+        const Vec3& joint_point = model.joint_point_in_child[index];
+        put(wrench.head<3>() - joint_point.cross(wrench.tail<3>()));
+        break;
+      }
+      case Model::OutputKind::kJointForce:
+        put(data.joint_wrench[index].tail<3>());
+        break;
+      case Model::OutputKind::kSpringForce:
+        values[column++] = data.spring_force[index];
+        break;
+    }
+  }
+}
+
+}  // namespace sled::runtime
