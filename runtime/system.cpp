@@ -6,11 +6,30 @@
 #include <fmt/format.h>
 
 #include "runtime/dynamics.h"
+#include "runtime/forces.h"
 #include "runtime/joint.h"
 
 namespace sled::runtime {
 
-MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model), data_(data) {}
+MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model), data_(data) {
+  for (std::size_t s = 0; s < model.nsegment(); ++s) {
+    const JointKind kind = model.joint_kind[s];
+    if (model.joint_stop_impulse[s] && model.joint_stop[s] > 0 &&
+        (kind == JointKind::kPin || kind == JointKind::kBall || kind == JointKind::kSlip)) {
+      events_.push_back({EventKind::kStop, s});
+    }
+    if (model.joint_stop_impulse[s] && model.joint_twist_stop[s] > 0 && kind == JointKind::kBall) {
+      events_.push_back({EventKind::kTwistStop, s});
+    }
+    if (kind != JointKind::kFree &&
+        (model.joint_lock_below[s] >= 0 || model.joint_unlock_above[s] >= 0)) {
+      events_.push_back({EventKind::kLock, s});
+    }
+  }
+  // Workspace for impulses, sized once.
+  saved_v_.assign(static_cast<std::size_t>(model.nv), 0.0);
+  responses_.assign(6, std::vector<double>(static_cast<std::size_t>(model.nv), 0.0));
+}
 
 std::size_t MultibodySystem::size() const {
   return static_cast<std::size_t>(model_.nq + model_.nv);
@@ -80,6 +99,180 @@ void MultibodySystem::Project(double t, std::span<double> y) {
       for (std::size_t k = 0; k < 4; ++k) y[address + k] /= norm;
     }
   }
+}
+
+std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {
+  const std::uint8_t all = 7;  // ball, pin and slip lock whole; Euler per axis (bits 0-2)
+  // Axes locked from the start stay locked for good unless the joint can unlock.
+  const std::uint8_t permanent = model_.joint_unlock_above[s] < 0 ? model_.joint_locked[s] : 0;
+  return static_cast<std::uint8_t>(all & ~permanent);
+}
+
+double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
+  const auto va = static_cast<std::size_t>(model_.v_address[s]);
+  const auto dof = static_cast<std::size_t>(model_.v_count[s]);
+  const std::uint8_t lockable = LockableAxes(s);
+  const bool locked = (data_.locked[s] & lockable) != 0;
+  if (!locked) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < dof; ++k) {
+      sum += data_.generalized_force[va + k] * data_.generalized_force[va + k];
+    }
+    return std::sqrt(sum);
+  }
+  // The constraint torque about the joint point, in the segment frame, along the locked axes.
+  const Vec6& wrench = data_.joint_wrench[s];
+  const Vec3 torque = wrench.head<3>() - model_.joint_point_in_child[s].cross(wrench.tail<3>());
+  JointMotion motion;
+  int axes[6];
+  const int free_count = ActiveAxes(model_, s, 0, axes);
+  ComputeJointMotion(model_, s, data_.q, data_.v, 0, motion);
+  double sum = 0.0;
+  for (int c = 0; c < free_count; ++c) {
+    if (!(data_.locked[s] & (1u << axes[c])) && model_.joint_kind[s] == JointKind::kEuler) continue;
+    const Vec3 axis = motion.subspace.col(c).head<3>();
+    if (axis.squaredNorm() > 0) sum += std::pow(torque.dot(axis.normalized()), 2);
+  }
+  return std::sqrt(sum);
+}
+
+void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {
+  Load(t, y);
+  Failure ignored;
+  Forward(model_, data_, &ignored);
+  for (std::size_t k = 0; k < events_.size(); ++k) {
+    const std::size_t s = events_[k].segment;
+    const auto qa = static_cast<std::size_t>(model_.q_address[s]);
+    switch (events_[k].kind) {
+      case EventKind::kStop: {
+        // Positive inside the range of motion, negative past the stop.
+        const double angle =
+            model_.joint_kind[s] == JointKind::kBall
+                ? DecomposeSwingTwist(QuaternionAt(data_.q, qa).normalized()).flexure
+                : std::abs(data_.q[qa]);
+        g[k] = model_.joint_stop[s] - angle;
+        break;
+      }
+      case EventKind::kTwistStop:
+        g[k] = model_.joint_twist_stop[s] -
+               std::abs(DecomposeSwingTwist(QuaternionAt(data_.q, qa).normalized()).twist);
+        break;
+      case EventKind::kLock: {
+        const bool locked = (data_.locked[s] & LockableAxes(s)) != 0;
+        const double torque = JointTorqueMagnitude(s);
+        // Rises through zero when an unlocked joint's torque falls below its lock level, or a
+        // locked joint's constraint torque exceeds its unlock level.
+        if (locked) {
+          g[k] = model_.joint_unlock_above[s] >= 0 ? torque - model_.joint_unlock_above[s] : -1.0;
+        } else {
+          g[k] = model_.joint_lock_below[s] >= 0 ? model_.joint_lock_below[s] - torque : -1.0;
+        }
+        break;
+      }
+    }
+  }
+}
+
+void MultibodySystem::UnitResponse(std::size_t s, const SmallVector& force,
+                                   std::vector<double>& response) {
+  std::copy(data_.v.begin(), data_.v.end(), saved_v_.begin());
+  std::fill(data_.v.begin(), data_.v.end(), 0.0);
+  ComputeKinematics(model_, data_);
+  for (auto& wrench : data_.external) wrench.setZero();
+  std::fill(data_.generalized_force.begin(), data_.generalized_force.end(), 0.0);
+  const auto va = static_cast<std::size_t>(model_.v_address[s]);
+  for (Eigen::Index k = 0; k < force.size(); ++k) {
+    data_.generalized_force[va + static_cast<std::size_t>(k)] = force[k];
+  }
+  Failure ignored;
+  ComputeAccelerations(model_, data_, &ignored);
+  std::copy(data_.vdot.begin(), data_.vdot.end(), response.begin());
+  std::copy(saved_v_.begin(), saved_v_.end(), data_.v.begin());
+}
+
+void MultibodySystem::ApplyJointImpulse(std::size_t s, const SmallMatrix& directions,
+                                        const SmallVector& targets) {
+  const auto va = static_cast<std::size_t>(model_.v_address[s]);
+  const auto dof = static_cast<Eigen::Index>(model_.v_count[s]);
+  const Eigen::Index count = directions.cols();
+  SmallMatrix coupling(count, count);
+  SmallVector current(count);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    UnitResponse(s, directions.col(i), responses_[static_cast<std::size_t>(i)]);
+  }
+  for (Eigen::Index i = 0; i < count; ++i) {
+    current[i] = 0.0;
+    for (Eigen::Index d = 0; d < dof; ++d) {
+      current[i] += directions(d, i) * data_.v[va + static_cast<std::size_t>(d)];
+    }
+    for (Eigen::Index j = 0; j < count; ++j) {
+      double value = 0.0;
+      for (Eigen::Index d = 0; d < dof; ++d) {
+        value += directions(d, i) *
+                 responses_[static_cast<std::size_t>(j)][va + static_cast<std::size_t>(d)];
+      }
+      coupling(i, j) = value;
+    }
+  }
+  const SmallVector impulse = coupling.partialPivLu().solve(targets - current);
+  for (Eigen::Index j = 0; j < count; ++j) {
+    const auto& response = responses_[static_cast<std::size_t>(j)];
+    for (std::size_t k = 0; k < data_.v.size(); ++k) data_.v[k] += response[k] * impulse[j];
+  }
+}
+
+void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
+  Load(t, y);
+  const std::size_t s = events_[k].segment;
+  const auto qa = static_cast<std::size_t>(model_.q_address[s]);
+  const auto va = static_cast<std::size_t>(model_.v_address[s]);
+  const double restitution = model_.joint_restitution[s];
+  switch (events_[k].kind) {
+    case EventKind::kStop:
+    case EventKind::kTwistStop: {
+      if (direction > 0) break;  // moving back into range: nothing to do
+      SmallMatrix direction_vector;
+      if (model_.joint_kind[s] == JointKind::kBall) {
+        // The direction that opens the stop: the flexure axis (or z for twist), in the
+        // segment frame, where the ball joint's velocities live.
+        const Eigen::Quaterniond rotation = QuaternionAt(data_.q, qa).normalized();
+        const SwingTwist angles = DecomposeSwingTwist(rotation);
+        Vec3 axis = events_[k].kind == EventKind::kStop
+                        ? Vec3(rotation.toRotationMatrix().transpose() * angles.flexure_axis)
+                        : Vec3(Vec3::UnitZ() * (angles.twist >= 0 ? 1.0 : -1.0));
+        axis = model_.joint_frame_in_child[s] * axis;
+        direction_vector = axis;
+      } else {
+        direction_vector = SmallMatrix::Constant(1, 1, data_.q[qa] >= 0 ? 1.0 : -1.0);
+      }
+      // Only an impact into the stop rebounds.
+      double closing = 0.0;
+      for (Eigen::Index d = 0; d < direction_vector.rows(); ++d) {
+        closing += direction_vector(d, 0) * data_.v[va + static_cast<std::size_t>(d)];
+      }
+      if (closing <= 0) break;
+      ApplyJointImpulse(s, direction_vector, SmallVector::Constant(1, -restitution * closing));
+      break;
+    }
+    case EventKind::kLock: {
+      if (direction < 0) break;
+      const std::uint8_t lockable = LockableAxes(s);
+      if (data_.locked[s] & lockable) {
+        data_.locked[s] = static_cast<std::uint8_t>(data_.locked[s] & ~lockable);  // unlock
+        break;
+      }
+      // Lock: a plastic impulse stops the joint's relative motion on the axes that lock.
+      int axes[6];
+      const int count = ActiveAxes(model_, s, data_.locked[s], axes);
+      SmallMatrix directions = SmallMatrix::Zero(model_.v_count[s], count);
+      for (int c = 0; c < count; ++c) directions(axes[c], c) = 1.0;
+      ApplyJointImpulse(s, directions, SmallVector::Zero(count));
+      data_.locked[s] = static_cast<std::uint8_t>(data_.locked[s] | lockable);
+      for (int c = 0; c < count; ++c) data_.v[va + static_cast<std::size_t>(axes[c])] = 0.0;
+      break;
+    }
+  }
+  Store(y);
 }
 
 std::string MultibodySystem::FailureReason() const {

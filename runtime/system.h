@@ -1,4 +1,6 @@
-// The multibody equations as an OdeSystem for the integrators: state y = [q; v].
+// The multibody equations as an OdeSystem for the integrators: state y = [q; v]. Joint stops
+// with the impulse option and joint locking are events: the integrator locates them inside the
+// step, and HandleEvent applies the impulse or switches the joint's lock state.
 #pragma once
 
 #include "runtime/data.h"
@@ -16,6 +18,10 @@ class MultibodySystem : public OdeSystem {
   void Project(double t, std::span<double> y) override;
   std::string FailureReason() const override;
 
+  std::size_t EventCount() const override { return events_.size(); }
+  void Events(double t, std::span<const double> y, std::span<double> g) override;
+  void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
+
   // Copies a state vector into data (q, v, time) and back.
   void Load(double t, std::span<const double> y);
   void Store(std::span<double> y) const;
@@ -23,9 +29,31 @@ class MultibodySystem : public OdeSystem {
   const Failure& failure() const { return failure_; }
 
  private:
+  enum class EventKind { kStop, kTwistStop, kLock };
+  struct Event {
+    EventKind kind;
+    std::size_t segment;
+  };
+
+  // Sets v so that, for each direction d_i (a vector over the joint's velocity coordinates),
+  // d_i . v_joint takes the value target_i, by a generalized impulse on the joint: the impulse
+  // passes through the whole system, so momentum is kept.
+  void ApplyJointImpulse(std::size_t segment, const SmallMatrix& directions,
+                         const SmallVector& targets);
+  // M^-1 tau for a generalized force on one joint's coordinates (an articulated-body pass with
+  // no velocity and no applied force). Leaves data's velocities as they were.
+  void UnitResponse(std::size_t segment, const SmallVector& force, std::vector<double>& response);
+  // The torque the joint's characteristic applies (unlocked) or the constraint torque it carries
+  // about its joint point (locked), as a magnitude.
+  double JointTorqueMagnitude(std::size_t segment) const;
+  std::uint8_t LockableAxes(std::size_t segment) const;
+
   const Model& model_;
   Data& data_;
   Failure failure_;
+  std::vector<Event> events_;
+  std::vector<double> saved_v_;                 // scratch for UnitResponse
+  std::vector<std::vector<double>> responses_;  // up to six unit responses, nv each
 };
 
 }  // namespace sled::runtime

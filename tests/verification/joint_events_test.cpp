@@ -1,0 +1,131 @@
+// Joint events against closed-form answers: a pin joint hitting its stop with restitution e
+// rebounds with -e times its closing rate, at the time and angle the kinematics give; an Euler
+// joint locks when its spring torque falls below the lock level, at the time the harmonic
+// solution gives, and stays locked; a locked joint unlocks when the torque it carries exceeds
+// the unlock level.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "tests/runtime/model_fixtures.h"
+#include "tests/verification/verification.h"
+
+namespace sled::verification {
+namespace {
+
+using runtime::JointKind;
+using runtime::Vec3;
+
+class JointStop : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(JointStop, ReboundsWithTheRestitution) {
+  // No gravity: the arm turns at a constant rate until it meets the stop at 0.5 rad.
+  runtime::Model model;
+  model.gravity.setZero();
+  runtime::testing::AddSegment(model, "arm", -1, JointKind::kPin, 1.0, Vec3(0.01, 0.02, 0.01),
+                               Vec3::Zero(), Vec3(0, 0, 0.3), Vec3::UnitY());
+  const double stop = 0.5, rate = 2.0, e = 0.6;
+  model.joint_stop[0] = stop;
+  model.joint_stop_impulse[0] = 1;
+  model.joint_restitution[0] = e;
+  model.v0[0] = rate;
+  runtime::Data data = runtime::MakeData(model);
+  const double t_hit = stop / rate;
+  double worst = 0;
+  runtime::IntegratorStats stats;
+  ASSERT_TRUE(Simulate(
+      model, data, GetParam(), 1e-10, Linspace(0, 1.0, 100),
+      [&](const runtime::Data& d) {
+        const double expected = d.time < t_hit ? rate * d.time : stop - e * rate * (d.time - t_hit);
+        worst = std::max(worst, std::abs(d.q[0] - expected));
+        if (d.time > t_hit) {
+          EXPECT_NEAR(d.v[0], -e * rate, 1e-9) << d.time;
+        }
+      },
+      &stats));
+  EXPECT_LT(worst, 1e-8);
+  EXPECT_EQ(stats.events, 1);
+}
+
+class JointLock : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(JointLock, EulerJointLocksAtItsTorqueLevel) {
+  // A disc on an Euler joint to the ground with a linear precession spring k: released at
+  // psi0 it swings back as psi0 cos(w t); its spring torque k psi falls below the lock level
+  // k psi_lock at t = acos(psi_lock / psi0) / w, where the joint locks and stays.
+  runtime::Model model;
+  model.gravity.setZero();
+  const double Iz = 0.05, k = 20.0, psi0 = 0.8, psi_lock = 0.3;
+  runtime::testing::AddSegment(model, "disc", -1, JointKind::kEuler, 1.0, Vec3(0.04, 0.04, Iz));
+  model.functions.kind = {runtime::FunctionTable::Kind::kPolynomial};
+  model.functions.constant = {0};
+  model.functions.first = {0};
+  model.functions.count = {2};
+  model.functions.energy_loss = {0};
+  model.functions.permanent_set = {0};
+  model.functions.coefficients = {0.0, k};
+  model.joint_function[0] = {0, -1, -1};
+  model.joint_lock_below[0] = k * psi_lock;
+  model.q0[0] = psi0;
+  runtime::Data data = runtime::MakeData(model);
+  const double w = std::sqrt(k / Iz);
+  const double t_lock = std::acos(psi_lock / psi0) / w;
+  runtime::IntegratorStats stats;
+  ASSERT_TRUE(Simulate(
+      model, data, GetParam(), 1e-10, Linspace(0, 0.5, 100),
+      [&](const runtime::Data& d) {
+        const double expected = d.time < t_lock ? psi0 * std::cos(w * d.time) : psi_lock;
+        EXPECT_NEAR(d.q[0], expected, 1e-7) << d.time;
+        if (d.time > t_lock) {
+          EXPECT_EQ(d.locked[0] & 1, 1) << d.time;
+        }
+      },
+      &stats));
+  EXPECT_EQ(stats.events, 1);
+}
+
+TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
+  // A locked pin joint holds a bar on a vehicle whose acceleration ramps up as a = c t; the
+  // joint carries m l (g + a) about the pin (the bar stands out horizontally, pin axis y), so it
+  // unlocks when m l (g + c t) reaches the unlock level.
+  runtime::Model model;
+  const double m = 2.0, l = 0.5, c = 100.0, level = 30.0;
+  model.vehicle_name = {"sled"};
+  runtime::VehicleMotion motion;
+  motion.kind = runtime::VehicleMotion::Kind::kTable;
+  motion.axis = Vec3::UnitZ();
+  motion.table = {{0.0, 0.0}, {10.0, c * 10.0}};
+  model.vehicle_motion = {motion};
+  model.vehicle_position = {Vec3::Zero()};
+  model.vehicle_orientation = {runtime::Mat3::Identity()};
+  model.vehicle_velocity = {Vec3::Zero()};
+  runtime::testing::AddSegment(model, "bar", -1, JointKind::kPin, m, Vec3(0.01, 0.01, 0.01),
+                               Vec3::Zero(), Vec3(-l, 0, 0), Vec3::UnitY(),
+                               {runtime::FrameRef::Kind::kVehicle, 0});
+  model.joint_locked[0] = 7;
+  model.joint_unlock_above[0] = level;
+  runtime::Data data = runtime::MakeData(model);
+  const double g = 9.80665;
+  const double t_unlock = (level / (m * l) - g) / c;
+  ASSERT_GT(t_unlock, 0.0);
+  runtime::IntegratorStats stats;
+  double first_unlocked = -1;
+  ASSERT_TRUE(Simulate(
+      model, data, GetParam(), 1e-10, Linspace(0, 0.4, 400),
+      [&](const runtime::Data& d) {
+        if (first_unlocked < 0 && d.locked[0] == 0) first_unlocked = d.time;
+        if (d.time < t_unlock - 1e-3) {
+          EXPECT_NE(d.locked[0], 0) << d.time;
+        }
+      },
+      &stats));
+  ASSERT_GT(first_unlocked, 0);
+  EXPECT_NEAR(first_unlocked, t_unlock, 1.0e-3);  // within one output sample
+  EXPECT_EQ(stats.events, 1);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryIntegrator, JointStop, ::testing::ValuesIn(AllIntegrators()));
+INSTANTIATE_TEST_SUITE_P(EveryIntegrator, JointLock, ::testing::ValuesIn(AllIntegrators()));
+
+}  // namespace
+}  // namespace sled::verification
