@@ -115,28 +115,33 @@ double AdaptiveIntegrator::InitialStep() {
   const std::size_t n = y_.size();
   const double rtol = options_.relative_tolerance;
   const double atol = options_.absolute_tolerance;
+  // With atol = 0 a zero component would have weight 0; the smallest normal double stands in.
+  const auto weight = [&](double y) {
+    return std::max(atol + rtol * std::abs(y), std::numeric_limits<double>::min());
+  };
   double dnf = 0.0;
   double dny = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double weight = atol + rtol * std::abs(y_[i]);
-    dnf += (f0_[i] / weight) * (f0_[i] / weight);
-    dny += (y_[i] / weight) * (y_[i] / weight);
+    const double w = weight(y_[i]);
+    dnf += (f0_[i] / w) * (f0_[i] / w);
+    dny += (y_[i] / w) * (y_[i] / w);
   }
   double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : std::sqrt(dny / dnf) * 0.01;
+  if (!(h > 0.0) || !std::isfinite(h)) h = 1e-6;
   h = std::min(h, MaxStep());
   // y1_ and f1_ are free between steps: use them for the trial Euler step.
   for (std::size_t i = 0; i < n; ++i) y1_[i] = y_[i] + h * f0_[i];
   if (!Evaluate(t_ + h, y1_, f1_) || !AllFinite(f1_)) return h;
   double der2 = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double weight = atol + rtol * std::abs(y_[i]);
-    const double scaled = (f1_[i] - f0_[i]) / weight;
+    const double scaled = (f1_[i] - f0_[i]) / weight(y_[i]);
     der2 += scaled * scaled;
   }
   der2 = std::sqrt(der2) / h;
   const double der12 = std::max(der2, std::sqrt(dnf));
-  const double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3)
-                                   : std::pow(0.01 / der12, 1.0 / static_cast<double>(order()));
+  double h1 = der12 <= 1e-15 ? std::max(1e-6, h * 1e-3)
+                             : std::pow(0.01 / der12, 1.0 / static_cast<double>(order()));
+  if (!(h1 > 0.0) || !std::isfinite(h1)) h1 = h;
   return std::min({100.0 * h, h1, MaxStep()});
 }
 

@@ -2,8 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sled::runtime {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+}  // namespace
 
 double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0,
                        std::span<const double> y1, double relative_tolerance,
@@ -14,7 +20,10 @@ double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0
   for (std::size_t i = 0; i < n; ++i) {
     const double weight =
         absolute_tolerance + relative_tolerance * std::max(std::abs(y0[i]), std::abs(y1[i]));
-    const double scaled = error[i] / weight;
+    // With atol = 0 a component that is exactly zero has weight 0: no error there is no error,
+    // any other is infinitely too large (and NaN stays NaN).
+    const double scaled =
+        weight > 0.0 ? error[i] / weight : (error[i] == 0.0 ? 0.0 : error[i] * kInfinity);
     sum += scaled * scaled;
   }
   return std::sqrt(sum / static_cast<double>(n));

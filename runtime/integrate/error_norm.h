@@ -23,7 +23,8 @@ double ToleranceScale(std::span<const double> y, double relative_tolerance,
 // (the lower of the two embedded orders plus one),
 //   h_new = h * safety * err_n^(-alpha) * err_{n-1}^(beta),  alpha = 1/k - 0.75 beta,
 // with beta = 0.2/k (0.04 for DOPRI5's k = 5, as in dopri5.f). The ratio h_new/h is kept in
-// [kMinFactor, kMaxFactor], and never above 1 right after a rejection.
+// [kMinFactor, kMaxFactor], and never above 1 right after a rejection. A rejected step shrinks
+// by safety * err_n^(-alpha), within [kMinFactor, 1] (dopri5.f).
 class StepSizeController {
  public:
   static constexpr double kSafety = 0.9;

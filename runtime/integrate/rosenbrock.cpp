@@ -104,6 +104,7 @@ bool Rosenbrock::FormJacobian(double h) {
   const auto ni = static_cast<Eigen::Index>(n);
   const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   ++mutable_stats().jacobians;
+  jacobian_valid_ = false;  // until it is complete
 
   if (system().Jacobian(t_, y_, jacobian_row_major_)) {
     for (Eigen::Index i = 0; i < ni; ++i) {
@@ -114,12 +115,12 @@ bool Rosenbrock::FormJacobian(double h) {
   } else {
     // Forward differences, one column per evaluation; stage_ holds the perturbed state.
     const double rtol = options().relative_tolerance;
-    const double floor = std::max(rtol > 0.0 ? options().absolute_tolerance / rtol : 1.0, 1e-8);
+    const double small = std::max(rtol > 0.0 ? options().absolute_tolerance / rtol : 1.0, 1e-8);
     std::copy(y_.begin(), y_.end(), stage_.data());
     const std::span<double> perturbed(stage_.data(), n);
     const std::span<double> f_perturbed(f_stage_.data(), n);
     for (std::size_t j = 0; j < n; ++j) {
-      double delta = sqrt_eps * std::max(std::abs(y_[j]), floor);
+      double delta = sqrt_eps * std::max(std::abs(y_[j]), small);
       // Retry the other way if the system cannot be evaluated on this side.
       bool ok = false;
       for (const double sign : {1.0, -1.0}) {
