@@ -1,5 +1,7 @@
 #include "runtime/data.h"
 
+#include "runtime/constraints.h"
+
 namespace sled::runtime {
 
 Data MakeData(const Model& model) {
@@ -31,6 +33,7 @@ Data MakeData(const Model& model) {
   data.u_vector.assign(n, SmallVector(0));
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
+  SetUpConstraints(model, data);
   return data;
 }
 

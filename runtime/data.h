@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct Failure {
   std::string where;  // a segment or joint name
   std::string cause;
   SourcePosition source;
+};
+
+struct ConstraintWorkspace;  // runtime/constraints.h
+struct ConstraintWorkspaceDeleter {
+  void operator()(ConstraintWorkspace* workspace) const;
 };
 
 struct Data {
@@ -52,6 +58,10 @@ struct Data {
   // Spring–dampers: current length and force (positive in tension).
   std::vector<double> spring_length;
   std::vector<double> spring_force;
+
+  // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
+  // null when the Model has none.
+  std::unique_ptr<ConstraintWorkspace, ConstraintWorkspaceDeleter> constraints;
 
   std::int64_t evaluations = 0;
 };

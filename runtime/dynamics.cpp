@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/constraints.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/vehicle.h"
@@ -109,7 +110,15 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
     }
     data.u_vector[i] = tau - S.transpose() * data.articulated_bias[i];
     if (count > 0) {
-      data.d_inverse[i] = D.inverse();
+      // D = S^T I^A S is symmetric positive definite for a physical segment; a closed-form
+      // inverse for the common one- and three-axis joints, LU otherwise.
+      if (count == 1) {
+        data.d_inverse[i] = SmallMatrix::Constant(1, 1, 1.0 / D(0, 0));
+      } else if (count == 3) {
+        data.d_inverse[i] = Eigen::Matrix3d(D).inverse();
+      } else {
+        data.d_inverse[i] = D.inverse();
+      }
       if (!data.d_inverse[i].allFinite()) {
         if (failure) {
           failure->where = model.segment_name[i];
@@ -132,8 +141,7 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
       pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i] +
            data.u_matrix[i] * (data.d_inverse[i] * data.u_vector[i]);
     }
-    const Mat6 X = data.parent_to_child[i].Matrix();
-    data.articulated_inertia[p] += X.transpose() * Ia * X;
+    data.articulated_inertia[p] += data.parent_to_child[i].TransposeApplyInertia(Ia);
     data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
   }
   // Roots to leaves: accelerations; then the wrench each joint transmits.
@@ -172,7 +180,9 @@ bool Forward(const Model& model, Data& data, Failure* failure) {
   ++data.evaluations;
   ComputeKinematics(model, data);
   ComputeForces(model, data);
-  return ComputeAccelerations(model, data, failure);
+  if (!ComputeAccelerations(model, data, failure)) return false;
+  if (model.nconstraint() > 0) return ApplyConstraints(model, data, failure);
+  return true;
 }
 
 }  // namespace sled::runtime

@@ -59,6 +59,24 @@ struct Transform {
     out.tail<3>() = force;
     return out;
   }
+  // X^T I X: a symmetric spatial inertia (or articulated inertia) in child coordinates,
+  // expressed in parent coordinates. Done in 3x3 blocks, about a tenth of the work of the 6x6
+  // products: with I = [A B; B^T C] rotated to A', B', C', the shift by r gives
+  // [A' - B' r~ + r~ B'^T - r~ C' r~,  B' + r~ C';  (B' + r~ C')^T,  C'].
+  Mat6 TransposeApplyInertia(const Mat6& inertia) const {
+    const Eigen::Matrix3d Et = E.transpose();
+    const Eigen::Matrix3d A = Et * inertia.topLeftCorner<3, 3>() * E;
+    const Eigen::Matrix3d B = Et * inertia.topRightCorner<3, 3>() * E;
+    const Eigen::Matrix3d C = Et * inertia.bottomRightCorner<3, 3>() * E;
+    const Eigen::Matrix3d rx = Skew(r);
+    const Eigen::Matrix3d top_right = B + rx * C;
+    Mat6 out;
+    out.topLeftCorner<3, 3>() = A - B * rx + rx * B.transpose() - rx * C * rx;
+    out.topRightCorner<3, 3>() = top_right;
+    out.bottomLeftCorner<3, 3>() = top_right.transpose();
+    out.bottomRightCorner<3, 3>() = C;
+    return out;
+  }
   Mat6 Matrix() const {
     Mat6 x = Mat6::Zero();
     x.topLeftCorner<3, 3>() = E;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/constraints.h"
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -84,7 +85,6 @@ std::vector<std::size_t> MultibodySystem::VectorGroups() const {
 }
 
 void MultibodySystem::Project(double t, std::span<double> y) {
-  (void)t;
   // Unit quaternions: the integrators move them off the unit sphere by the local error.
   for (std::size_t s = 0; s < model_.nsegment(); ++s) {
     std::size_t address = static_cast<std::size_t>(model_.q_address[s]);
@@ -99,6 +99,8 @@ void MultibodySystem::Project(double t, std::span<double> y) {
       for (std::size_t k = 0; k < 4; ++k) y[address + k] /= norm;
     }
   }
+  // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
+  if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {

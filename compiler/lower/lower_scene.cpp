@@ -95,6 +95,13 @@ void LowerConstraints(Lowering& lowering) {
     // A constraint that became a root's joint to its base is no loop.
     if (lowering.constraint_is_base_joint[c]) continue;
     const Constraint& constraint = lowering.scenario().constraints[c];
+    // Rolling needs the surface it rolls on, which comes with the contact milestone.
+    if (constraint.kind == Constraint::Kind::kRolling) {
+      lowering.AddNote(
+          constraint.range,
+          fmt::format("rolling constraint `{}` is not simulated yet; left out", constraint.name));
+      continue;
+    }
     model.constraint_name.push_back(constraint.name);
     switch (constraint.kind) {
       case Constraint::Kind::kFixedPoint:

@@ -1,0 +1,68 @@
+#include "runtime/mass_matrix.h"
+
+#include "runtime/dynamics.h"
+#include "runtime/joint.h"
+
+namespace sled::runtime {
+
+bool IsAncestorOrSelf(const Model& model, std::size_t ancestor, std::size_t segment) {
+  for (std::int32_t s = static_cast<std::int32_t>(segment); s >= 0;
+       s = model.segment_parent[static_cast<std::size_t>(s)]) {
+    if (static_cast<std::size_t>(s) == ancestor) return true;
+  }
+  return false;
+}
+
+void CompositeRigidBodyMassMatrix(const Model& model, const Data& data, std::span<Mat6> composite,
+                                  Eigen::Ref<Eigen::MatrixXd> mass) {
+  const std::size_t n = model.nsegment();
+  for (std::size_t s = 0; s < n; ++s) composite[s] = SpatialInertia(model, s);
+  // Leaves to roots: the composite inertia of each subtree, in the subtree root's frame.
+  for (std::size_t i = n; i-- > 0;) {
+    const std::int32_t parent = model.segment_parent[i];
+    if (parent < 0) continue;
+    const Mat6 X = data.parent_to_child[i].Matrix();
+    composite[static_cast<std::size_t>(parent)] += X.transpose() * composite[i] * X;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    int axes_i[6];
+    const int count_i = ActiveAxes(model, i, data.locked[i], axes_i);
+    const auto va_i = static_cast<Eigen::Index>(model.v_address[i]);
+    // Locked axes: identity rows, so their (zero) correction is well defined.
+    for (int k = 0; k < model.v_count[i]; ++k) {
+      for (int l = 0; l < model.v_count[i]; ++l) mass(va_i + k, va_i + l) = k == l ? 1.0 : 0.0;
+    }
+    if (count_i == 0) continue;
+    // F = I^c_i S_i, carried up the tree: M_ij = F^T S_j for each ancestor j.
+    MotionSubspace F = composite[i] * data.subspace[i];
+    const SmallMatrix diagonal = data.subspace[i].transpose() * F;
+    for (int a = 0; a < count_i; ++a) {
+      for (int b = 0; b < count_i; ++b) mass(va_i + axes_i[a], va_i + axes_i[b]) = diagonal(a, b);
+    }
+    std::size_t j = i;
+    while (model.segment_parent[j] >= 0) {
+      F = data.parent_to_child[j].Matrix().transpose() * F;
+      j = static_cast<std::size_t>(model.segment_parent[j]);
+      int axes_j[6];
+      const int count_j = ActiveAxes(model, j, data.locked[j], axes_j);
+      const auto va_j = static_cast<Eigen::Index>(model.v_address[j]);
+      // Locked axes of an ancestor couple to nothing.
+      for (int a = 0; a < model.v_count[i]; ++a) {
+        for (int b = 0; b < model.v_count[j]; ++b) {
+          mass(va_i + a, va_j + b) = 0.0;
+          mass(va_j + b, va_i + a) = 0.0;
+        }
+      }
+      if (count_j == 0) continue;
+      const SmallMatrix block = F.transpose() * data.subspace[j];
+      for (int a = 0; a < count_i; ++a) {
+        for (int b = 0; b < count_j; ++b) {
+          mass(va_i + axes_i[a], va_j + axes_j[b]) = block(a, b);
+          mass(va_j + axes_j[b], va_i + axes_i[a]) = block(a, b);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace sled::runtime
