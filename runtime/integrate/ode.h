@@ -64,7 +64,7 @@ struct IntegratorOptions {
 };
 
 struct IntegratorStats {
-  long steps = 0;           // accepted
+  long steps = 0;  // accepted
   long rejected = 0;
   long evaluations = 0;     // calls of Derivative
   long jacobians = 0;       // Jacobians formed (analytic or by differences)
@@ -79,9 +79,9 @@ struct IntegratorStats {
 
 enum class IntegratorStatus {
   kOk,
-  kMinStepReached,  // the error test failed at the minimum step: never silently accepted
+  kMinStepReached,    // the error test failed at the minimum step: never silently accepted
   kEvaluationFailed,  // Derivative returned false at the minimum step
-  kNotFinite,       // the state became NaN or infinite
+  kNotFinite,         // the state became NaN or infinite
 };
 
 struct AdvanceResult {
