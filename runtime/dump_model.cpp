@@ -48,22 +48,6 @@ const T& Get(const std::vector<T>& values, std::size_t i) {
   return values.at(i);
 }
 
-const char* Name(JointKind kind) {
-  switch (kind) {
-    case JointKind::kFree:
-      return "free";
-    case JointKind::kBall:
-      return "ball";
-    case JointKind::kPin:
-      return "pin";
-    case JointKind::kSlip:
-      return "slip";
-    case JointKind::kEuler:
-      return "euler";
-  }
-  return "?";
-}
-
 const char* Name(Model::ConstraintKind kind) {
   switch (kind) {
     case Model::ConstraintKind::kFixedPoint:
@@ -194,7 +178,7 @@ std::string DumpModel(const Model& m) {
     const JointKind kind = Get(m.joint_kind, s);
     std::string joint =
         fmt::format("joint {} {} {} q {}+{} v {}+{}", s,
-                    Get(m.joint_name, s).empty() ? "-" : Get(m.joint_name, s), Name(kind),
+                    Get(m.joint_name, s).empty() ? "-" : Get(m.joint_name, s), JointKindName(kind),
                     Get(m.q_address, s), Get(m.q_count, s), Get(m.v_address, s), Get(m.v_count, s));
     if (kind != JointKind::kFree) {
       const auto& functions = Get(m.joint_function, s);

@@ -210,4 +210,13 @@ struct Model {
 // A stable text form of the model for `sled check --dump-model` and golden tests.
 std::string DumpModel(const Model& model);
 
+// The keyword of a joint kind as the language spells it ("free" for a floating root).
+const char* JointKindName(JointKind kind);
+// Coordinates of a joint kind: positions (quaternions count four) and velocities.
+int PositionCount(JointKind kind);
+int VelocityCount(JointKind kind);
+// Appends the characteristics of a joint that has none (no torque functions, damping, stops or
+// locks) for the segment just added: what a floating root or a plain joint starts with.
+void AppendPlainJointCharacteristics(Model& model);
+
 }  // namespace sled::runtime

@@ -64,22 +64,6 @@ void PutQuaternion(std::vector<double>& q, std::size_t at, const Eigen::Quaterni
   q[at + 3] = quaternion.z();
 }
 
-const char* KindName(JointKind kind) {
-  switch (kind) {
-    case JointKind::kBall:
-      return "ball";
-    case JointKind::kPin:
-      return "pin";
-    case JointKind::kSlip:
-      return "slip";
-    case JointKind::kEuler:
-      return "euler";
-    case JointKind::kFree:
-      break;
-  }
-  return "free";
-}
-
 }  // namespace
 
 void LowerInitialState(Lowering& lowering) {
@@ -236,7 +220,8 @@ void LowerInitialState(Lowering& lowering) {
             fmt::format("the initial angular velocity of `{}` is matched only in part: it "
                         "hangs from {} joint `{}`{}, which cannot turn it that way relative to "
                         "`{}`",
-                        name, KindName(kind), joint.name, locked != 0 ? " (locked)" : "",
+                        name, runtime::JointKindName(kind), joint.name,
+                        locked != 0 ? " (locked)" : "",
                         model.segment_name[static_cast<std::size_t>(parent)]));
       }
     }

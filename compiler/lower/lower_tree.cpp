@@ -28,36 +28,6 @@ JointKind KindOf(JointType type) {
   return JointKind::kFree;
 }
 
-// Coordinates of each joint kind: positions (quaternions count four) and velocities.
-int PositionCount(JointKind kind) {
-  switch (kind) {
-    case JointKind::kFree:
-      return 7;
-    case JointKind::kBall:
-      return 4;
-    case JointKind::kEuler:
-      return 3;
-    case JointKind::kPin:
-    case JointKind::kSlip:
-      return 1;
-  }
-  return 0;
-}
-
-int VelocityCount(JointKind kind) {
-  switch (kind) {
-    case JointKind::kFree:
-      return 6;
-    case JointKind::kBall:
-    case JointKind::kEuler:
-      return 3;
-    case JointKind::kPin:
-    case JointKind::kSlip:
-      return 1;
-  }
-  return 0;
-}
-
 // The order: fills new_index, old_index and joint_above.
 void OrderSegments(Lowering& lowering) {
   const CheckedScenario& scenario = lowering.scenario();
@@ -182,16 +152,7 @@ void LowerTree(Lowering& lowering) {
       model.joint_frame_in_parent.push_back(runtime::Mat3::Identity());
       model.joint_frame_in_child.push_back(runtime::Mat3::Identity());
       model.joint_axis.push_back(runtime::Vec3::Zero());
-      model.joint_function.push_back({-1, -1, -1});
-      model.joint_viscous.push_back(0.0);
-      model.joint_coulomb.push_back(0.0);
-      model.joint_stop.push_back(0.0);
-      model.joint_twist_stop.push_back(0.0);
-      model.joint_stop_impulse.push_back(0);
-      model.joint_restitution.push_back(0.0);
-      model.joint_locked.push_back(0);
-      model.joint_lock_below.push_back(-1.0);
-      model.joint_unlock_above.push_back(-1.0);
+      runtime::AppendPlainJointCharacteristics(model);
       model.joint_source.emplace_back();
     } else {
       const Joint& joint = lowering.joint(j);
@@ -240,10 +201,10 @@ void LowerTree(Lowering& lowering) {
     const JointKind kind = model.joint_kind.back();
     model.q_address.push_back(nq);
     model.v_address.push_back(nv);
-    model.q_count.push_back(PositionCount(kind));
-    model.v_count.push_back(VelocityCount(kind));
-    nq += PositionCount(kind);
-    nv += VelocityCount(kind);
+    model.q_count.push_back(runtime::PositionCount(kind));
+    model.v_count.push_back(runtime::VelocityCount(kind));
+    nq += runtime::PositionCount(kind);
+    nv += runtime::VelocityCount(kind);
   }
   model.nq = nq;
   model.nv = nv;

@@ -22,13 +22,8 @@ inline std::size_t AddSegment(Model& model, std::string name, int parent, JointK
   model.joint_kind.push_back(kind);
   model.joint_name.push_back(parent >= 0 || kind != JointKind::kFree ? "j" + std::to_string(s)
                                                                      : std::string());
-  const int nq = kind == JointKind::kFree    ? 7
-                 : kind == JointKind::kBall  ? 4
-                 : kind == JointKind::kEuler ? 3
-                                             : 1;
-  const int nv = kind == JointKind::kFree                                ? 6
-                 : kind == JointKind::kBall || kind == JointKind::kEuler ? 3
-                                                                         : 1;
+  const int nq = PositionCount(kind);
+  const int nv = VelocityCount(kind);
   model.q_address.push_back(model.nq);
   model.v_address.push_back(model.nv);
   model.q_count.push_back(nq);
@@ -46,16 +41,7 @@ inline std::size_t AddSegment(Model& model, std::string name, int parent, JointK
   model.joint_point_in_child.push_back(point_in_child);
   model.joint_frame_in_child.push_back(Mat3::Identity());
   model.joint_axis.push_back(axis.normalized());
-  model.joint_function.push_back({-1, -1, -1});
-  model.joint_viscous.push_back(0.0);
-  model.joint_coulomb.push_back(0.0);
-  model.joint_stop.push_back(0.0);
-  model.joint_twist_stop.push_back(0.0);
-  model.joint_stop_impulse.push_back(0);
-  model.joint_restitution.push_back(0.0);
-  model.joint_locked.push_back(0);
-  model.joint_lock_below.push_back(-1.0);
-  model.joint_unlock_above.push_back(-1.0);
+  AppendPlainJointCharacteristics(model);
   model.segment_source.push_back({});
   model.joint_source.push_back({});
   return s;
