@@ -41,6 +41,9 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
       }
       return;
     case JointKind::kBall: {
+      // A ball joint without characteristics applies nothing: skip the decomposition (the
+      // generalized forces were zeroed before the joints were visited).
+      if (f[0] < 0 && f[1] < 0 && viscous == 0 && coulomb == 0) return;
       const SwingTwist angles = DecomposeSwingTwist(QuaternionAt(data.q, qa).normalized());
       const Mat3& frame_child = model.joint_frame_in_child[s];
       const Mat3 rotation = QuaternionAt(data.q, qa).normalized().toRotationMatrix();
