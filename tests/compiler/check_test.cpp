@@ -14,6 +14,7 @@
 #include "compiler/check/check.h"
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
+#include "tests/compiler/sled_process.h"
 
 namespace sled::compiler {
 namespace {
@@ -338,13 +339,12 @@ TEST(CheckImports, UnknownModuleSuggestsTheClosest) {
 }
 
 TEST(CheckImports, ACycleOfImportsIsReported) {
-  const auto folder = std::filesystem::temp_directory_path() / "sled_import_cycle_test";
-  std::filesystem::create_directories(folder);
+  const sled::testing::TempFolder temp;
+  const std::filesystem::path& folder = temp.path();
   std::ofstream(folder / "a.sled") << "import b\n";
   std::ofstream(folder / "b.sled") << "import a\n";
   const Result r = CheckText("import a\n", {}, (folder / "main.sled").string());
   EXPECT_THAT(r.codes, Contains(HasSubstr("E0208")));
-  std::filesystem::remove_all(folder);
 }
 
 TEST(CheckLints, ContactBetweenSurfacesOfOneFrameCanNeverTouch) {

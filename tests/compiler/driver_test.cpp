@@ -1,122 +1,36 @@
 // The `sled` command-line program (DESIGN.md §6): exit codes, where diagnostics go, `explain`,
 // `fmt --check` and `--set`. Runs the built binary, found next to this test executable's build
 // folder: <build>/tests/sled_compiler_tests -> <build>/compiler/driver/sled.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <optional>
-#include <sstream>
 #include <string>
-#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "lang/diagnostics/diagnostic.h"
+#include "tests/compiler/sled_process.h"
 
 namespace sled {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kRoot = SLED_SOURCE_ROOT;
+using testing::ReadText;
+using testing::SledResult;
+using testing::WriteText;
 
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+const fs::path kRoot = testing::kSourceRoot;
 
-void WriteText(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
-
-fs::path SledBinary() {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  if (error) return {};
-  return (self.parent_path().parent_path() / "compiler" / "driver" / "sled").lexically_normal();
-}
-
-// A word for /bin/sh: single quotes, with embedded single quotes closed and escaped.
-std::string Quote(const std::string& word) {
-  std::string out = "'";
-  for (char c : word) {
-    if (c == '\'') {
-      out += "'\\''";
-    } else {
-      out += c;
-    }
-  }
-  return out + "'";
-}
-
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-// A folder of its own under the system's temporary folder, removed at the end of the test.
-class TempFolder {
- public:
-  TempFolder() {
-    std::string pattern = (fs::temp_directory_path() / "sled_driver_test_XXXXXX").string();
-    if (mkdtemp(pattern.data()) != nullptr) path_ = pattern;
-  }
-  ~TempFolder() {
-    std::error_code error;
-    if (!path_.empty()) fs::remove_all(path_, error);
-  }
-  TempFolder(const TempFolder&) = delete;
-  TempFolder& operator=(const TempFolder&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-class DriverTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    sled_ = SledBinary();
-    ASSERT_TRUE(fs::exists(sled_))
-        << "no sled binary at " << sled_ << "; build the `sled` target first";
-    ASSERT_FALSE(temp_.path().empty()) << "cannot create a temporary folder";
-  }
-
-  // Runs `sled ARGS...` in the repository root, capturing both streams.
-  Result Sled(const std::vector<std::string>& args) {
-    const fs::path out = temp_.path() / "stdout.txt";
-    const fs::path err = temp_.path() / "stderr.txt";
-    std::string command = "cd " + Quote(kRoot.string()) + " && " + Quote(sled_.string());
-    for (const std::string& arg : args) command += " " + Quote(arg);
-    command += " >" + Quote(out.string()) + " 2>" + Quote(err.string()) + " </dev/null";
-    Result result;
-    const int status = std::system(command.c_str());
-    if (status != -1 && WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-    result.out = ReadText(out);
-    result.err = ReadText(err);
-    return result;
-  }
-
-  fs::path sled_;
-  TempFolder temp_;
-};
+using DriverTest = testing::SledProcessTest;
 
 TEST_F(DriverTest, CheckOfACleanScenarioExitsZeroAndPrintsNothing) {
-  const Result result = Sled({"check", "tests/golden/ok_belts.sled", "--diagnostics=compact"});
+  const SledResult result = Sled({"check", "tests/golden/ok_belts.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err, "");
   EXPECT_EQ(result.out, "");
 }
 
 TEST_F(DriverTest, CheckWithErrorsExitsOneWithDiagnosticsOnStandardError) {
-  const Result result =
+  const SledResult result =
       Sled({"check", "tests/golden/fail_e0204_unknown_segment.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("error[E0204]"), std::string::npos) << result.err;
@@ -126,7 +40,7 @@ TEST_F(DriverTest, CheckWithErrorsExitsOneWithDiagnosticsOnStandardError) {
 }
 
 TEST_F(DriverTest, RichDiagnosticsAreTheDefaultAndEndWithASummary) {
-  const Result result = Sled({"check", "tests/golden/rich_e0204.sled"});
+  const SledResult result = Sled({"check", "tests/golden/rich_e0204.sled"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err.rfind("error[E", 0), 0u) << result.err;
   EXPECT_NE(result.err.find(" --> tests/golden/rich_e0204.sled:"), std::string::npos) << result.err;
@@ -134,60 +48,61 @@ TEST_F(DriverTest, RichDiagnosticsAreTheDefaultAndEndWithASummary) {
 }
 
 TEST_F(DriverTest, WarningsAloneExitZero) {
-  const Result result =
+  const SledResult result =
       Sled({"check", "tests/golden/fail_w0007_unused_parameter.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.err.find("warning[W0007]"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, UnknownCommandIsAUsageError) {
-  const Result result = Sled({"frobnicate", "tests/golden/ok_belts.sled"});
+  const SledResult result = Sled({"frobnicate", "tests/golden/ok_belts.sled"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("unknown command `frobnicate`"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, NoCommandIsAUsageError) {
-  const Result result = Sled({});
+  const SledResult result = Sled({});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("usage: sled"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, UnknownOptionIsAUsageError) {
-  const Result result = Sled({"check", "--frobnicate", "tests/golden/ok_belts.sled"});
+  const SledResult result = Sled({"check", "--frobnicate", "tests/golden/ok_belts.sled"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("unknown option `--frobnicate`"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, ExplainPrintsTheDocumentationPage) {
-  const Result result = Sled({"explain", "E0204"});
+  const SledResult result = Sled({"explain", "E0204"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.out.rfind("# E0204", 0), 0u) << result.out;
   EXPECT_EQ(result.out, ReadText(kRoot / "docs/diagnostics/E0204.md"));
 }
 
 TEST_F(DriverTest, ExplainAcceptsLowercaseCodes) {
-  const Result result = Sled({"explain", "w0006"});
+  const SledResult result = Sled({"explain", "w0006"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.out.rfind("# W0006", 0), 0u) << result.out;
 }
 
 TEST_F(DriverTest, ExplainHasAPageForEveryCode) {
   for (const lang::DiagnosticInfo& info : lang::AllDiagnostics()) {
-    const Result result = Sled({"explain", std::string(info.code)});
+    const SledResult result = Sled({"explain", std::string(info.code)});
     EXPECT_EQ(result.exit_code, 0) << info.code << ": " << result.err;
     EXPECT_EQ(result.out.rfind("# " + std::string(info.code) + ":", 0), 0u) << info.code;
   }
 }
 
 TEST_F(DriverTest, ExplainOfAnUnknownCodeIsAUsageError) {
-  const Result result = Sled({"explain", "E9999"});
+  const SledResult result = Sled({"explain", "E9999"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
   EXPECT_NE(result.err.find("no diagnostic `E9999`"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, MissingFileReportsE0107) {
-  const Result result = Sled({"check", "tests/golden/no_such_file.sled", "--diagnostics=compact"});
+  const SledResult result =
+      Sled({"check", "tests/golden/no_such_file.sled", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("error[E0107]"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("tests/golden/no_such_file.sled"), std::string::npos) << result.err;
@@ -195,18 +110,18 @@ TEST_F(DriverTest, MissingFileReportsE0107) {
 
 TEST_F(DriverTest, FmtCheckAcceptsAFormattedFile) {
   // Format a copy first: whatever the formatter writes must then pass `--check` (idempotence).
-  const fs::path copy = temp_.path() / "formatted.sled";
+  const fs::path copy = temp() / "formatted.sled";
   fs::copy_file(kRoot / "tests/golden/ok_joints.sled", copy);
-  const Result formatted = Sled({"fmt", copy.string()});
+  const SledResult formatted = Sled({"fmt", copy.string()});
   ASSERT_EQ(formatted.exit_code, 0) << formatted.err;
   const std::string text = ReadText(copy);
-  const Result result = Sled({"fmt", "--check", copy.string()});
+  const SledResult result = Sled({"fmt", "--check", copy.string()});
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
   EXPECT_EQ(ReadText(copy), text);
 }
 
 TEST_F(DriverTest, FmtCheckRejectsABadlyFormattedFileWithoutChangingIt) {
-  const fs::path copy = temp_.path() / "messy.sled";
+  const fs::path copy = temp() / "messy.sled";
   const std::string messy =
       "scenario   \"messy\"{\n"
       "time{end=100 ms   output_every=1 ms}\n"
@@ -214,7 +129,7 @@ TEST_F(DriverTest, FmtCheckRejectsABadlyFormattedFileWithoutChangingIt) {
       "  vehicle sled { motion = half_sine(delta_v=speed,duration=100 ms,axis=-x) }\n"
       "}\n";
   WriteText(copy, messy);
-  const Result result = Sled({"fmt", "--check", copy.string()});
+  const SledResult result = Sled({"fmt", "--check", copy.string()});
   EXPECT_EQ(result.exit_code, 1) << result.out << result.err;
   EXPECT_NE(result.out.find("would be reformatted"), std::string::npos) << result.out;
   EXPECT_EQ(ReadText(copy), messy);
@@ -225,8 +140,8 @@ TEST_F(DriverTest, FmtCheckRejectsABadlyFormattedFileWithoutChangingIt) {
 }
 
 TEST_F(DriverTest, SetOverridesADeclaredParameter) {
-  const Result result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set",
-                              "speed=40 km/h", "--diagnostics=compact", "--dump-checked"});
+  const SledResult result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set",
+                                  "speed=40 km/h", "--diagnostics=compact", "--dump-checked"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err, "");
   // 40 km/h is 11.11 m/s, where the file's own 30 mph is 13.4112 m/s.
@@ -234,15 +149,16 @@ TEST_F(DriverTest, SetOverridesADeclaredParameter) {
 }
 
 TEST_F(DriverTest, SetOfAnUndeclaredParameterReportsE0213) {
-  const Result result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set", "nosuch=1",
-                              "--diagnostics=compact"});
+  const SledResult result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set",
+                                  "nosuch=1", "--diagnostics=compact"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("error[E0213]"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("`--set nosuch`"), std::string::npos) << result.err;
 }
 
 TEST_F(DriverTest, SetWithoutEqualsIsAUsageError) {
-  const Result result = Sled({"check", "tests/golden/ok_units_conversion.sled", "--set", "speed"});
+  const SledResult result =
+      Sled({"check", "tests/golden/ok_units_conversion.sled", "--set", "speed"});
   EXPECT_EQ(result.exit_code, 2);
 }
 

@@ -1,79 +1,44 @@
 // `sled run` end to end: the exit status, the files it writes, and a numerical failure that
 // stops the run with status 3, names the segment and its line, and keeps the outputs so far.
-#include <sys/wait.h>
-
-#include <cstdio>
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
-#include <fmt/format.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "tests/compiler/sled_process.h"
+
+namespace sled {
 namespace {
 
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using testing::ReadText;
+using testing::SledResult;
+using testing::WriteText;
 
-fs::path SledBinary() {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  return (self.parent_path().parent_path() / "compiler" / "driver" / "sled").lexically_normal();
-}
+using RunCommand = testing::SledProcessTest;
 
-struct Outcome {
-  int status = -1;
-  std::string stderr_text;
-};
-
-Outcome RunSled(const std::string& arguments) {
-  const fs::path log = fs::temp_directory_path() / "sled_run_command_test.log";
-  const std::string command =
-      fmt::format("'{}' {} 2>'{}'", SledBinary().string(), arguments, log.string());
-  const int raw = std::system(command.c_str());
-  Outcome outcome;
-  outcome.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(log);
-  std::stringstream text;
-  text << in.rdbuf();
-  outcome.stderr_text = text.str();
-  return outcome;
-}
-
-std::string ReadAll(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-TEST(RunCommand, ThePendulumExampleRunsAndWritesItsOutputs) {
-  const fs::path out = fs::temp_directory_path() / "sled_run_pendulum";
-  fs::remove_all(out);
-  const Outcome outcome = RunSled(
-      fmt::format("run '{}/examples/pendulum.sled' -o '{}'", SLED_SOURCE_ROOT, out.string()));
-  ASSERT_EQ(outcome.status, 0) << outcome.stderr_text;
-  const std::string csv = ReadAll(out / "timeseries.csv");
+TEST_F(RunCommand, ThePendulumExampleRunsAndWritesItsOutputs) {
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", "examples/pendulum.sled", "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string csv = ReadText(out / "timeseries.csv");
   EXPECT_THAT(csv, HasSubstr("time [s],pendulum.lower.position.x [m]"));
   // 2 s at 1 ms: 2001 rows and the header.
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2002);
-  const std::string summary = ReadAll(out / "summary.json");
+  const std::string summary = ReadText(out / "summary.json");
   EXPECT_THAT(summary, HasSubstr("\"status\": \"ok\""));
   EXPECT_THAT(summary, HasSubstr("\"method\": \"dopri5\""));
   EXPECT_THAT(summary, HasSubstr("\"rejected_steps\""));
   EXPECT_THAT(summary, HasSubstr("\"error_estimate\""));
   EXPECT_THAT(summary, HasSubstr("\"wall_time_seconds\""));
-  fs::remove_all(out);
 }
 
-TEST(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {
+TEST_F(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {
   // A massless segment that nothing holds: its articulated inertia is singular.
-  const fs::path dir = fs::temp_directory_path() / "sled_run_failure";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "broken.sled") << R"(scenario "singular" {
+  WriteText(temp() / "broken.sled", R"(scenario "singular" {
   time { end = 10 ms  output_every = 1 ms }
   body b {
     segment heavy { mass = 1 kg  inertia = (1, 1, 1) kg*m^2 }
@@ -82,28 +47,24 @@ TEST(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {
   }
   output { position b.heavy }
 }
-)";
-  const Outcome outcome = RunSled(
-      fmt::format("run '{}' -o '{}'", (dir / "broken.sled").string(), (dir / "out").string()));
-  EXPECT_EQ(outcome.status, 3) << outcome.stderr_text;
-  EXPECT_THAT(outcome.stderr_text, HasSubstr("failed at t = 0"));
-  EXPECT_THAT(outcome.stderr_text, HasSubstr("b.ghost"));
-  EXPECT_THAT(outcome.stderr_text, HasSubstr("broken.sled:5:"));
-  EXPECT_TRUE(fs::exists(dir / "out" / "timeseries.csv"));
-  EXPECT_THAT(ReadAll(dir / "out" / "summary.json"), HasSubstr("\"status\": \"failed\""));
-  fs::remove_all(dir);
+)");
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "broken.sled").string(), "-o", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("failed at t = 0"));
+  EXPECT_THAT(result.err, HasSubstr("b.ghost"));
+  EXPECT_THAT(result.err, HasSubstr("broken.sled:5:"));
+  EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+  EXPECT_THAT(ReadText(out / "summary.json"), HasSubstr("\"status\": \"failed\""));
 }
 
-TEST(RunCommand, InputErrorsExitWithOne) {
-  const fs::path dir = fs::temp_directory_path() / "sled_run_input_error";
-  fs::create_directories(dir);
-  std::ofstream(dir / "bad.sled")
-      << "scenario \"x\" { time { end = 1 kg  output_every = 1 ms } }\n";
-  const Outcome outcome =
-      RunSled(fmt::format("run '{}' -o '{}'", (dir / "bad.sled").string(), (dir / "out").string()));
-  EXPECT_EQ(outcome.status, 1);
-  EXPECT_THAT(outcome.stderr_text, HasSubstr("E0302"));
-  fs::remove_all(dir);
+TEST_F(RunCommand, InputErrorsExitWithOne) {
+  WriteText(temp() / "bad.sled", "scenario \"x\" { time { end = 1 kg  output_every = 1 ms } }\n");
+  const SledResult result =
+      Sled({"run", (temp() / "bad.sled").string(), "-o", (temp() / "out").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("E0302"));
 }
 
 }  // namespace
+}  // namespace sled
