@@ -101,7 +101,6 @@ FrameMotion MotionOf(const Model& model, const Data& data, const FrameRef& frame
       return motion;
     }
     case FrameRef::Kind::kVehicle: {
-      // A vehicle turns at a constant rate (VehicleAt integrates no angular acceleration).
       const VehicleState vehicle =
           VehicleAt(model, static_cast<std::size_t>(frame.index), data.time);
       motion.rotation = vehicle.rotation;
@@ -109,6 +108,7 @@ FrameMotion MotionOf(const Model& model, const Data& data, const FrameRef& frame
       motion.velocity = vehicle.velocity;
       motion.acceleration = vehicle.acceleration;
       motion.angular_velocity = vehicle.angular_velocity;
+      motion.angular_acceleration = vehicle.angular_acceleration;
       return motion;
     }
     case FrameRef::Kind::kGround:

@@ -203,6 +203,12 @@ std::string DumpModel(const Model& m) {
                      m.vehicle_name[v], Text(Get(m.vehicle_position, v)),
                      Text(Get(m.vehicle_orientation, v)), Text(Get(m.vehicle_velocity, v)),
                      MotionText(Get(m.vehicle_motion, v))));
+    const Vec3 spin =
+        v < m.vehicle_angular_velocity.size() ? m.vehicle_angular_velocity[v] : Vec3::Zero();
+    const std::size_t samples = v < m.vehicle_path.size() ? m.vehicle_path[v].size() : 0;
+    if (!spin.isZero() || samples > 0) {
+      line(fmt::format("  turning angular_velocity {} path {} samples", Text(spin), samples));
+    }
   }
   for (std::size_t f = 0; f < m.functions.size(); ++f) {
     line(fmt::format("function {} {}", f, FunctionText(m.functions, f)));

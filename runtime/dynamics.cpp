@@ -43,7 +43,7 @@ Frame BaseFrame(const Model& model, const FrameRef& base, double t) {
   const Vec3 w = vehicle.rotation.transpose() * vehicle.angular_velocity;
   frame.velocity << w, vehicle.rotation.transpose() * vehicle.velocity;
   // Spatial acceleration of a frame whose origin accelerates by a (classical): a - w x v.
-  frame.acceleration << Vec3::Zero(),
+  frame.acceleration << vehicle.rotation.transpose() * vehicle.angular_acceleration,
       vehicle.rotation.transpose() * vehicle.acceleration - w.cross(frame.velocity.tail<3>());
   return frame;
 }

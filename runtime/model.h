@@ -17,6 +17,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace sled::runtime {
 
@@ -83,6 +84,17 @@ struct VehicleMotion {
   std::vector<std::array<double, 7>> six_dof;  // t, linear (3), angular (3)
 };
 
+// A point of a turning vehicle's path relative to its starting pose (TabulateVehiclePath):
+// rotation from the vehicle at t = 0, angular velocity in vehicle axes, and the displacement
+// and velocity gained, in the axes of the vehicle at t = 0.
+struct VehiclePathSample {
+  double t = 0.0;  // from the start of the run
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  Vec3 angular_velocity = Vec3::Zero();
+  Vec3 displacement = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+};
+
 // A line back to the scenario, so runtime messages can name it.
 struct SourcePosition {
   std::string file;
@@ -139,9 +151,13 @@ struct Model {
   // --- Vehicles (prescribed motion).
   std::vector<std::string> vehicle_name;
   std::vector<VehicleMotion> vehicle_motion;
-  std::vector<Vec3> vehicle_position;     // at t = 0
-  std::vector<Mat3> vehicle_orientation;  // at t = 0, vehicle to world
-  std::vector<Vec3> vehicle_velocity;     // at t = 0
+  std::vector<Vec3> vehicle_position;          // at t = 0
+  std::vector<Mat3> vehicle_orientation;       // at t = 0, vehicle to world
+  std::vector<Vec3> vehicle_velocity;          // at t = 0
+  std::vector<Vec3> vehicle_angular_velocity;  // at t = 0, world axes
+  // A vehicle that turns (an angular acceleration table or an initial angular velocity) has its
+  // path tabulated when the Model is built; empty for one that only translates.
+  std::vector<std::vector<VehiclePathSample>> vehicle_path;
 
   // --- Functions.
   FunctionTable functions;

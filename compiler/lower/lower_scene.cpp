@@ -7,6 +7,7 @@
 
 #include "compiler/check/schema.h"
 #include "compiler/lower/lowering.h"
+#include "runtime/vehicle.h"
 
 namespace sled::compiler::lowering {
 namespace {
@@ -54,6 +55,7 @@ void LowerVehicles(Lowering& lowering) {
     model.vehicle_position.push_back(ToEigen(vehicle.position));
     model.vehicle_orientation.push_back(RotationMatrix(vehicle.orientation));
     model.vehicle_velocity.push_back(ToEigen(vehicle.velocity));
+    model.vehicle_angular_velocity.push_back(runtime::Vec3::Zero());
   }
   for (const InitialCondition& initial : scenario.initial_conditions) {
     if (initial.kind != InitialCondition::Kind::kVehicle) continue;
@@ -62,11 +64,12 @@ void LowerVehicles(Lowering& lowering) {
     if (initial.orientation) model.vehicle_orientation.at(v) = RotationMatrix(*initial.orientation);
     if (initial.velocity) model.vehicle_velocity.at(v) = ToEigen(*initial.velocity);
     if (initial.angular_velocity) {
-      lowering.AddNote(initial.range,
-                       fmt::format("the initial angular velocity of vehicle `{}` is left out: "
-                                   "vehicles turn only by a `six_dof` motion",
-                                   model.vehicle_name[v]));
+      model.vehicle_angular_velocity.at(v) = ToEigen(*initial.angular_velocity);
     }
+  }
+  for (std::size_t v = 0; v < model.nvehicle(); ++v) {
+    model.vehicle_path.push_back(runtime::TabulateVehiclePath(
+        model.vehicle_motion[v], model.vehicle_orientation[v], model.vehicle_angular_velocity[v]));
   }
 }
 
