@@ -485,6 +485,9 @@ void AdvancePositions(const Model& model, const Data& data, std::span<const doub
           if (!(locked & (1u << k))) q[qa + k] += dv[va + k];
         }
         break;
+      case JointKind::kPlanar:
+        for (std::size_t k = 0; k < 3; ++k) q[qa + k] += dv[va + k];
+        break;
     }
   }
 }

@@ -25,6 +25,7 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
   double* tau = data.generalized_force.data() + va;
   switch (model.joint_kind[s]) {
     case JointKind::kFree:
+    case JointKind::kPlanar:
       return;
     case JointKind::kPin:
     case JointKind::kSlip: {

@@ -31,6 +31,9 @@ int ActiveAxes(const Model& model, std::size_t s, std::uint8_t locked, int axes[
     case JointKind::kFree:
       for (int k = 0; k < 6; ++k) axes[count++] = k;
       return count;
+    case JointKind::kPlanar:
+      for (int k = 0; k < 3; ++k) axes[count++] = k;
+      return count;
     case JointKind::kEuler:
       for (int k = 0; k < 3; ++k) {
         if (!(locked & (1u << k))) axes[count++] = k;
@@ -93,6 +96,20 @@ void ComputeJointMotion(const Model& model, std::size_t s, std::span<const doubl
         motion.subspace.col(0).head<3>().setZero();
         motion.subspace.col(0).tail<3>() = frame_child * axis;
       }
+      return;
+    }
+    case JointKind::kPlanar: {
+      // x and z in base axes, then the turn about y. The segment sees the base's x and z axes
+      // turned by -angle, so S depends on q: Sdot qdot = -w x (the linear part).
+      motion.rotation = Eigen::AngleAxisd(q[qa + 2], Vec3::UnitY()).toRotationMatrix();
+      motion.translation = Vec3(q[qa], 0.0, q[qa + 1]);
+      const Mat3 base_to_child = motion.rotation.transpose();
+      motion.subspace.setZero();
+      motion.subspace.col(0).tail<3>() = base_to_child.col(0);
+      motion.subspace.col(1).tail<3>() = base_to_child.col(2);
+      motion.subspace(1, 2) = 1.0;
+      const Vec3 linear = base_to_child * Vec3(v[va], 0.0, v[va + 1]);
+      motion.bias.tail<3>() = -Vec3(0.0, v[va + 2], 0.0).cross(linear);
       return;
     }
     case JointKind::kEuler: {
@@ -163,6 +180,9 @@ void PositionDerivative(const Model& model, std::span<const double> q, std::span
         break;
       case JointKind::kEuler:
         for (int k = 0; k < 3; ++k) qdot[qa + k] = (locked[s] & (1u << k)) ? 0.0 : v[va + k];
+        break;
+      case JointKind::kPlanar:
+        for (int k = 0; k < 3; ++k) qdot[qa + k] = v[va + k];
         break;
     }
   }

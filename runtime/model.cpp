@@ -12,6 +12,8 @@ const char* JointKindName(JointKind kind) {
       return "slip";
     case JointKind::kEuler:
       return "euler";
+    case JointKind::kPlanar:
+      return "planar";
     case JointKind::kFree:
       break;
   }
@@ -25,6 +27,7 @@ int PositionCount(JointKind kind) {
     case JointKind::kBall:
       return 4;
     case JointKind::kEuler:
+    case JointKind::kPlanar:
       return 3;
     case JointKind::kPin:
     case JointKind::kSlip:
@@ -39,6 +42,7 @@ int VelocityCount(JointKind kind) {
       return 6;
     case JointKind::kBall:
     case JointKind::kEuler:
+    case JointKind::kPlanar:
       return 3;
     case JointKind::kPin:
     case JointKind::kSlip:

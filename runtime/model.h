@@ -49,8 +49,9 @@ struct FrameRef {
 // How a segment moves relative to its parent. kFree: a reference segment (position and
 // quaternion); kBall: a quaternion; kPin: an angle about `joint_axis`; kSlip: a displacement
 // along `joint_axis`; kEuler: precession, nutation and spin (z, then y, then x of the joint
-// frame; each axis can be locked).
-enum class JointKind : std::uint8_t { kFree, kBall, kPin, kSlip, kEuler };
+// frame; each axis can be locked); kPlanar: a reference segment under 2-D symmetry, moving in
+// the xz plane of its base (x, z and a turn about y; the velocities in base axes).
+enum class JointKind : std::uint8_t { kFree, kBall, kPin, kSlip, kEuler, kPlanar };
 
 // A function of one variable (CVS: constant, table with linear interpolation, polynomial up to
 // degree five) and its unloading parameters.

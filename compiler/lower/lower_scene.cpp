@@ -280,10 +280,10 @@ void NoteLeftOut(Lowering& lowering) {
         fmt::format("injury criterion `{}({})` is not computed yet; left out", name, target));
   }
   const RunSettings& run = scenario.run;
-  if (run.symmetry != Symmetry::kNone) {
-    lowering.AddNote({}, fmt::format("{} symmetry is not applied yet: every segment keeps all "
-                                     "its degrees of freedom",
-                                     run.symmetry == Symmetry::kPlanar ? "planar" : "mirror"));
+  if (run.symmetry == Symmetry::kMirror) {
+    lowering.AddNote({},
+                     "mirror symmetry is not applied yet: every segment keeps all its "
+                     "degrees of freedom");
   }
   if (run.settle_duration) {
     lowering.AddNote({},

@@ -64,6 +64,26 @@ void PutQuaternion(std::vector<double>& q, std::size_t at, const Eigen::Quaterni
   q[at + 3] = quaternion.z();
 }
 
+// The signed angle of `rotation` about the unit `axis`, and how much of it turns about other
+// axes (the norm of the rest of its vector part): planar symmetry keeps only the first.
+struct AxisAngle {
+  double angle = 0.0;
+  double off_axis = 0.0;
+};
+AxisAngle AngleAbout(const Eigen::Quaterniond& rotation, const runtime::Vec3& axis) {
+  const double along = rotation.vec().dot(axis);
+  return {2.0 * std::atan2(along, rotation.w()), (rotation.vec() - along * axis).norm()};
+}
+
+// Tells when planar symmetry drops part of an initial condition.
+void NoteOffPlane(Lowering& lowering, const SourceRange& range, double off_plane,
+                  const std::string& what) {
+  if (!(off_plane > 1e-9)) return;
+  lowering.AddNote(range, fmt::format("planar symmetry: the {} leaves the xz plane; only its "
+                                      "in-plane part is kept",
+                                      what));
+}
+
 }  // namespace
 
 void LowerInitialState(Lowering& lowering) {
@@ -133,6 +153,51 @@ void LowerInitialState(Lowering& lowering) {
       continue;
     }
 
+    if (kind == JointKind::kPlanar) {
+      // x, z and the turn about y, with their rates, all in ground axes.
+      const Vec3 p = start.position.value.value_or(Vec3{});
+      const AxisAngle turn = AngleAbout(QuaternionZyx(start.orientation.value.value_or(Vec3{})),
+                                        runtime::Vec3::UnitY());
+      const Vec3 v = start.velocity.value.value_or(Vec3{});
+      const Vec3 w = start.angular_velocity.value.value_or(Vec3{});
+      model.q0[qa] = p[0];
+      model.q0[qa + 1] = p[2];
+      model.q0[qa + 2] = turn.angle;
+      model.v0[va] = v[0];
+      model.v0[va + 1] = v[2];
+      model.v0[va + 2] = w[1];
+      w_world[s] = runtime::Vec3(0.0, w[1], 0.0);
+      NoteOffPlane(lowering, start.orientation.range, turn.off_axis,
+                   fmt::format("initial orientation of `{}`", model.segment_name[s]));
+      NoteOffPlane(lowering, start.velocity.range, std::abs(v[1]),
+                   fmt::format("initial velocity of `{}`", model.segment_name[s]));
+      NoteOffPlane(lowering, start.angular_velocity.range, std::hypot(w[0], w[2]),
+                   fmt::format("initial angular velocity of `{}`", model.segment_name[s]));
+      continue;
+    }
+
+    if (lowering.joint_above[s] < 0 && kind == JointKind::kPin) {
+      // A held root under planar symmetry: the turn about the plane's normal.
+      const runtime::Mat3 r_ws =
+          QuaternionZyx(start.orientation.value.value_or(Vec3{})).toRotationMatrix();
+      const runtime::FrameRef& base = model.segment_base[s];
+      const runtime::Mat3 r_wb =
+          base.kind == runtime::FrameRef::Kind::kVehicle
+              ? ToEigen(lowering.poses.vehicles[static_cast<std::size_t>(base.index)].rotation)
+              : runtime::Mat3::Identity();
+      const runtime::Vec3& axis = model.joint_axis[s];
+      const AxisAngle turn = AngleAbout(Eigen::Quaterniond(r_wb.transpose() * r_ws), axis);
+      model.q0[qa] = turn.angle;
+      const runtime::Vec3 w = ToEigen(start.angular_velocity.value.value_or(Vec3{}));
+      model.v0[va] = (r_wb * axis).dot(w);
+      w_world[s] = model.v0[va] * (r_wb * axis);
+      NoteOffPlane(lowering, start.orientation.range, turn.off_axis,
+                   fmt::format("initial orientation of `{}`", model.segment_name[s]));
+      NoteOffPlane(lowering, start.angular_velocity.range, (w - w_world[s]).norm(),
+                   fmt::format("initial angular velocity of `{}`", model.segment_name[s]));
+      continue;
+    }
+
     if (lowering.joint_above[s] < 0) {
       // A root held at a base point by a ball joint: its orientation relative to the base.
       const runtime::Mat3 r_ws =
@@ -161,10 +226,21 @@ void LowerInitialState(Lowering& lowering) {
         for (std::size_t k = 0; k < 3; ++k) model.q0[qa + k] = a[k];
         break;
       case JointKind::kPin:
+        if (joint.type == JointType::kBall || joint.type == JointType::kEuler) {
+          // A ball or Euler joint made a pin by planar symmetry: its angles' turn about the pin.
+          const AxisAngle turn = AngleAbout(QuaternionZyx(a), model.joint_axis[s]);
+          model.q0[qa] = turn.angle;
+          NoteOffPlane(lowering, SourceRange{}, turn.off_axis,
+                       fmt::format("initial angles of joint `{}`", joint.name));
+        } else {
+          model.q0[qa] = a[0];
+        }
+        break;
       case JointKind::kSlip:
         model.q0[qa] = a[0];
         break;
       case JointKind::kFree:
+      case JointKind::kPlanar:
         break;
     }
 

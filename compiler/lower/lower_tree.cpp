@@ -198,6 +198,7 @@ void LowerTree(Lowering& lowering) {
                                      joint.name));
       }
     }
+    if (lowering.scenario().run.symmetry == Symmetry::kPlanar) RestrictToPlane(lowering, s);
     const JointKind kind = model.joint_kind.back();
     model.q_address.push_back(nq);
     model.v_address.push_back(nv);

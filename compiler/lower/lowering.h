@@ -78,6 +78,9 @@ class Lowering {
 
 // Segments in tree order, their inertia, the joints above them and their coordinates.
 void LowerTree(Lowering& lowering);
+// Planar symmetry: the joint above Model segment `s` loses the degrees of freedom that leave
+// the xz plane (called by LowerTree before the joint's coordinates are counted).
+void RestrictToPlane(Lowering& lowering, std::size_t s);
 // q0 and v0 from the initial conditions (after LowerTree).
 void LowerInitialState(Lowering& lowering);
 // Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).

@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 using runtime::JointKind;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 const fs::path kRoot = SLED_SOURCE_ROOT;
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -162,6 +163,58 @@ TEST(LowerTree, ANullJointStartsAFreeSegmentOfItsOwn) {
   EXPECT_EQ(m.output_index[0], 2);
   ASSERT_EQ(r.lowered.notes.size(), 1u);
   EXPECT_THAT(r.lowered.notes[0], HasSubstr("null joint"));
+}
+
+TEST(LowerSymmetry, PlanarSymmetryKeepsOnlyTheDegreesOfFreedomOfTheXzPlane) {
+  // A floating trunk with a ball joint (neck), an Euler joint (hip), a pin about y (knee), a pin
+  // about x (would leave the plane) and a slip along y (likewise).
+  const Result r = LowerText(Scene(fmt::format(R"(
+  symmetry planar
+  body b {{
+    segment trunk {{ {0} }}
+    segment head {{ {0} }}
+    segment thigh {{ {0} }}
+    segment shank {{ {0} }}
+    segment flap {{ {0} }}
+    segment slider {{ {0} }}
+    joint neck : ball(trunk -> head) {{ at trunk = (0, 0, 0.3) m  at head = (0, 0, -0.1) m }}
+    joint hip : euler(trunk -> thigh) {{ at trunk = (0, 0, -0.3) m  at thigh = (0, 0, 0.2) m }}
+    joint knee : pin(thigh -> shank) {{ at thigh = (0, 0, -0.2) m  at shank = (0, 0, 0.2) m
+                                        axis = (0, 1, 0) }}
+    joint hinge : pin(trunk -> flap) {{ at trunk = (0.1, 0, 0) m  at flap = (0, 0, 0) m
+                                        axis = (1, 0, 0) }}
+    joint rail : slip(trunk -> slider) {{ at trunk = (0, 0, 0) m  at slider = (0, 0, 0) m
+                                         axis = (0, 1, 0) }}
+  }}
+  initial b {{ position = (1, 0.5, 2) m  orientation = (0, 30, 0) deg
+              velocity = (3, 0, -1) m/s  angular_velocity = (0, 2, 0) rad/s }}
+  initial b.neck {{ angles = (0, 20, 0) deg }})",
+                                               kUnitInertia)));
+  ASSERT_CHECKED(r);
+  const runtime::Model& m = r.model();
+  EXPECT_THAT(m.joint_kind, ElementsAre(JointKind::kPlanar, JointKind::kPin, JointKind::kPin,
+                                        JointKind::kPin, JointKind::kPin, JointKind::kSlip));
+  // 3 + 1 + 1 + 1 + 1 + 1 coordinates, no quaternions.
+  EXPECT_EQ(m.nq, 8);
+  EXPECT_EQ(m.nv, 8);
+  // The plane runs through the trunk's starting point; the state holds x, z and the pitch.
+  ExpectNear(m.joint_point_in_parent[0], runtime::Vec3(0, 0.5, 0), 1e-15);
+  EXPECT_NEAR(m.q0[0], 1.0, 1e-15);
+  EXPECT_NEAR(m.q0[1], 2.0, 1e-15);
+  EXPECT_NEAR(m.q0[2], 30.0 * std::numbers::pi / 180, 1e-12);
+  EXPECT_NEAR(m.v0[0], 3.0, 1e-15);
+  EXPECT_NEAR(m.v0[1], -1.0, 1e-15);
+  EXPECT_NEAR(m.v0[2], 2.0, 1e-15);
+  // The neck turns about y by its nutation; the pins that would leave the plane are locked.
+  ExpectNear(m.joint_axis[1], runtime::Vec3(0, 1, 0), 1e-12);
+  EXPECT_NEAR(m.q0[3], 20.0 * std::numbers::pi / 180, 1e-12);
+  EXPECT_EQ(m.joint_locked[3], 0);
+  EXPECT_EQ(m.joint_locked[4], 1);
+  EXPECT_EQ(m.joint_locked[5], 1);
+  const std::string notes = fmt::format("{}", fmt::join(r.lowered.notes, "\n"));
+  EXPECT_THAT(notes, HasSubstr("pin joint `b.hinge`"));
+  EXPECT_THAT(notes, HasSubstr("slip joint `b.rail`"));
+  EXPECT_THAT(notes, Not(HasSubstr("symmetry is not applied")));
 }
 
 TEST(LowerTree, Male50HasOneCoordinateBlockPerJoint) {
@@ -424,6 +477,7 @@ std::vector<Pose> ForwardKinematics(const runtime::Model& m) {
         slide = m.joint_axis[s] * q[qa];
         break;
       case JointKind::kFree:
+      case JointKind::kPlanar:
         break;
     }
     const Pose& parent = poses[static_cast<std::size_t>(m.segment_parent[s])];
@@ -604,16 +658,13 @@ TEST(LowerNotes, ContactsAreLeftOutWithTheirSourcePosition) {
   }
   contact b.s with floor { force = 10 kN/m }
   initial b { position = (0, 0, 1) m }
-  output { contact_force b.s with floor }
-  symmetry planar)"));
+  output { contact_force b.s with floor })"));
   ASSERT_CHECKED(r);
   EXPECT_THAT(r.lowered.notes,
               ElementsAre("test.sled:11:3: note: contact between `b.s` and `floor` is not "
                           "simulated yet; left out",
                           "test.sled:13:12: note: output `contact_force b.s.floor` is left out: "
-                          "contacts are not simulated yet",
-                          "note: planar symmetry is not applied yet: every segment keeps all its "
-                          "degrees of freedom"));
+                          "contacts are not simulated yet"));
   EXPECT_TRUE(r.model().output_kind.empty());
   EXPECT_TRUE(r.model().functions.kind.empty());
 }
