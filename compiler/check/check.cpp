@@ -222,8 +222,9 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
     }
     alias = as->value.path[0];
   }
+  const ast::Clause* on = statement.FindClause("on");
   for (const ast::Clause& clause : statement.clauses) {
-    if (clause.word != "as") {
+    if (clause.word != "as" && clause.word != "on") {
       Report(DiagnosticKind::kMalformedStatement, clause.word_range,
              fmt::format("an import takes no `{}` clause", clause.word), "not allowed here");
     }
@@ -284,17 +285,27 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
     }
   }
   const std::string qualified = scope.prefix + alias;
+  // The module's planes and ellipsoids are instanced with the alias, fixed in the frame of the
+  // import's `on` clause (the ground without one).
+  auto instance_surfaces = [&](Scope& instance) {
+    if (module_file) {
+      DeclareModuleSurfaces(instance, module_file->body, on ? &on->value : nullptr, scope);
+    }
+  };
   if (bodies.size() == 1) {
     const int index = static_cast<int>(scenario_.bodies.size());
     CheckBodyDeclarations(*module_scope, *bodies[0], qualified, statement.range);
     Scope* body_scope = bodies_.back().scope;
     body_scope->fallback = module_scope;
     Declare(scope, alias, Entity{EntityKind::kBody, index, statement.range, body_scope});
+    instance_surfaces(*body_scope);
     return;
   }
-  // Otherwise the alias is a namespace; each body is instanced under alias.body.
-  Scope* instance_scope = NewScope(nullptr, qualified + ".", module_scope->directory);
+  // Otherwise the alias is a namespace; each body is instanced under alias.body. Plain names in
+  // the module's surfaces resolve in the module.
+  Scope* instance_scope = NewScope(module_scope, qualified + ".", module_scope->directory);
   instance_scope->fallback = module_scope;
+  instance_surfaces(*instance_scope);
   for (const ast::Statement* body : bodies) {
     if (!body->target || body->target->kind != ast::ExprKind::kPath) continue;
     const std::string& body_name = body->target->path[0];
@@ -330,6 +341,10 @@ CheckedScenario Checker::Run(const ast::File& file) {
   DeclareFileContents(*scene_scope_, file.body,
                       has_scenario ? BlockKind::kFile : BlockKind::kModule);
   if (!has_scenario) {
+    // A module offers what scenes may use: its surfaces are checked in the ground frame, and
+    // nothing is reported as unused.
+    checking_module_ = true;
+    DeclareModuleSurfaces(*scene_scope_, file.body, nullptr, *scene_scope_);
     // Each body of a module is checked as an instance under its own name.
     for (const ast::Statement& statement : file.body.statements) {
       if (statement.keyword != "body" || !statement.target ||

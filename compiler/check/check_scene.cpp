@@ -145,6 +145,8 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       declare(*statement, EntityKind::kFunction, index, functions_);
     } else if (keyword == "vehicle") {
       declare_named(scenario_.vehicles, *statement, EntityKind::kVehicle, vehicles_);
+    } else if (kind == BlockKind::kModule && (keyword == "plane" || keyword == "ellipsoid")) {
+      continue;  // instanced when imported, in the frame the import gives
     } else if (keyword == "plane") {
       declare_named(scenario_.planes, *statement, EntityKind::kPlane, planes_);
     } else if (keyword == "ellipsoid") {
@@ -193,6 +195,51 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
     }
   }
   return bound;
+}
+
+void Checker::DeclareModuleSurfaces(Scope& instance, const ast::Block& module,
+                                    const ast::Expr* frame, Scope& frame_scope) {
+  // The surfaces' own scope: their names live in the instance, their frame here.
+  Scope* surfaces = NewScope(&instance, instance.prefix, instance.directory);
+  surfaces->surface_frame = frame;
+  surfaces->surface_frame_scope = &frame_scope;
+  for (const ast::Statement& statement : module.statements) {
+    const bool plane = statement.keyword == "plane";
+    if (!(plane || statement.keyword == "ellipsoid") ||
+        statement.kind != ast::StatementKind::kHeader) {
+      continue;
+    }
+    if (const ast::Clause* on = statement.FindClause("on")) {
+      Report(
+          DiagnosticKind::kMalformedStatement, on->word_range,
+          fmt::format("a {} of a module is fixed in the frame its import gives", statement.keyword),
+          "no `on` here", "write `import MODULE as NAME on FRAME` in the scene");
+      continue;
+    }
+    const std::string name = NameOf(*this, statement);
+    if (name.empty()) continue;
+    const EntityKind kind = plane ? EntityKind::kPlane : EntityKind::kEllipsoid;
+    const int index =
+        static_cast<int>(plane ? scenario_.planes.size() : scenario_.ellipsoids.size());
+    if (!Declare(instance, name, Entity{kind, index, statement.target->range})) continue;
+    if (plane) {
+      scenario_.planes.emplace_back();
+      scenario_.planes.back().name = instance.prefix + name;
+      scenario_.planes.back().range = statement.target->range;
+      planes_.push_back({&statement, surfaces, index});
+    } else {
+      scenario_.ellipsoids.emplace_back();
+      scenario_.ellipsoids.back().name = instance.prefix + name;
+      scenario_.ellipsoids.back().range = statement.target->range;
+      ellipsoids_.push_back({&statement, surfaces, index});
+    }
+  }
+}
+
+std::optional<FrameRef> Checker::SurfaceFrame(const ast::Statement& statement, Scope& scope) {
+  if (const ast::Clause* on = statement.FindClause("on")) return ResolveFrame(scope, on->value);
+  if (scope.surface_frame) return ResolveFrame(*scope.surface_frame_scope, *scope.surface_frame);
+  return FrameRef{};
 }
 
 namespace {
@@ -301,12 +348,18 @@ void Checker::CheckSceneElements() {
       m.fall = ExpectQuantity(scope, *arguments.named["fall"], dim::kTime, "fall").value_or(0.0);
       read_axis(arguments);
     } else if (form == "table") {
-      // table(time -> acceleration [-> angular_acceleration], axis = -x) { rows }
+      // table(time -> acceleration [-> angular_acceleration], axis = -x) { rows }, or
+      // table(PULSE, axis = -x) with PULSE a named table function of time -> acceleration (the
+      // pulses of the standard library).
       const ast::Expr* signature = nullptr;
+      const ast::Expr* pulse = nullptr;
       CallArguments arguments;
       for (const ast::Argument& argument : call->arguments) {
         if (argument.name.empty() && argument.value->kind == ast::ExprKind::kArrow) {
           signature = argument.value.get();
+        } else if (argument.name.empty() && argument.value->kind == ast::ExprKind::kPath &&
+                   !pulse) {
+          pulse = argument.value.get();
         } else if (argument.name == "axis" || argument.name == "start") {
           arguments.named[argument.name] = argument.value.get();
         } else {
@@ -314,6 +367,31 @@ void Checker::CheckSceneElements() {
                  argument.name.empty() ? argument.value->range : argument.name_range,
                  "a motion table takes its signature and `axis`, `start`", "unexpected argument");
         }
+      }
+      if (pulse && !signature) {
+        read_axis(arguments);
+        m.kind = Motion::Kind::kTable;
+        if (motion->block) {
+          Report(DiagnosticKind::kMalformedStatement, motion->block->range,
+                 "a motion table that names its pulse takes no rows", "rows not allowed here",
+                 "write the rows in the named function, or drop the name and keep the rows");
+        }
+        Entity* entity = Resolve(scope, *pulse, {EntityKind::kFunction});
+        if (!entity ||
+            !MatchSignature(entity->index, dim::kTime, dim::kAcceleration, pulse->range)) {
+          continue;
+        }
+        const Function& function = scenario_.functions[static_cast<std::size_t>(entity->index)];
+        if (function.kind != Function::Kind::kTable) {
+          Report(
+              DiagnosticKind::kWrongValueKind, pulse->range,
+              fmt::format("a motion pulse is a table; `{}` is a {}", pulse->PathText(),
+                          function.kind == Function::Kind::kConstant ? "constant" : "polynomial"),
+              "not a table", "declare it as `function NAME = table(time -> acceleration) { ... }`");
+          continue;
+        }
+        m.table = function.points;
+        continue;
       }
       const bool six_dof = signature && signature->operands.size() == 3;
       if (!signature || signature->operands.size() < 2 ||
@@ -375,9 +453,7 @@ void Checker::CheckSceneElements() {
 
   for (const Pending& pending : planes_) {
     Plane& plane = scenario_.planes[static_cast<std::size_t>(pending.index)];
-    if (const ast::Clause* on = pending.statement->FindClause("on")) {
-      if (auto frame = ResolveFrame(*pending.scope, on->value)) plane.frame = *frame;
-    }
+    if (auto frame = SurfaceFrame(*pending.statement, *pending.scope)) plane.frame = *frame;
     const BoundBlock bound =
         Bind(BlockKind::kPlane, pending.statement->block.get(), pending.statement->range);
     const ast::Statement* corners = One(bound, "corners");
@@ -407,11 +483,11 @@ void Checker::CheckSceneElements() {
 
   for (const Pending& pending : ellipsoids_) {
     Ellipsoid& ellipsoid = scenario_.ellipsoids[static_cast<std::size_t>(pending.index)];
-    const ast::Clause* on = pending.statement->FindClause("on");
-    if (!on) {
+    const bool in_module = pending.scope->surface_frame_scope != nullptr;
+    if (!in_module && !pending.statement->FindClause("on")) {
       Report(DiagnosticKind::kMalformedStatement, pending.statement->range,
              "an ellipsoid is fixed in a frame: `ellipsoid NAME on FRAME { ... }`", "no `on`");
-    } else if (auto frame = ResolveFrame(*pending.scope, on->value)) {
+    } else if (auto frame = SurfaceFrame(*pending.statement, *pending.scope)) {
       ellipsoid.frame = *frame;
       if (frame->kind == FrameRef::Kind::kSegment) {
         scenario_.segments[static_cast<std::size_t>(frame->index)].ellipsoids.push_back(

@@ -58,6 +58,10 @@ struct Scope {
   std::string prefix;         // qualified-name prefix: "occupant."
   std::string directory;      // folder of the file, for relative imports
   std::map<std::string, Entity> names;
+  // The surfaces of an imported module's instance: the frame they are fixed in (the import's
+  // `on` clause, resolved in `surface_frame_scope`); no clause means the ground.
+  const ast::Expr* surface_frame = nullptr;
+  Scope* surface_frame_scope = nullptr;
 };
 
 // A parameter or `let`: evaluated on first use, in the scope where it was declared.
@@ -177,6 +181,13 @@ class Checker {
   void RunLints();
   // Loads and declares an import; returns the alias entity.
   void Import(Scope& scope, const ast::Statement& statement);
+  // Declares the top-level planes and ellipsoids of a module into one instance's scope, fixed
+  // in `frame` (resolved in `frame_scope`; the ground when null).
+  void DeclareModuleSurfaces(Scope& instance, const ast::Block& module, const ast::Expr* frame,
+                             Scope& frame_scope);
+  // The frame a plane or ellipsoid is fixed in: its own `on` clause, else its module
+  // instance's frame, else the ground. Nullopt after reporting.
+  std::optional<FrameRef> SurfaceFrame(const ast::Statement& statement, Scope& scope);
 
   std::optional<FrameRef> ResolveFrame(Scope& scope, const ast::Expr& expr);
   std::string FrameName(const FrameRef& frame) const;
@@ -205,6 +216,7 @@ class Checker {
   std::map<FunctionId, PendingPolynomial> pending_polynomials_;
   std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
   Scope* scene_scope_ = nullptr;
+  bool checking_module_ = false;  // the checked file is a module: no lints about unused names
   // `--set NAME=VALUE`, parsed; consumed by the scenario's `param` declarations.
   struct Override {
     std::string name;

@@ -56,9 +56,10 @@ std::string RoundDown(double value) {
 
 void Checker::RunLints() {
   // Unused declarations of the checked file itself (library modules may offer more than a scene
-  // uses).
+  // uses, so a module checked on its own reports none).
   const lang::FileId main_file{1};
   for (const auto& scope : scopes_) {
+    if (checking_module_) break;
     for (const auto& [name, entity] : scope->names) {
       if (entity.used || !(entity.range.file == main_file)) continue;
       if (entity.kind == EntityKind::kFunction) {

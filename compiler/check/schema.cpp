@@ -96,6 +96,9 @@ std::vector<BlockSpec> MakeSpecs() {
   const std::vector<DeclarationSpec> module_declarations = {
       {"body", BlockKind::kBody, "a body: segments connected by joints"},
       {"function", BlockKind::kTable, "a named function: constant, table or polynomial"},
+      {"plane", BlockKind::kPlane, "a finite contact plane, fixed in the frame the import gives"},
+      {"ellipsoid", BlockKind::kEllipsoid,
+       "a contact ellipsoid, fixed in the frame the import gives"},
       {"import", BlockKind::kFile, "another module"},
       {"param", BlockKind::kFile, "a parameter"},
       {"let", BlockKind::kFile, "a named value computed from others"},

@@ -260,11 +260,11 @@ TEST(LowerTree, Male50HasOneCoordinateBlockPerJoint) {
   }
   EXPECT_EQ(m.q0.size(), 49u);
   EXPECT_EQ(m.v0.size(), 40u);
-  // neck_lower locks its spin (bit 2).
+  // neck_lower locks its precession, the neck's axial rotation (bit 0).
   const int neck = r.Segment("occupant.neck");
   ASSERT_GE(neck, 0);
   EXPECT_EQ(m.joint_kind[static_cast<std::size_t>(neck)], JointKind::kEuler);
-  EXPECT_EQ(m.joint_locked[static_cast<std::size_t>(neck)], 4);
+  EXPECT_EQ(m.joint_locked[static_cast<std::size_t>(neck)], 1);
   // The side table names the stdlib file.
   EXPECT_THAT(m.segment_source[0].file, HasSubstr("male50.sled"));
   EXPECT_GT(m.segment_source[0].line, 0u);
