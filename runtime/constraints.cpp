@@ -9,6 +9,7 @@
 #include "runtime/dynamics.h"
 #include "runtime/joint.h"
 #include "runtime/mass_matrix.h"
+#include "runtime/tree_bias.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -264,7 +265,8 @@ bool Factor(const Model& model, ConstraintWorkspace& w, Failure* failure) {
     double sum = 0.0;
     for (Eigen::Index j = 0; j < nv; ++j) {
       const double entry = w.jacobian(r, j);
-      if (entry != 0.0) sum += entry * entry / w.mass(j, j);
+      // A massless segment's coordinate has no mass on the diagonal: it adds no scale.
+      if (entry != 0.0 && w.mass(j, j) > 0.0) sum += entry * entry / w.mass(j, j);
     }
     scale = std::max(scale, sum);
   }
@@ -693,6 +695,7 @@ void SetUpConstraints(const Model& model, Data& data) {
   w.phi_dot = Eigen::VectorXd::Zero(rows);
   w.phi_ddot = Eigen::VectorXd::Zero(rows);
   w.solution.assign(size, 0.0);
+  w.tree_residual.assign(nv, 0.0);
   w.segment_wrench.assign(n, Vec6::Zero());
   w.q_saved.assign(static_cast<std::size_t>(model.nq), 0.0);
   w.residual.assign(size, 0.0);
@@ -731,8 +734,14 @@ void SetUpConstraints(const Model& model, Data& data) {
   }
 }
 
-bool ApplyConstraints(const Model& model, Data& data, Failure* failure) {
-  if (!data.constraints) return true;
+namespace {
+
+// The KKT solve of ApplyConstraints: [M J^T; J -eps] [dvdot; -lambda] = [first; -(phi'' + 2 beta
+// phi' + beta^2 phi)] at the accelerations in data, dvdot added to data.vdot. `first` is zero
+// after the articulated-body recursion (the tree's equations already hold) or tau - C - M vdot
+// for a singular tree (vdot = 0).
+bool SolveConstrainedAccelerations(const Model& model, Data& data, std::span<const double> first,
+                                   Failure* failure) {
   ConstraintWorkspace& w = *data.constraints;
   if (w.setup_failed) {
     if (failure != nullptr) {
@@ -746,7 +755,11 @@ bool ApplyConstraints(const Model& model, Data& data, Failure* failure) {
   CompositeRigidBodyMassMatrix(model, data, w.composite, w.mass);
   if (!Factor(model, w, failure)) return false;
   const double beta = w.stabilisation_rate;
-  std::fill(w.solution.begin(), w.solution.begin() + static_cast<std::ptrdiff_t>(nv), 0.0);
+  if (first.empty()) {
+    std::fill(w.solution.begin(), w.solution.begin() + static_cast<std::ptrdiff_t>(nv), 0.0);
+  } else {
+    std::copy(first.begin(), first.end(), w.solution.begin());
+  }
   for (Eigen::Index r = 0; r < w.rows; ++r) {
     w.solution[nv + static_cast<std::size_t>(r)] =
         -(w.phi_ddot[r] + 2 * beta * w.phi_dot[r] + beta * beta * w.phi[r]);
@@ -765,6 +778,20 @@ bool ApplyConstraints(const Model& model, Data& data, Failure* failure) {
     }
   }
   return true;
+}
+
+}  // namespace
+
+bool ApplyConstraints(const Model& model, Data& data, Failure* failure) {
+  if (!data.constraints) return true;
+  return SolveConstrainedAccelerations(model, data, {}, failure);
+}
+
+bool ApplyConstraintsToSingularTree(const Model& model, Data& data, Failure* failure) {
+  if (!data.constraints) return false;
+  ConstraintWorkspace& w = *data.constraints;
+  TreeBiasForces(model, data, w.tree_residual);
+  return SolveConstrainedAccelerations(model, data, w.tree_residual, failure);
 }
 
 bool ProjectConstraints(const Model& model, Data& data, double t, std::span<double> y,

@@ -68,18 +68,19 @@ struct ConstraintWorkspace {
   std::vector<std::int32_t> diagonal_position;   // m: (nv + r, nv + r)
 
   // --- Per evaluation (no allocation).
-  Eigen::MatrixXd mass;              // nv x nv
-  Eigen::MatrixXd jacobian;          // m x nv
-  Eigen::MatrixXd point_jacobian;    // 3 x nv scratch
-  Eigen::MatrixXd angular_jacobian;  // 3 x nv scratch
-  std::vector<Mat6> composite;       // composite inertias
-  Eigen::VectorXd phi;               // position error (m)
-  Eigen::VectorXd phi_dot;           // velocity error (m)
-  Eigen::VectorXd phi_ddot;          // second derivative at the tree accelerations (m)
-  std::vector<double> solution;      // nv + m: right-hand side in, solution out
-  std::vector<double> residual;      // nv + m: iterative refinement
-  std::vector<Vec6> segment_wrench;  // constraint wrench on each segment (frame, centre of mass)
-  std::vector<double> q_saved;       // nq: the projection's line search
+  Eigen::MatrixXd mass;               // nv x nv
+  Eigen::MatrixXd jacobian;           // m x nv
+  Eigen::MatrixXd point_jacobian;     // 3 x nv scratch
+  Eigen::MatrixXd angular_jacobian;   // 3 x nv scratch
+  std::vector<Mat6> composite;        // composite inertias
+  Eigen::VectorXd phi;                // position error (m)
+  Eigen::VectorXd phi_dot;            // velocity error (m)
+  Eigen::VectorXd phi_ddot;           // second derivative at the tree accelerations (m)
+  std::vector<double> solution;       // nv + m: right-hand side in, solution out
+  std::vector<double> tree_residual;  // nv: tau - C of the tree (singular segments only)
+  std::vector<double> residual;       // nv + m: iterative refinement
+  std::vector<Vec6> segment_wrench;   // constraint wrench on each segment (frame, centre of mass)
+  std::vector<double> q_saved;        // nq: the projection's line search
 
   // --- Results of the last ApplyConstraints, for outputs.
   Eigen::VectorXd lambda;          // multipliers (m): the generalized constraint force is J^T l
@@ -125,6 +126,12 @@ void SetUpConstraints(const Model& model, Data& data);
 // data.constraints. False with `failure` naming the constraint when the system is singular or a
 // constraint cannot be evaluated.
 bool ApplyConstraints(const Model& model, Data& data, Failure* failure);
+
+// When ComputeAccelerations fails on a singular (massless) segment: solves the tree's equations
+// M vdot = tau - C together with the constraints in one KKT system, so a massless segment whose
+// motion the constraints determine moves as they say. False, naming a constraint, when the
+// constraints leave some motion of a massless segment undetermined (a singular KKT matrix).
+bool ApplyConstraintsToSingularTree(const Model& model, Data& data, Failure* failure);
 
 // Projects the state y = [q; v] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in the
 // metric of M; converged when |phi| <= 1e-12 m). Uses data's caches as scratch. For

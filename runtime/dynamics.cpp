@@ -180,7 +180,18 @@ bool Forward(const Model& model, Data& data, Failure* failure) {
   ++data.evaluations;
   ComputeKinematics(model, data);
   ComputeForces(model, data);
-  if (!ComputeAccelerations(model, data, failure)) return false;
+  if (!ComputeAccelerations(model, data, failure)) {
+    // A singular (massless) segment: the tree alone leaves its motion open; constraints on it
+    // may settle it, solved together with the tree's equations.
+    if (model.nconstraint() == 0) return false;
+    Failure singular;
+    if (failure) singular = *failure;
+    if (ApplyConstraintsToSingularTree(model, data, failure)) return true;
+    if (failure) {
+      failure->cause = fmt::format("{}; with the constraints: {}", singular.cause, failure->cause);
+    }
+    return false;
+  }
   if (model.nconstraint() > 0) return ApplyConstraints(model, data, failure);
   return true;
 }

@@ -19,25 +19,13 @@
 namespace sled::runtime {
 namespace {
 
+using testing::AddConstraint;
 using testing::AddSegment;
 
 constexpr FrameRef kGround{FrameRef::Kind::kGround, -1};
 
 FrameRef SegmentFrame(std::size_t s) {
   return {FrameRef::Kind::kSegment, static_cast<std::int32_t>(s)};
-}
-
-void AddConstraint(Model& model, std::string name, Model::ConstraintKind kind, FrameRef first,
-                   const Vec3& point_first, FrameRef second, const Vec3& point_second,
-                   double distance = 0.0, const Vec3& axis = Vec3::UnitX()) {
-  model.constraint_name.push_back(std::move(name));
-  model.constraint_kind.push_back(kind);
-  model.constraint_first.push_back(first);
-  model.constraint_second.push_back(second);
-  model.constraint_point_first.push_back(point_first);
-  model.constraint_point_second.push_back(point_second);
-  model.constraint_distance.push_back(distance);
-  model.constraint_axis.push_back(axis);
 }
 
 void SetQuaternion(std::vector<double>& q, std::size_t address, const Eigen::Quaterniond& r) {

@@ -47,4 +47,19 @@ inline std::size_t AddSegment(Model& model, std::string name, int parent, JointK
   return s;
 }
 
+// Appends a loop-closing constraint between two frames.
+inline void AddConstraint(Model& model, std::string name, Model::ConstraintKind kind,
+                          FrameRef first, const Vec3& point_first, FrameRef second,
+                          const Vec3& point_second, double distance = 0.0,
+                          const Vec3& axis = Vec3::UnitX()) {
+  model.constraint_name.push_back(std::move(name));
+  model.constraint_kind.push_back(kind);
+  model.constraint_first.push_back(first);
+  model.constraint_second.push_back(second);
+  model.constraint_point_first.push_back(point_first);
+  model.constraint_point_second.push_back(point_second);
+  model.constraint_distance.push_back(distance);
+  model.constraint_axis.push_back(axis);
+}
+
 }  // namespace sled::runtime::testing

@@ -29,6 +29,7 @@ using runtime::FrameRef;
 using runtime::JointKind;
 using runtime::Model;
 using runtime::Vec3;
+using runtime::testing::AddConstraint;
 
 // Lengths [m] (Grashof: 0.1 + 0.3 <= 0.2 + 0.25, so the crank turns fully), aluminium bars of
 // 0.54 kg/m.
@@ -53,19 +54,6 @@ std::size_t AddBar(Model& model, std::string name, int parent, double length,
   return runtime::testing::AddSegment(model, std::move(name), parent, JointKind::kPin, mass,
                                       Vec3(along, across, across), point_in_parent,
                                       Vec3(-length / 2, 0, 0), Vec3::UnitY());
-}
-
-void AddConstraint(Model& model, std::string name, Model::ConstraintKind kind, FrameRef first,
-                   const Vec3& point_first, FrameRef second, const Vec3& point_second,
-                   double distance, const Vec3& axis) {
-  model.constraint_name.push_back(std::move(name));
-  model.constraint_kind.push_back(kind);
-  model.constraint_first.push_back(first);
-  model.constraint_second.push_back(second);
-  model.constraint_point_first.push_back(point_first);
-  model.constraint_point_second.push_back(point_second);
-  model.constraint_distance.push_back(distance);
-  model.constraint_axis.push_back(axis);
 }
 
 // The linkage closed at the crank angle kCrankAngle and turning at kCrankRate, the other angles

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "runtime/constraints.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
 
@@ -53,6 +54,47 @@ TEST_P(PendulumPeriod, MatchesTheEllipticIntegral) {
   ASSERT_GT(found, 0);
   // Linear interpolation of the rate over one sample (0.05 % of the period) bounds the
   // accuracy of locating the crossing: rate ~ T^2 curvature.
+  EXPECT_NEAR(found, period, 1e-5 * period) << "T = " << period;
+}
+
+TEST_P(PendulumPeriod, AMasslessRodHeldByAConstraintSwingsItsBobAsAPointMass) {
+  // A singular segment suitably constrained: a massless rod pinned (about y) to the bob's
+  // centre of mass, its far end held at the ground by a fixed-point constraint. The rod has no
+  // inertia, so the tree's articulated-body recursion fails and the tree's equations are solved
+  // with the constraint. The bob turns freely on the pin, so it swings as a point mass on a rod
+  // of length l: T = 4 K(sin(theta0/2)) sqrt(l/g).
+  runtime::Model model;
+  const double m = 2.0, l = 0.8, I = 0.01, theta0 = 2.5;
+  runtime::testing::AddSegment(model, "bob", -1, runtime::JointKind::kFree, m,
+                               runtime::Vec3(I, I, I));
+  runtime::testing::AddSegment(model, "rod", 0, runtime::JointKind::kPin, 0.0,
+                               runtime::Vec3::Zero(), runtime::Vec3::Zero(),
+                               runtime::Vec3(0, 0, -l), runtime::Vec3::UnitY());
+  runtime::testing::AddConstraint(model, "pivot", runtime::Model::ConstraintKind::kFixedPoint,
+                                  {runtime::FrameRef::Kind::kSegment, 1}, runtime::Vec3::Zero(), {},
+                                  runtime::Vec3::Zero());
+  // The bob at theta0 from hanging (turned about y), the rod turned with it.
+  model.q0[0] = -l * std::sin(theta0);
+  model.q0[2] = -l * std::cos(theta0);
+  model.q0[7] = theta0;
+  runtime::Data data = runtime::MakeData(model);
+  ASSERT_FALSE(data.constraints->setup_failed) << data.constraints->setup_failure.cause;
+  const double g = 9.80665;
+  const double period = 4 * EllipticK(std::sin(theta0 / 2)) * std::sqrt(l / g);
+  std::vector<double> times = Linspace(0, 1.1 * period, 2200);
+  double previous_t = 0, previous_rate = 0, found = -1;
+  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, times, [&](const runtime::Data& d) {
+    // The swing angle's rate from the bob's world position and velocity: l^2 phi' = z x' - x z'.
+    const runtime::Vec3 p = d.position[0];
+    const runtime::Vec3 v = d.rotation[0] * d.velocity[0].tail<3>();
+    const double rate = (p.z() * v.x() - p.x() * v.z()) / (l * l);
+    if (found < 0 && d.time > 0.75 * period && previous_rate > 0 && rate <= 0) {
+      found = previous_t + (d.time - previous_t) * previous_rate / (previous_rate - rate);
+    }
+    previous_t = d.time;
+    previous_rate = rate;
+  }));
+  ASSERT_GT(found, 0);
   EXPECT_NEAR(found, period, 1e-5 * period) << "T = " << period;
 }
 
