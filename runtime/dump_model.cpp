@@ -195,7 +195,11 @@ std::string DumpModel(const Model& m) {
           Text(Get(m.joint_source, s)));
     }
     line(joint);
+    if (s < m.segment_mirror_twin.size() && m.segment_mirror_twin[s]) {
+      line(fmt::format("  mirror_twin normal_in_parent {}", Text(m.mirror_normal[s])));
+    }
   }
+  if (!m.segment_mirror_twin.empty()) line(fmt::format("mirror_plane y {}", m.mirror_plane_y));
   line(fmt::format("q0 {}", List(m.q0)));
   line(fmt::format("v0 {}", List(m.v0)));
   for (std::size_t v = 0; v < m.nvehicle(); ++v) {
@@ -230,8 +234,10 @@ std::string DumpModel(const Model& m) {
                      Get(m.constraint_distance, c), Text(Get(m.constraint_axis, c))));
   }
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
-    line(fmt::format("output {} {} {} index {} point {}", o, Name(m.output_kind[o]),
-                     Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o))));
+    const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;
+    line(fmt::format("output {} {} {} index {} point {}{}", o, Name(m.output_kind[o]),
+                     Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o)),
+                     mirrored ? " mirrored" : ""));
   }
   return out;
 }

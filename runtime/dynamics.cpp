@@ -7,6 +7,7 @@
 #include "runtime/constraints.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/mirror.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -141,8 +142,13 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
       pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i] +
            data.u_matrix[i] * (data.d_inverse[i] * data.u_vector[i]);
     }
-    data.articulated_inertia[p] += data.parent_to_child[i].TransposeApplyInertia(Ia);
-    data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
+    Mat6 inertia_to_parent = data.parent_to_child[i].TransposeApplyInertia(Ia);
+    Vec6 bias_to_parent = data.parent_to_child[i].TransposeApplyForce(pa);
+    if (i < model.segment_mirror_twin.size() && model.segment_mirror_twin[i]) {
+      AddMirrorImage(model.mirror_normal[i], inertia_to_parent, bias_to_parent);
+    }
+    data.articulated_inertia[p] += inertia_to_parent;
+    data.articulated_bias[p] += bias_to_parent;
   }
   // Roots to leaves: accelerations; then the wrench each joint transmits.
   for (std::size_t i = 0; i < n; ++i) {

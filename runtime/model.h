@@ -142,6 +142,14 @@ struct Model {
   std::vector<double> joint_lock_below;    // < 0 when none
   std::vector<double> joint_unlock_above;  // < 0 when none
 
+  // Mirror symmetry (the xz plane of the ground): a left segment whose right twin the Model
+  // leaves out, hanging from a segment in the plane, hands its parent its articulated inertia
+  // and bias twice, as itself and as its mirror image about `mirror_normal` (the plane's normal
+  // in the parent's frame). Empty when there is no mirror symmetry.
+  std::vector<std::uint8_t> segment_mirror_twin;
+  std::vector<Vec3> mirror_normal;
+  double mirror_plane_y = 0.0;  // the plane y = mirror_plane_y of the ground
+
   std::int32_t nq = 0;  // position coordinates (quaternions count four)
   std::int32_t nv = 0;  // velocity coordinates (degrees of freedom)
 
@@ -213,6 +221,9 @@ struct Model {
   std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
   std::vector<std::int32_t> output_index;  // segment, joint (= child segment) or spring
   std::vector<Vec3> output_point;          // in the segment frame
+  // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,
+  // read from its left twin and mirrored. Empty when there is no mirror symmetry.
+  std::vector<std::uint8_t> output_mirrored;
 
   // --- Side table: where each entity was declared.
   std::vector<SourcePosition> segment_source;

@@ -7,6 +7,7 @@
 
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/mirror.h"
 
 namespace sled::runtime {
 namespace {
@@ -72,10 +73,14 @@ std::vector<std::string> ChannelNames(const Model& model) {
 
 void EvaluateChannels(const Model& model, const Data& data, std::span<double> values) {
   std::size_t column = 0;
-  auto put = [&](const Vec3& v) {
-    for (int i = 0; i < 3; ++i) values[column++] = v[i];
+  bool mirrored = false;
+  // A right twin's output: the left segment's value, mirrored as the quantity's kind says.
+  auto put = [&](const Vec3& v, Vec3 (*mirror)(const Vec3&)) {
+    const Vec3 out = mirrored ? mirror(v) : v;
+    for (int i = 0; i < 3; ++i) values[column++] = out[i];
   };
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
+    mirrored = k < model.output_mirrored.size() && model.output_mirrored[k] != 0;
     const auto index = static_cast<std::size_t>(model.output_index[k]);
     const Vec3& point = model.output_point[k];
     switch (model.output_kind[k]) {
@@ -85,32 +90,36 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         const Vec3 v = data.velocity[index].tail<3>();
         const Vec3 alpha = data.acceleration[index].head<3>();
         const Vec3 a = data.acceleration[index].tail<3>();
-        put(a + w.cross(v) + alpha.cross(point) + w.cross(w.cross(point)));
+        put(a + w.cross(v) + alpha.cross(point) + w.cross(w.cross(point)), MirrorFrameVector);
         break;
       }
       case Model::OutputKind::kVelocity: {
         const PointState state =
             PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
-        put(state.velocity);
+        put(state.velocity, MirrorWorldVector);
         break;
       }
       case Model::OutputKind::kPosition: {
         const PointState state =
             PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
-        put(state.position);
+        // The mirror plane is y = mirror_plane_y of the ground.
+        put(mirrored ? Vec3(state.position + Vec3(0, -2 * model.mirror_plane_y, 0))
+                     : state.position,
+            MirrorWorldVector);
         break;
       }
       case Model::OutputKind::kAngularAcceleration:
-        put(data.acceleration[index].head<3>());
+        put(data.acceleration[index].head<3>(), MirrorFramePseudovector);
         break;
       case Model::OutputKind::kAngularVelocity:
-        put(data.velocity[index].head<3>());
+        put(data.velocity[index].head<3>(), MirrorFramePseudovector);
         break;
       case Model::OutputKind::kOrientation: {
         // Yaw about z, pitch about y, roll about x (the input convention).
         const Mat3& R = data.rotation[index];
         const double pitch = std::asin(std::clamp(-R(2, 0), -1.0, 1.0));
-        put(Vec3(std::atan2(R(1, 0), R(0, 0)), pitch, std::atan2(R(2, 1), R(2, 2))));
+        put(Vec3(std::atan2(R(1, 0), R(0, 0)), pitch, std::atan2(R(2, 1), R(2, 2))),
+            MirrorYawPitchRoll);
         break;
       }
       case Model::OutputKind::kJointAngle: {
@@ -135,11 +144,11 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         // The wrench at the centre of mass, moved to the joint point.
         const Vec6& wrench = data.joint_wrench[index];
         const Vec3& joint_point = model.joint_point_in_child[index];
-        put(wrench.head<3>() - joint_point.cross(wrench.tail<3>()));
+        put(wrench.head<3>() - joint_point.cross(wrench.tail<3>()), MirrorFramePseudovector);
         break;
       }
       case Model::OutputKind::kJointForce:
-        put(data.joint_wrench[index].tail<3>());
+        put(data.joint_wrench[index].tail<3>(), MirrorFrameVector);
         break;
       case Model::OutputKind::kSpringForce:
         values[column++] = data.spring_force[index];

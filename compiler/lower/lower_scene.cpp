@@ -7,6 +7,7 @@
 
 #include "compiler/check/schema.h"
 #include "compiler/lower/lowering.h"
+#include "runtime/mirror.h"
 #include "runtime/vehicle.h"
 
 namespace sled::compiler::lowering {
@@ -169,6 +170,7 @@ void LowerOutputs(Lowering& lowering) {
   for (const OutputRequest& output : lowering.scenario().outputs) {
     Model::OutputKind kind{};
     std::int32_t index = -1;
+    bool mirrored = false;  // a right twin's output, read from its left twin
     using Kind = OutputRequest::Kind;
     switch (output.kind) {
       case Kind::kAcceleration:
@@ -183,7 +185,10 @@ void LowerOutputs(Lowering& lowering) {
             Model::OutputKind::kAngularVelocity, Model::OutputKind::kOrientation};
         kind = kSegmentKinds[static_cast<int>(output.kind) - static_cast<int>(Kind::kAcceleration)];
         lowering.segment(output.index);
-        index = lowering.new_index[static_cast<std::size_t>(output.index)];
+        mirrored = lowering.Dropped(output.index);
+        index = lowering.new_index[static_cast<std::size_t>(
+            mirrored ? lowering.mirror_twin[static_cast<std::size_t>(output.index)]
+                     : output.index)];
         break;
       }
       case Kind::kJointAngle:
@@ -201,7 +206,9 @@ void LowerOutputs(Lowering& lowering) {
           continue;
         }
         lowering.segment(joint.child);
-        index = lowering.new_index[static_cast<std::size_t>(joint.child)];
+        mirrored = lowering.Dropped(joint.child);
+        index = lowering.new_index[static_cast<std::size_t>(
+            mirrored ? lowering.mirror_twin[static_cast<std::size_t>(joint.child)] : joint.child)];
         break;
       }
       case Kind::kSpringForce:
@@ -226,7 +233,11 @@ void LowerOutputs(Lowering& lowering) {
     model.output_kind.push_back(kind);
     model.output_label.push_back(output.label);
     model.output_index.push_back(index);
-    model.output_point.push_back(ToEigen(output.point));
+    // A point of the right twin lies in the left one's frame with y reversed.
+    model.output_point.push_back(
+        mirrored ? runtime::Vec3(runtime::MirrorFrameVector(ToEigen(output.point)))
+                 : ToEigen(output.point));
+    if (!lowering.mirror_twin.empty()) model.output_mirrored.push_back(mirrored ? 1 : 0);
   }
 }
 
@@ -280,11 +291,6 @@ void NoteLeftOut(Lowering& lowering) {
         fmt::format("injury criterion `{}({})` is not computed yet; left out", name, target));
   }
   const RunSettings& run = scenario.run;
-  if (run.symmetry == Symmetry::kMirror) {
-    lowering.AddNote({},
-                     "mirror symmetry is not applied yet: every segment keeps all its "
-                     "degrees of freedom");
-  }
   if (run.settle_duration) {
     lowering.AddNote({},
                      "equilibrium settling is not simulated yet; the run starts from the "

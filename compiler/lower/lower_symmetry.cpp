@@ -3,6 +3,7 @@
 // pins about the axis that points along the ground's y in the initial posture, and a pin or
 // slip joint whose axis would take its segment out of the plane is locked. The initial posture
 // must itself lie in the plane; LowerInitialState keeps only its in-plane part and says so.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -107,6 +108,124 @@ void RestrictToPlane(Lowering& lowering, std::size_t s) {
     case JointKind::kPlanar:
       return;
   }
+}
+
+}  // namespace sled::compiler::lowering
+
+namespace sled::compiler::lowering {
+namespace {
+
+// The checked segment a non-null joint hangs `old` from, or -1 for a root.
+int ParentOf(const CheckedScenario& scenario, int old) {
+  for (const Joint& joint : scenario.joints) {
+    if (joint.type != JointType::kNull && joint.child == old) return joint.parent;
+  }
+  return -1;
+}
+
+}  // namespace
+
+void PlanMirrorSymmetry(Lowering& lowering) {
+  const CheckedScenario& scenario = lowering.scenario();
+  const RunSettings& run = scenario.run;
+  if (run.symmetry != Symmetry::kMirror) return;
+  const std::size_t count = scenario.segments.size();
+  std::vector<int> twin(count, -1);      // right -> left
+  std::vector<int> right_of(count, -1);  // left -> right
+  for (const auto& [left, right] : run.mirror_pairs) {
+    twin[static_cast<std::size_t>(right)] = left;
+    right_of[static_cast<std::size_t>(left)] = right;
+  }
+  auto refuse = [&](const std::string& why) {
+    lowering.AddNote({}, fmt::format("mirror symmetry is not applied: {}; every segment keeps "
+                                     "all its degrees of freedom",
+                                     why));
+  };
+  auto name = [&](int old) { return scenario.segments[static_cast<std::size_t>(old)].name; };
+  for (const auto& [left, right] : run.mirror_pairs) {
+    const int left_parent = ParentOf(scenario, left), right_parent = ParentOf(scenario, right);
+    const bool same_centre =
+        left_parent == right_parent &&
+        (left_parent < 0 || (twin[static_cast<std::size_t>(left_parent)] < 0 &&
+                             right_of[static_cast<std::size_t>(left_parent)] < 0));
+    const bool twin_parents = left_parent >= 0 && right_parent >= 0 &&
+                              right_of[static_cast<std::size_t>(left_parent)] == right_parent;
+    if (!same_centre && !twin_parents) {
+      return refuse(
+          fmt::format("`{}` and `{}` do not hang from the same segment in the plane "
+                      "or from two twins",
+                      name(left), name(right)));
+    }
+  }
+  for (const Joint& joint : scenario.joints) {
+    if (joint.type == JointType::kNull) continue;
+    if (twin[static_cast<std::size_t>(joint.parent)] >= 0 &&
+        twin[static_cast<std::size_t>(joint.child)] < 0) {
+      return refuse(
+          fmt::format("`{}` hangs from the right segment `{}` but is not the right "
+                      "one of a pair",
+                      name(joint.child), name(joint.parent)));
+    }
+  }
+  auto on_right = [&](const FrameRef& frame) {
+    return frame.kind == FrameRef::Kind::kSegment &&
+           twin[static_cast<std::size_t>(frame.index)] >= 0;
+  };
+  for (const SpringDamper& spring : scenario.springs) {
+    if (on_right(spring.first) || on_right(spring.second)) {
+      return refuse(fmt::format("spring `{}` acts on a right segment", spring.name));
+    }
+  }
+  for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
+    const Constraint& constraint = scenario.constraints[c];
+    const bool holds_a_root =
+        constraint.kind == Constraint::Kind::kFixedPoint &&
+        ((constraint.first.kind == FrameRef::Kind::kSegment &&
+          constraint.second.kind != FrameRef::Kind::kSegment &&
+          BaseConstraintOf(lowering, constraint.first.index) == static_cast<int>(c)) ||
+         (constraint.second.kind == FrameRef::Kind::kSegment &&
+          constraint.first.kind != FrameRef::Kind::kSegment &&
+          BaseConstraintOf(lowering, constraint.second.index) == static_cast<int>(c)));
+    if (!holds_a_root) {
+      return refuse(
+          fmt::format("constraint `{}` closes a loop (loops are solved with the full "
+                      "mass matrix, which knows no mirror images)",
+                      constraint.name));
+    }
+  }
+  lowering.mirror_twin = std::move(twin);
+  // The plane: y of the first segment in it (a reference segment), else y = 0.
+  for (std::size_t old = 0; old < count; ++old) {
+    if (lowering.mirror_twin[old] < 0 && right_of[old] < 0 &&
+        ParentOf(scenario, static_cast<int>(old)) < 0) {
+      lowering.model().mirror_plane_y = lowering.poses.segments[old].position[1];
+      break;
+    }
+  }
+}
+
+void ApplyMirrorSymmetry(Lowering& lowering, std::size_t s) {
+  if (lowering.mirror_twin.empty()) return;
+  runtime::Model& model = lowering.model();
+  const int old = lowering.old_index[s];
+  const CheckedScenario& scenario = lowering.scenario();
+  const bool left = std::find(lowering.mirror_twin.begin(), lowering.mirror_twin.end(), old) !=
+                    lowering.mirror_twin.end();
+  model.segment_mirror_twin.push_back(0);
+  model.mirror_normal.push_back(runtime::Vec3::Zero());
+  if (!left) {
+    RestrictToPlane(lowering, s);
+    return;
+  }
+  const int parent = ParentOf(scenario, old);
+  const bool parent_in_plane =
+      parent >= 0 && std::find(lowering.mirror_twin.begin(), lowering.mirror_twin.end(), parent) ==
+                         lowering.mirror_twin.end();
+  if (!parent_in_plane) return;
+  model.segment_mirror_twin.back() = 1;
+  model.mirror_normal.back() =
+      ToEigen(lowering.poses.segments[static_cast<std::size_t>(parent)].rotation).transpose() *
+      runtime::Vec3::UnitY();
 }
 
 }  // namespace sled::compiler::lowering

@@ -58,9 +58,10 @@ void OrderSegments(Lowering& lowering) {
   for (const Body& body : scenario.bodies) {
     for (int root : body.reference_segments) {
       lowering.segment(root);  // checks the index
-      place(root, -1);
+      if (!lowering.Dropped(root)) place(root, -1);
     }
     for (int root : body.reference_segments) {
+      if (lowering.Dropped(root)) continue;  // a right twin and all that hangs from it
       // Depth first, preorder: a stack of joints still to visit, last child on top.
       std::vector<int> stack(child_joints[static_cast<std::size_t>(root)].rbegin(),
                              child_joints[static_cast<std::size_t>(root)].rend());
@@ -68,6 +69,7 @@ void OrderSegments(Lowering& lowering) {
         const int j = stack.back();
         stack.pop_back();
         const Joint& joint = lowering.joint(j);
+        if (lowering.Dropped(joint.child)) continue;
         place(joint.child, j);
         const auto& next = child_joints[static_cast<std::size_t>(joint.child)];
         stack.insert(stack.end(), next.rbegin(), next.rend());
@@ -75,7 +77,7 @@ void OrderSegments(Lowering& lowering) {
     }
   }
   for (std::size_t s = 0; s < count; ++s) {
-    if (lowering.new_index[s] < 0) {
+    if (lowering.new_index[s] < 0 && !lowering.Dropped(static_cast<int>(s))) {
       throw std::logic_error(fmt::format(
           "compiler::Lower: segment `{}` is in no joint tree (was the scenario checked?)",
           scenario.segments[s].name));
@@ -105,6 +107,7 @@ int BaseConstraintOf(const Lowering& lowering, int old) {
 
 void LowerTree(Lowering& lowering) {
   lowering.constraint_is_base_joint.assign(lowering.scenario().constraints.size(), false);
+  PlanMirrorSymmetry(lowering);
   OrderSegments(lowering);
   runtime::Model& model = lowering.model();
   const std::size_t n = lowering.old_index.size();
@@ -199,6 +202,7 @@ void LowerTree(Lowering& lowering) {
       }
     }
     if (lowering.scenario().run.symmetry == Symmetry::kPlanar) RestrictToPlane(lowering, s);
+    ApplyMirrorSymmetry(lowering, s);
     const JointKind kind = model.joint_kind.back();
     model.q_address.push_back(nq);
     model.v_address.push_back(nv);

@@ -54,6 +54,18 @@ class Lowering {
   std::vector<bool> constraint_is_base_joint;
   // Poses at t = 0 in the checked scenario's segment order.
   InitialPoses poses;
+  // Mirror symmetry, by checked segment: for a right segment the Model leaves out, its left
+  // twin; -1 for every segment it keeps. Empty when mirror symmetry is not applied.
+  std::vector<int> mirror_twin;
+  // True when the checked segment is left out as the mirror image of its twin; for a frame,
+  // when it is such a segment.
+  bool Dropped(int old) const {
+    return old >= 0 && static_cast<std::size_t>(old) < mirror_twin.size() &&
+           mirror_twin[static_cast<std::size_t>(old)] >= 0;
+  }
+  bool Dropped(const FrameRef& frame) const {
+    return frame.kind == FrameRef::Kind::kSegment && Dropped(frame.index);
+  }
 
   // The Model's id of a checked function, copying it into the table on first use; -1 for -1.
   std::int32_t Function(FunctionId id);
@@ -78,9 +90,20 @@ class Lowering {
 
 // Segments in tree order, their inertia, the joints above them and their coordinates.
 void LowerTree(Lowering& lowering);
+// The fixed-point constraint that holds checked segment `old` at a point of the ground or a
+// vehicle (it becomes the segment's joint to that base), or -1.
+int BaseConstraintOf(const Lowering& lowering, int old);
 // Planar symmetry: the joint above Model segment `s` loses the degrees of freedom that leave
 // the xz plane (called by LowerTree before the joint's coordinates are counted).
 void RestrictToPlane(Lowering& lowering, std::size_t s);
+// Mirror symmetry: fills lowering.mirror_twin when the scene's pairs allow it (each right
+// segment hangs where its left twin does, and only right segments hang from right segments;
+// no spring or loop constraint touches a right segment), else notes why it is not applied.
+void PlanMirrorSymmetry(Lowering& lowering);
+// Mirror symmetry, for Model segment `s` (after RestrictToPlane's turn in LowerTree): a segment
+// in the plane is restricted to it; a left twin hanging from one is marked to hand its parent
+// its mirror image too.
+void ApplyMirrorSymmetry(Lowering& lowering, std::size_t s);
 // q0 and v0 from the initial conditions (after LowerTree).
 void LowerInitialState(Lowering& lowering);
 // Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).

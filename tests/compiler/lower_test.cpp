@@ -217,6 +217,53 @@ TEST(LowerSymmetry, PlanarSymmetryKeepsOnlyTheDegreesOfFreedomOfTheXzPlane) {
   EXPECT_THAT(notes, Not(HasSubstr("symmetry is not applied")));
 }
 
+TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSegment) {
+  const Result r = LowerText(Scene(fmt::format(R"(
+  symmetry mirror {{ pair = b.arm_l, b.arm_r }}
+  body b {{
+    segment trunk {{ {0} }}
+    segment arm_l {{ {0} }}
+    segment arm_r {{ {0} }}
+    joint shoulder_l : ball(trunk -> arm_l) {{ at trunk = (0, 0.2, 0) m  at arm_l = (0, 0, 0.1) m }}
+    joint shoulder_r : ball(trunk -> arm_r) {{ at trunk = (0, -0.2, 0) m  at arm_r = (0, 0, 0.1) m }}
+  }}
+  spring tether : b.arm_r -> ground {{ at b.arm_r = (0, 0, 0) m  at ground = (0, -1, 0) m
+                                        stiffness = 100 N/m }})",
+                                               kUnitInertia)));
+  ASSERT_CHECKED(r);
+  const runtime::Model& m = r.model();
+  EXPECT_EQ(m.nsegment(), 3u);
+  EXPECT_TRUE(m.segment_mirror_twin.empty());
+  EXPECT_THAT(fmt::format("{}", fmt::join(r.lowered.notes, "\n")),
+              HasSubstr("mirror symmetry is not applied: spring `tether` acts on a right segment"));
+}
+
+TEST(LowerSymmetry, MirrorSymmetryLeavesTheRightTwinOutAndReadsItsOutputsFromTheLeft) {
+  const Result r = LowerText(Scene(fmt::format(R"(
+  symmetry mirror {{ pair = b.arm_l, b.arm_r }}
+  body b {{
+    segment trunk {{ {0} }}
+    segment arm_l {{ {0} }}
+    segment arm_r {{ {0} }}
+    joint shoulder_l : ball(trunk -> arm_l) {{ at trunk = (0, 0.2, 0) m  at arm_l = (0, 0, 0.1) m }}
+    joint shoulder_r : ball(trunk -> arm_r) {{ at trunk = (0, -0.2, 0) m  at arm_r = (0, 0, 0.1) m }}
+  }}
+  initial b {{ position = (0, 0.5, 1) m }}
+  output {{ position b.arm_r at (0, -0.1, 0) m }})",
+                                               kUnitInertia)));
+  ASSERT_CHECKED(r);
+  const runtime::Model& m = r.model();
+  EXPECT_THAT(m.segment_name, ElementsAre("b.trunk", "b.arm_l"));
+  EXPECT_THAT(m.joint_kind, ElementsAre(JointKind::kPlanar, JointKind::kBall));
+  EXPECT_THAT(m.segment_mirror_twin, ElementsAre(0, 1));
+  ExpectNear(m.mirror_normal[1], runtime::Vec3(0, 1, 0), 1e-15);
+  EXPECT_EQ(m.mirror_plane_y, 0.5);
+  ASSERT_EQ(m.output_index.size(), 1u);
+  EXPECT_EQ(m.output_index[0], 1);
+  EXPECT_THAT(m.output_mirrored, ElementsAre(1));
+  ExpectNear(m.output_point[0], runtime::Vec3(0, 0.1, 0), 0);
+}
+
 TEST(LowerTree, Male50HasOneCoordinateBlockPerJoint) {
   const Result r = LowerText(Scene("  import std.humans.male50 as occupant"));
   ASSERT_CHECKED(r);

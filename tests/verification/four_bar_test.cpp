@@ -20,6 +20,7 @@
 #include "runtime/forces.h"
 #include "runtime/run.h"
 #include "tests/runtime/model_fixtures.h"
+#include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 
 namespace sled::verification {
@@ -223,17 +224,9 @@ TEST(FourBarExample, LoopStaysClosed) {
   lang::SourceManager sources;
   const auto file = sources.Load((root / "examples" / "four_bar.sled").string());
   ASSERT_TRUE(file);
-  lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const lang::ast::File ast = lang::Parse(sources, *file, parse_options);
-  compiler::CheckOptions check_options;
-  check_options.diagnostics = &collector;
-  check_options.stdlib_root = (root / "stdlib").string();
-  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
-  ASSERT_FALSE(collector.has_errors());
-  compiler::LowerOptions lower_options;
-  const compiler::Lowered lowered = compiler::Lower(scenario, sources, lower_options);
+  const Compiled compiled = CompileFile(sources, *file);
+  ASSERT_EQ(compiled.errors, "");
+  const compiler::Lowered& lowered = compiled.lowered;
   const Model& model = lowered.model;
   ASSERT_EQ(model.nconstraint(), 1u);  // pivot A became the crank's joint to the ground
   runtime::Data data = runtime::MakeData(model);

@@ -1,0 +1,46 @@
+// Compiles a scenario for the verification tests as `sled run` does (parse, check against the
+// standard library, lower), so a test can run a scene written in the language.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "compiler/check/check.h"
+#include "compiler/lower/lower.h"
+#include "lang/diagnostics/render.h"
+#include "lang/syntax/parser.h"
+
+namespace sled::verification {
+
+struct Compiled {
+  compiler::Lowered lowered;
+  std::string errors;  // rendered diagnostics; empty when the scene checks
+};
+
+inline Compiled CompileFile(lang::SourceManager& sources, lang::FileId file) {
+  const std::filesystem::path root = SLED_SOURCE_ROOT;
+  lang::DiagnosticCollector collector;
+  lang::ParseOptions parse_options;
+  parse_options.diagnostics = &collector;
+  const lang::ast::File ast = lang::Parse(sources, file, parse_options);
+  compiler::CheckOptions check_options;
+  check_options.diagnostics = &collector;
+  check_options.stdlib_root = (root / "stdlib").string();
+  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+  Compiled compiled;
+  if (collector.has_errors()) {
+    for (const auto& d : collector.diagnostics()) {
+      compiled.errors += lang::RenderCompact(sources, d) + "\n";
+    }
+    return compiled;
+  }
+  compiled.lowered = compiler::Lower(scenario, sources, {});
+  return compiled;
+}
+
+inline Compiled CompileText(const std::string& text) {
+  lang::SourceManager sources;
+  return CompileFile(sources, sources.Add("scene.sled", text));
+}
+
+}  // namespace sled::verification
