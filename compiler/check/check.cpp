@@ -21,6 +21,14 @@ std::string DefaultStdlibRoot() {
   return std::string(SLED_SOURCE_ROOT) + "/stdlib";
 }
 
+CheckedScenario ParseAndCheck(lang::SourceManager& sources, lang::FileId file,
+                              const CheckOptions& options) {
+  lang::ParseOptions parse_options;
+  parse_options.diagnostics = options.diagnostics;
+  const lang::ast::File ast = lang::Parse(sources, file, parse_options);
+  return Check(sources, ast, options);
+}
+
 CheckedScenario Check(lang::SourceManager& sources, const lang::ast::File& file,
                       const CheckOptions& options) {
   if (!options.diagnostics) throw std::logic_error("compiler::Check: options.diagnostics is null");

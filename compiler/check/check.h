@@ -28,6 +28,11 @@ struct CheckOptions {
 CheckedScenario Check(lang::SourceManager& sources, const lang::ast::File& file,
                       const CheckOptions& options);
 
+// Parses a file of `sources` and checks it, reporting both stages' diagnostics to
+// options.diagnostics: the front end of `sled run`, the tests and the fuzzers.
+CheckedScenario ParseAndCheck(lang::SourceManager& sources, lang::FileId file,
+                              const CheckOptions& options);
+
 // The standard library folder Check uses when CheckOptions::stdlib_root is empty.
 std::string DefaultStdlibRoot();
 

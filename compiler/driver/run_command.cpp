@@ -46,14 +46,11 @@ int RunCommand(const RunCommandOptions& options) {
     std::cerr << fmt::format("sled: cannot read `{}`\n", options.file);
     return kExitInputErrors;
   }
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const lang::ast::File ast = lang::Parse(sources, *file, parse_options);
   compiler::CheckOptions check_options;
   check_options.diagnostics = &collector;
   check_options.stdlib_root = options.stdlib;
   check_options.overrides = options.overrides;
-  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+  const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, *file, check_options);
   PrintDiagnostics(sources, collector, options);
   if (collector.has_errors()) return kExitInputErrors;
 

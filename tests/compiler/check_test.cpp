@@ -37,13 +37,10 @@ Result CheckText(const std::string& text, CheckOptions options = {},
   lang::SourceManager sources;
   const lang::FileId file = sources.Add(path, text);
   lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const auto ast = lang::Parse(sources, file, parse_options);
   options.diagnostics = &collector;
   if (options.stdlib_root.empty()) options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
   Result result;
-  result.scenario = Check(sources, ast, options);
+  result.scenario = ParseAndCheck(sources, file, options);
   collector.SortByPosition();
   for (const auto& d : collector.diagnostics()) {
     const lang::SourceRange* range = d.primary_range();

@@ -60,14 +60,11 @@ Result LowerText(const std::string& text, const std::string& path = "test.sled",
   lang::SourceManager sources;
   const lang::FileId file = sources.Add(path, text);
   lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const auto ast = lang::Parse(sources, file, parse_options);
   CheckOptions check_options;
   check_options.diagnostics = &collector;
   check_options.stdlib_root = stdlib;
   Result result;
-  result.scenario = Check(sources, ast, check_options);
+  result.scenario = ParseAndCheck(sources, file, check_options);
   if (collector.has_errors()) {
     collector.SortByPosition();
     for (const auto& d : collector.diagnostics()) {
@@ -217,8 +214,8 @@ TEST(LowerSymmetry, PlanarSymmetryKeepsOnlyTheDegreesOfFreedomOfTheXzPlane) {
   EXPECT_THAT(notes, Not(HasSubstr("symmetry is not applied")));
 }
 
-TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSegment) {
-  const Result r = LowerText(Scene(fmt::format(R"(
+// A trunk with two arms, paired for mirror symmetry.
+const std::string kTwoArms = fmt::format(R"(
   symmetry mirror {{ pair = b.arm_l, b.arm_r }}
   body b {{
     segment trunk {{ {0} }}
@@ -227,9 +224,13 @@ TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSeg
     joint shoulder_l : ball(trunk -> arm_l) {{ at trunk = (0, 0.2, 0) m  at arm_l = (0, 0, 0.1) m }}
     joint shoulder_r : ball(trunk -> arm_r) {{ at trunk = (0, -0.2, 0) m  at arm_r = (0, 0, 0.1) m }}
   }}
-  spring tether : b.arm_r -> ground {{ at b.arm_r = (0, 0, 0) m  at ground = (0, -1, 0) m
-                                        stiffness = 100 N/m }})",
-                                               kUnitInertia)));
+)",
+                                         kUnitInertia);
+
+TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSegment) {
+  const Result r = LowerText(Scene(kTwoArms + R"(
+  spring tether : b.arm_r -> ground { at b.arm_r = (0, 0, 0) m  at ground = (0, -1, 0) m
+                                      stiffness = 100 N/m })"));
   ASSERT_CHECKED(r);
   const runtime::Model& m = r.model();
   EXPECT_EQ(m.nsegment(), 3u);
@@ -239,18 +240,9 @@ TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSeg
 }
 
 TEST(LowerSymmetry, MirrorSymmetryLeavesTheRightTwinOutAndReadsItsOutputsFromTheLeft) {
-  const Result r = LowerText(Scene(fmt::format(R"(
-  symmetry mirror {{ pair = b.arm_l, b.arm_r }}
-  body b {{
-    segment trunk {{ {0} }}
-    segment arm_l {{ {0} }}
-    segment arm_r {{ {0} }}
-    joint shoulder_l : ball(trunk -> arm_l) {{ at trunk = (0, 0.2, 0) m  at arm_l = (0, 0, 0.1) m }}
-    joint shoulder_r : ball(trunk -> arm_r) {{ at trunk = (0, -0.2, 0) m  at arm_r = (0, 0, 0.1) m }}
-  }}
-  initial b {{ position = (0, 0.5, 1) m }}
-  output {{ position b.arm_r at (0, -0.1, 0) m }})",
-                                               kUnitInertia)));
+  const Result r = LowerText(Scene(kTwoArms + R"(
+  initial b { position = (0, 0.5, 1) m }
+  output { position b.arm_r at (0, -0.1, 0) m })"));
   ASSERT_CHECKED(r);
   const runtime::Model& m = r.model();
   EXPECT_THAT(m.segment_name, ElementsAre("b.trunk", "b.arm_l"));

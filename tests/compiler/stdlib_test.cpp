@@ -37,14 +37,11 @@ Checked CheckSource(const std::string& text, const std::string& path) {
   lang::SourceManager sources;
   const lang::FileId file = sources.Add(path, text);
   lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const auto ast = lang::Parse(sources, file, parse_options);
   CheckOptions options;
   options.diagnostics = &collector;
   options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
   Checked out;
-  out.scenario = Check(sources, ast, options);
+  out.scenario = ParseAndCheck(sources, file, options);
   for (const auto& d : collector.diagnostics()) {
     out.messages.push_back(lang::RenderCompact(sources, d));
   }

@@ -19,13 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const lang::FileId file =
       sources.Add(std::string(SLED_SOURCE_ROOT) + "/examples/fuzz.sled", text);
   lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const lang::ast::File ast = lang::Parse(sources, file, parse_options);
   compiler::CheckOptions check_options;
   check_options.diagnostics = &collector;
   check_options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
-  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+  const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, file, check_options);
   if (!collector.has_errors()) (void)compiler::Dump(scenario);
   for (const lang::Diagnostic& diagnostic : collector.diagnostics()) {
     (void)lang::RenderRich(sources, diagnostic);

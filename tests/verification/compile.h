@@ -20,13 +20,10 @@ struct Compiled {
 inline Compiled CompileFile(lang::SourceManager& sources, lang::FileId file) {
   const std::filesystem::path root = SLED_SOURCE_ROOT;
   lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const lang::ast::File ast = lang::Parse(sources, file, parse_options);
   compiler::CheckOptions check_options;
   check_options.diagnostics = &collector;
   check_options.stdlib_root = (root / "stdlib").string();
-  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+  const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, file, check_options);
   Compiled compiled;
   if (collector.has_errors()) {
     for (const auto& d : collector.diagnostics()) {

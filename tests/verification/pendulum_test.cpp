@@ -24,6 +24,26 @@ double EllipticK(double k) {
   return std::numbers::pi / (2 * a);
 }
 
+// The time of the first return to the starting angle: the swing rate crossing zero from above
+// after three quarters of the expected period, located by linear interpolation of the rate
+// between samples.
+class FirstReturn {
+ public:
+  explicit FirstReturn(double period) : period_(period) {}
+  void Sample(double t, double rate) {
+    if (found_ < 0 && t > 0.75 * period_ && previous_rate_ > 0 && rate <= 0) {
+      found_ = previous_t_ + (t - previous_t_) * previous_rate_ / (previous_rate_ - rate);
+    }
+    previous_t_ = t;
+    previous_rate_ = rate;
+  }
+  double found() const { return found_; }
+
+ private:
+  double period_;
+  double previous_t_ = 0, previous_rate_ = 0, found_ = -1;
+};
+
 class PendulumPeriod : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PendulumPeriod, MatchesTheEllipticIntegral) {
@@ -40,17 +60,11 @@ TEST_P(PendulumPeriod, MatchesTheEllipticIntegral) {
   const double period = 4 * EllipticK(std::sin(theta0 / 2)) / omega0;
 
   // Sample densely around the first return to theta0 (angular velocity crossing zero from above
-  // at t = T) and locate it by linear interpolation of the rate.
-  std::vector<double> times = Linspace(0, 1.1 * period, 2200);
-  double previous_t = 0, previous_rate = 0, found = -1;
-  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, times, [&](const runtime::Data& d) {
-    const double rate = d.v[0];
-    if (found < 0 && d.time > 0.75 * period && previous_rate > 0 && rate <= 0) {
-      found = previous_t + (d.time - previous_t) * previous_rate / (previous_rate - rate);
-    }
-    previous_t = d.time;
-    previous_rate = rate;
-  }));
+  // at t = T).
+  FirstReturn first_return(period);
+  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, Linspace(0, 1.1 * period, 2200),
+                       [&](const runtime::Data& d) { first_return.Sample(d.time, d.v[0]); }));
+  const double found = first_return.found();
   ASSERT_GT(found, 0);
   // Linear interpolation of the rate over one sample (0.05 % of the period) bounds the
   // accuracy of locating the crossing: rate ~ T^2 curvature.
@@ -81,19 +95,16 @@ TEST_P(PendulumPeriod, AMasslessRodHeldByAConstraintSwingsItsBobAsAPointMass) {
   ASSERT_FALSE(data.constraints->setup_failed) << data.constraints->setup_failure.cause;
   const double g = 9.80665;
   const double period = 4 * EllipticK(std::sin(theta0 / 2)) * std::sqrt(l / g);
-  std::vector<double> times = Linspace(0, 1.1 * period, 2200);
-  double previous_t = 0, previous_rate = 0, found = -1;
-  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, times, [&](const runtime::Data& d) {
-    // The swing angle's rate from the bob's world position and velocity: l^2 phi' = z x' - x z'.
-    const runtime::Vec3 p = d.position[0];
-    const runtime::Vec3 v = d.rotation[0] * d.velocity[0].tail<3>();
-    const double rate = (p.z() * v.x() - p.x() * v.z()) / (l * l);
-    if (found < 0 && d.time > 0.75 * period && previous_rate > 0 && rate <= 0) {
-      found = previous_t + (d.time - previous_t) * previous_rate / (previous_rate - rate);
-    }
-    previous_t = d.time;
-    previous_rate = rate;
-  }));
+  FirstReturn first_return(period);
+  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, Linspace(0, 1.1 * period, 2200),
+                       [&](const runtime::Data& d) {
+                         // The swing rate from the bob's position and velocity:
+                         // l^2 phi' = z x' - x z'.
+                         const runtime::Vec3 p = d.position[0];
+                         const runtime::Vec3 v = d.rotation[0] * d.velocity[0].tail<3>();
+                         first_return.Sample(d.time, (p.z() * v.x() - p.x() * v.z()) / (l * l));
+                       }));
+  const double found = first_return.found();
   ASSERT_GT(found, 0);
   EXPECT_NEAR(found, period, 1e-5 * period) << "T = " << period;
 }
