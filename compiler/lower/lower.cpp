@@ -133,6 +133,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowered.model.title = scenario.title;
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
+  lowering::LowerContacts(lowering);
   lowering::LowerScene(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);
