@@ -135,15 +135,45 @@ Vec3 SupportPoint(const EllipsoidShape& shape, const Vec3& direction, double* ex
   return shape.center + shape.rotation * shape.semi_axes.cwiseProduct(w);
 }
 
+namespace {
+
+// How far a hyper-ellipsoid's force point is smoothed: the support point moves as the
+// (m - 1)-th power of the direction's components in its axes, a cube root for degree 4, so a
+// flat face resting on a plane would swing its deepest point from edge to edge at the least
+// tilt. Components below this fraction of the support function are taken linearly instead, so
+// the force point moves smoothly across the face (and is its middle when the face is flat).
+constexpr double kFaceSmoothing = 0.1;
+
+// Where a surface pushed along -direction takes its force: the support point for an ellipsoid;
+// for a hyper-ellipsoid the support point smoothed over its flat faces.
+Vec3 ForcePoint(const EllipsoidShape& shape, const Vec3& direction) {
+  if (IsEllipsoid(shape.degree)) return SupportPoint(shape, direction, nullptr);
+  const Vec3 y = shape.semi_axes.cwiseProduct(shape.rotation.transpose() * direction);
+  const double m = shape.degree / (shape.degree - 1.0);
+  const Vec3 a = y.cwiseAbs();
+  const double k = std::pow(std::pow(a[0], m) + std::pow(a[1], m) + std::pow(a[2], m), 1.0 / m);
+  Vec3 w;
+  for (int i = 0; i < 3; ++i) {
+    const double r = y[i] / k;
+    w[i] = r * std::pow(r * r + kFaceSmoothing * kFaceSmoothing, 0.5 * (m - 2.0));
+  }
+  return shape.center + shape.rotation * shape.semi_axes.cwiseProduct(w);
+}
+
+}  // namespace
+
 ContactGeometry PlaneEllipsoid(const PlaneShape& plane, const EllipsoidShape& ellipsoid) {
   ContactGeometry out;
   out.normal = plane.normal;
   double reach = 0.0;
-  const Vec3 deepest = SupportPoint(ellipsoid, -plane.normal, &reach);
+  SupportPoint(ellipsoid, -plane.normal, &reach);
   const double height = plane.normal.dot(ellipsoid.center - plane.origin);
   out.deflection = reach - height;
-  // The crossing of the plane by the line from the centre to the deepest point.
-  const Vec3 q = ellipsoid.center + (height / reach) * (deepest - ellipsoid.center);
+  // The crossing of the plane by the line from the centre to the force point (the deepest
+  // point of an ellipsoid).
+  const Vec3 force_point = ForcePoint(ellipsoid, -plane.normal);
+  const double along = plane.normal.dot(ellipsoid.center - force_point);
+  const Vec3 q = ellipsoid.center + (height / along) * (force_point - ellipsoid.center);
   // Its parallelogram coordinates.
   const Vec3 d = q - plane.origin;
   const double uu = plane.edge_u.squaredNorm(), uv = plane.edge_u.dot(plane.edge_v);
@@ -179,7 +209,7 @@ Overlap OverlapAlong(const EllipsoidShape& a, const EllipsoidShape& b, const Vec
 }
 
 constexpr int kMaxIterations = 40;
-constexpr int kMaxHalvings = 30;
+constexpr int kMaxHalvings = 12;
 constexpr double kMaxTurn = 0.5;  // the largest change of the normal in one step [rad]
 
 }  // namespace
@@ -216,6 +246,7 @@ ContactGeometry EllipsoidEllipsoid(const EllipsoidShape& first, const EllipsoidS
     Eigen::Vector2d step = -j.inverse() * g;
     if (step.norm() > kMaxTurn) step *= kMaxTurn / step.norm();
     bool improved = false;
+    const double previous = current.value;
     for (int halving = 0; halving < kMaxHalvings; ++halving) {
       const Vec3 trial = (n + step[0] * t1 + step[1] * t2).normalized();
       const Overlap next = OverlapAlong(first, second, trial);
@@ -227,13 +258,16 @@ ContactGeometry EllipsoidEllipsoid(const EllipsoidShape& first, const EllipsoidS
       }
       step *= 0.5;
     }
-    if (!improved || step.norm() < 1e-14) break;
+    // Converged to rounding: the step no longer lowers the overlap measurably.
+    if (!improved || step.norm() < 1e-14 || previous - current.value <= 1e-15 * scale) break;
   }
   direction = n;
   ContactGeometry out;
   out.deflection = current.value;
   out.normal = -n;
-  out.point = 0.5 * (current.first_point + current.second_point);
+  out.point = IsEllipsoid(first.degree) && IsEllipsoid(second.degree)
+                  ? 0.5 * (current.first_point + current.second_point)
+                  : 0.5 * (ForcePoint(first, n) + ForcePoint(second, -n));
   out.touching = out.deflection > 0;
   return out;
 }

@@ -9,6 +9,11 @@
 namespace sled::runtime {
 namespace {
 
+// Impacts slower than this [m/s] get no impulse: the force law takes them, so a bouncing body
+// comes to rest on its contact instead of bouncing ever more often (with restitution e the
+// bounces of a dropped body would otherwise never end: a Zeno sequence of events).
+constexpr double kImpulseSpeed = 1e-2;
+
 // n . (velocity of the first surface - velocity of the second) at the point: > 0 separating.
 double SeparationSpeed(const Model& model, const Data& data, std::size_t k, const Vec3& point,
                        const Vec3& normal) {
@@ -25,7 +30,7 @@ bool ApplyContactImpulse(const Model& model, Data& data, std::size_t k) {
   PlaceContactSurfaces(model, data);
   const ContactGeometry g = PairGeometry(model, data, k);
   const double closing = -SeparationSpeed(model, data, k, g.point, g.normal);
-  if (!(closing > 0)) return true;
+  if (!(closing > kImpulseSpeed)) return true;
 
   // The velocity response to a unit impulse along the normal (on the first surface; its
   // opposite on the second): M^-1 J^T n, from one articulated-body pass without velocity.
