@@ -33,6 +33,7 @@ Data MakeData(const Model& model) {
   data.u_vector.assign(n, SmallVector(0));
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
+  SizeContactState(model, data.contacts);
   SetUpConstraints(model, data);
   return data;
 }

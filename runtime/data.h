@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/contact/contact_state.h"
 #include "runtime/model.h"
 #include "runtime/spatial.h"
 
@@ -58,6 +59,9 @@ struct Data {
   // Spring–dampers: current length and force (positive in tension).
   std::vector<double> spring_length;
   std::vector<double> spring_force;
+
+  // Contacts: per pair deflection, force and point, the loading history and work arrays.
+  ContactState contacts;
 
   // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
   // null when the Model has none.

@@ -84,6 +84,12 @@ const char* Name(Model::OutputKind kind) {
       return "joint_force";
     case Model::OutputKind::kSpringForce:
       return "spring_force";
+    case Model::OutputKind::kContactForce:
+      return "contact_force";
+    case Model::OutputKind::kContactPoint:
+      return "contact_point";
+    case Model::OutputKind::kContactDeflection:
+      return "contact_deflection";
   }
   return "?";
 }
@@ -232,6 +238,40 @@ std::string DumpModel(const Model& m) {
                      Text(Get(m.constraint_first, c)), Text(Get(m.constraint_point_first, c)),
                      Text(Get(m.constraint_second, c)), Text(Get(m.constraint_point_second, c)),
                      Get(m.constraint_distance, c), Text(Get(m.constraint_axis, c))));
+  }
+  const ContactTable& contacts = m.contacts;
+  for (std::size_t e = 0; e < contacts.nellipsoid(); ++e) {
+    line(
+        fmt::format("contact_ellipsoid {} {} on {} center {} axes {} semi_axes {} degree {} "
+                    "radius {}",
+                    e, contacts.ellipsoid_name[e], Text(Get(contacts.ellipsoid_frame, e)),
+                    Text(Get(contacts.ellipsoid_center, e)), Text(Get(contacts.ellipsoid_axes, e)),
+                    Text(Get(contacts.ellipsoid_semi_axes, e)), Get(contacts.ellipsoid_degree, e),
+                    Get(contacts.ellipsoid_radius, e)));
+  }
+  for (std::size_t p = 0; p < contacts.nplane(); ++p) {
+    line(fmt::format("contact_plane {} {} on {} origin {} edge_u {} edge_v {} normal {}", p,
+                     contacts.plane_name[p], Text(Get(contacts.plane_frame, p)),
+                     Text(Get(contacts.plane_origin, p)), Text(Get(contacts.plane_edge_u, p)),
+                     Text(Get(contacts.plane_edge_v, p)), Text(Get(contacts.plane_normal, p))));
+  }
+  for (std::size_t k = 0; k < contacts.npair(); ++k) {
+    const bool plane = Get(contacts.pair_kind, k) == ContactTable::PairKind::kPlaneEllipsoid;
+    line(fmt::format(
+        "contact {} ellipsoid {} with {} {} function {} damping {} damping_depth {} friction {} "
+        "impulse {} restitution {} source {}",
+        k, Get(contacts.pair_first, k), plane ? "plane" : "ellipsoid", Get(contacts.pair_second, k),
+        Get(contacts.pair_function, k), Get(contacts.pair_damping, k),
+        Get(contacts.pair_damping_depth, k), Get(contacts.pair_friction, k),
+        Get(contacts.pair_impulse, k), Get(contacts.pair_restitution, k),
+        Text(Get(contacts.pair_source, k))));
+  }
+  for (std::size_t g = 0; g < contacts.group_first.size(); ++g) {
+    const auto first = static_cast<std::size_t>(contacts.group_first[g]);
+    const auto count = static_cast<std::size_t>(Get(contacts.group_count, g));
+    const std::vector<std::int32_t> pairs(contacts.group_pairs.begin() + first,
+                                          contacts.group_pairs.begin() + first + count);
+    line(fmt::format("contact_group {} pairs {}", g, List(pairs)));
   }
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
     const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;

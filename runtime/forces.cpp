@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "runtime/contact/contact_forces.h"
 #include "runtime/functions.h"
 #include "runtime/joint.h"
 #include "runtime/vehicle.h"
@@ -63,6 +64,8 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
   }
 }
 
+}  // namespace
+
 void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
                    const Vec3& force_world) {
   const Mat3& R = data.rotation[segment];
@@ -71,8 +74,6 @@ void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
   data.external[segment].head<3>() += arm.cross(force);
   data.external[segment].tail<3>() += force;
 }
-
-}  // namespace
 
 SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation) {
   Eigen::Quaterniond q = rotation;
@@ -119,6 +120,8 @@ void ComputeForces(const Model& model, Data& data) {
   }
   std::fill(data.generalized_force.begin(), data.generalized_force.end(), 0.0);
   for (std::size_t s = 0; s < model.nsegment(); ++s) JointTorques(model, data, s);
+
+  if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
 
   for (std::size_t k = 0; k < model.nspring(); ++k) {
     const PointState a =

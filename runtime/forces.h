@@ -1,6 +1,7 @@
-// The force elements of issue 3: gravity, joint characteristics (torque functions, viscous and
-// Coulomb damping) and spring–dampers / tension elements. They write data.external (wrenches at
-// each centre of mass, segment frame) and data.generalized_force (joint torques).
+// The force elements: gravity, joint characteristics (torque functions, viscous and Coulomb
+// damping), spring–dampers / tension elements and contacts (runtime/contact/). They write
+// data.external (wrenches at each centre of mass, segment frame) and data.generalized_force
+// (joint torques).
 #pragma once
 
 #include "runtime/data.h"
@@ -17,6 +18,11 @@ struct SwingTwist {
   double twist = 0.0;
 };
 SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation);
+
+// Adds a force (world frame) acting at a world point of a segment to the segment's wrench in
+// data.external (at its centre of mass, in its frame).
+void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
+                   const Vec3& force_world);
 
 // World position and velocity of a point fixed in a frame.
 struct PointState {

@@ -32,6 +32,42 @@ double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double 
   return 0.0;
 }
 
+double IntegrateFunction(const FunctionTable& functions, std::int32_t id, double x) {
+  if (id < 0) return 0.0;
+  const auto f = static_cast<std::size_t>(id);
+  const auto first = static_cast<std::size_t>(functions.first[f]);
+  const auto count = static_cast<std::size_t>(functions.count[f]);
+  switch (functions.kind[f]) {
+    case FunctionTable::Kind::kConstant:
+      return functions.constant[f] * x;
+    case FunctionTable::Kind::kPolynomial: {
+      double value = 0.0;
+      for (std::size_t k = count; k-- > 0;) {
+        value = value * x + functions.coefficients[first + k] / static_cast<double>(k + 1);
+      }
+      return value * x;
+    }
+    case FunctionTable::Kind::kTable: {
+      // Linear between the rows (and beyond the ends): the trapezoid rule on each piece between
+      // the rows that lie between 0 and x is exact.
+      const double low = std::min(0.0, x), high = std::max(0.0, x);
+      double sum = 0.0, left = low;
+      const double* xs = functions.points_x.data() + first;
+      for (std::size_t k = 0; k <= count; ++k) {
+        const double right = k < count ? std::min(std::max(xs[k], low), high) : high;
+        if (right > left) {
+          sum += 0.5 *
+                 (EvaluateFunction(functions, id, left) + EvaluateFunction(functions, id, right)) *
+                 (right - left);
+          left = right;
+        }
+      }
+      return x >= 0 ? sum : -sum;
+    }
+  }
+  return 0.0;
+}
+
 double RestoringTorque(const FunctionTable& functions, std::int32_t id, double x) {
   if (id < 0) return 0.0;
   const auto f = static_cast<std::size_t>(id);

@@ -19,10 +19,10 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace sled::runtime {
+#include "runtime/contact/contact_table.h"
+#include "runtime/model_types.h"
 
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
+namespace sled::runtime {
 
 // Typed indices: a SegmentId cannot be passed where a JointId belongs.
 template <typename Tag>
@@ -37,14 +37,6 @@ using VehicleId = Id<struct VehicleTag>;
 using FunctionId = Id<struct FunctionTag>;
 using SpringId = Id<struct SpringTag>;
 using ConstraintId = Id<struct ConstraintTag>;
-
-// Where a point or frame is attached: the ground (inertial), a vehicle (prescribed motion) or a
-// segment (integrated).
-struct FrameRef {
-  enum class Kind : std::uint8_t { kGround, kVehicle, kSegment };
-  Kind kind = Kind::kGround;
-  std::int32_t index = -1;
-};
 
 // How a segment moves relative to its parent. kFree: a reference segment (position and
 // quaternion); kBall: a quaternion; kPin: an angle about `joint_axis`; kSlip: a displacement
@@ -94,13 +86,6 @@ struct VehiclePathSample {
   Vec3 angular_velocity = Vec3::Zero();
   Vec3 displacement = Vec3::Zero();
   Vec3 velocity = Vec3::Zero();
-};
-
-// A line back to the scenario, so runtime messages can name it.
-struct SourcePosition {
-  std::string file;
-  std::uint32_t line = 0;
-  std::uint32_t column = 0;
 };
 
 struct Model {
@@ -182,6 +167,9 @@ struct Model {
   std::vector<double> spring_free_length;
   std::vector<std::uint8_t> spring_tension_only;
 
+  // --- Contacts: plane–ellipsoid and ellipsoid–ellipsoid pairs (runtime/contact/).
+  ContactTable contacts;
+
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
   std::vector<std::string> constraint_name;
@@ -216,10 +204,14 @@ struct Model {
     kJointTorque,
     kJointForce,
     kSpringForce,
+    kContactForce,       // index: a contact output group; world frame, on the first surface
+    kContactPoint,       // index: a contact output group; world frame
+    kContactDeflection,  // index: a contact output group
   };
   std::vector<OutputKind> output_kind;
   std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
-  std::vector<std::int32_t> output_index;  // segment, joint (= child segment) or spring
+  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring or
+                                           // contact output group
   std::vector<Vec3> output_point;          // in the segment frame
   // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,
   // read from its left twin and mirrored. Empty when there is no mirror symmetry.

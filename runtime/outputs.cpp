@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/contact/contact_outputs.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/mirror.h"
@@ -53,6 +54,12 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
       return {"joint_force", "N", kXyz};
     case Model::OutputKind::kSpringForce:
       return {"spring_force", "N", {"axial"}};
+    case Model::OutputKind::kContactForce:
+      return {"contact_force", "N", {"x", "y", "z", "normal"}};
+    case Model::OutputKind::kContactPoint:
+      return {"contact_point", "m", kXyz};
+    case Model::OutputKind::kContactDeflection:
+      return {"contact_deflection", "m", {"normal"}};
   }
   return {"value", "", {"value"}};
 }
@@ -152,6 +159,18 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         break;
       case Model::OutputKind::kSpringForce:
         values[column++] = data.spring_force[index];
+        break;
+      case Model::OutputKind::kContactForce: {
+        const ContactGroupValues contact = EvaluateContactGroup(model, data, index);
+        put(contact.force, MirrorWorldVector);
+        values[column++] = contact.normal_force;
+        break;
+      }
+      case Model::OutputKind::kContactPoint:
+        put(EvaluateContactGroup(model, data, index).point, MirrorWorldVector);
+        break;
+      case Model::OutputKind::kContactDeflection:
+        values[column++] = EvaluateContactGroup(model, data, index).deflection;
         break;
     }
   }

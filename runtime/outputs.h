@@ -2,7 +2,8 @@
 // their values at the current state. Accelerations are in the segment's own frame, as a
 // body-mounted accelerometer reads them; positions and velocities of points are in the ground
 // frame; angular rates and accelerations in the segment frame; joint torques and forces in the
-// child segment's frame, about the joint point.
+// child segment's frame, about the joint point; contact forces (on the first surface) and
+// points in the ground frame.
 #pragma once
 
 #include <span>

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "runtime/constraints.h"
+#include "runtime/contact/contact_forces.h"
+#include "runtime/contact/contact_impulse.h"
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -26,6 +28,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model)
         (model.joint_lock_below[s] >= 0 || model.joint_unlock_above[s] >= 0)) {
       events_.push_back({EventKind::kLock, s});
     }
+  }
+  for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
+    if (model.contacts.pair_impulse[k]) events_.push_back({EventKind::kContactImpulse, k});
   }
   // Workspace for impulses, sized once.
   saved_v_.assign(static_cast<std::size_t>(model.nv), 0.0);
@@ -101,6 +106,7 @@ void MultibodySystem::Project(double t, std::span<double> y) {
   }
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
   if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
+  CommitContactHistory(model_, data_, t, y);
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {
@@ -143,6 +149,10 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
   Failure ignored;
   Forward(model_, data_, &ignored);
   for (std::size_t k = 0; k < events_.size(); ++k) {
+    if (events_[k].kind == EventKind::kContactImpulse) {
+      g[k] = data_.contacts.gap[events_[k].segment];  // > 0 while the surfaces are apart
+      continue;
+    }
     const std::size_t s = events_[k].segment;
     const auto qa = static_cast<std::size_t>(model_.q_address[s]);
     switch (events_[k].kind) {
@@ -171,6 +181,8 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
         }
         break;
       }
+      case EventKind::kContactImpulse:
+        break;
     }
   }
 }
@@ -225,6 +237,11 @@ void MultibodySystem::ApplyJointImpulse(std::size_t s, const SmallMatrix& direct
 
 void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
   Load(t, y);
+  if (events_[k].kind == EventKind::kContactImpulse) {
+    if (direction < 0) ApplyContactImpulse(model_, data_, events_[k].segment);  // touching
+    Store(y);
+    return;
+  }
   const std::size_t s = events_[k].segment;
   const auto qa = static_cast<std::size_t>(model_.q_address[s]);
   const auto va = static_cast<std::size_t>(model_.v_address[s]);
@@ -273,6 +290,8 @@ void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::s
       for (int c = 0; c < count; ++c) data_.v[va + static_cast<std::size_t>(axes[c])] = 0.0;
       break;
     }
+    case EventKind::kContactImpulse:
+      break;
   }
   Store(y);
 }

@@ -1,6 +1,7 @@
 // The multibody equations as an OdeSystem for the integrators: state y = [q; v]. Joint stops
-// with the impulse option and joint locking are events: the integrator locates them inside the
-// step, and HandleEvent applies the impulse or switches the joint's lock state.
+// with the impulse option, joint locking and first contacts with the impulse option are events:
+// the integrator locates them inside the step, and HandleEvent applies the impulse or switches
+// the joint's lock state.
 #pragma once
 
 #include "runtime/data.h"
@@ -29,10 +30,10 @@ class MultibodySystem : public OdeSystem {
   const Failure& failure() const { return failure_; }
 
  private:
-  enum class EventKind { kStop, kTwistStop, kLock };
+  enum class EventKind { kStop, kTwistStop, kLock, kContactImpulse };
   struct Event {
     EventKind kind;
-    std::size_t segment;
+    std::size_t segment;  // the joint's (child) segment; for kContactImpulse the contact pair
   };
 
   // Sets v so that, for each direction d_i (a vector over the joint's velocity coordinates),

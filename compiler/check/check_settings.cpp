@@ -231,8 +231,8 @@ void Checker::CheckOutputs() {
         for (std::size_t i = 0; i < scenario_.contacts.size(); ++i) {
           const Contact& contact = scenario_.contacts[i];
           if (matches(contact.first, first) && matches(contact.second, second)) {
-            output.index = static_cast<int>(i);
-            break;
+            if (output.index < 0) output.index = static_cast<int>(i);
+            output.contacts.push_back(static_cast<int>(i));
           }
         }
         if (output.index < 0) {

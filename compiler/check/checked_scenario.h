@@ -262,9 +262,11 @@ struct OutputRequest {
     kSpringForce,
   };
   Kind kind = Kind::kAcceleration;
-  std::string label;  // channel prefix: `as` name or the target's name
-  int index = -1;     // segment, joint, contact, belt, airbag or spring
-  Vec3 point{};       // point requests: the point in the segment frame
+  std::string label;          // channel prefix: `as` name or the target's name
+  int index = -1;             // segment, joint, contact, belt, airbag or spring
+  std::vector<int> contacts;  // kContactForce: every contact pair the request names (index is
+                              // the first): a segment's ellipsoids give one pair each
+  Vec3 point{};               // point requests: the point in the segment frame
   SourceRange range;
 };
 

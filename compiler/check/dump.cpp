@@ -173,8 +173,13 @@ std::string Dump(const CheckedScenario& s) {
                     v(i.velocity), v(i.angular_velocity), v(i.joint_angles)));
   }
   for (const OutputRequest& o : s.outputs) {
-    line(fmt::format("output {} {} #{} at {}", static_cast<int>(o.kind), o.label, o.index,
-                     V(o.point)));
+    std::string pairs;
+    if (o.contacts.size() > 1) {
+      for (int c : o.contacts) pairs += fmt::format(" #{}", c);
+      pairs = " pairs" + pairs;
+    }
+    line(fmt::format("output {} {} #{} at {}{}", static_cast<int>(o.kind), o.label, o.index,
+                     V(o.point), pairs));
   }
   for (const Criterion& c : s.criteria) {
     line(fmt::format("criterion {} segment {} joint {}", static_cast<int>(c.kind),

@@ -77,6 +77,10 @@ std::int32_t Lowering::Function(FunctionId id) {
 runtime::FrameRef Lowering::Frame(const FrameRef& frame) const {
   switch (frame.kind) {
     case FrameRef::Kind::kSegment:
+      if (Dropped(frame.index)) {
+        throw std::logic_error(fmt::format(
+            "compiler::Lower: segment {} is a right twin the Model leaves out", frame.index));
+      }
       return {runtime::FrameRef::Kind::kSegment,
               new_index[At(frame.index, new_index.size(), "segment")]};
     case FrameRef::Kind::kVehicle:
@@ -133,6 +137,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowered.model.title = scenario.title;
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
+  lowering::LowerContacts(lowering);
   lowering::LowerScene(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);

@@ -21,16 +21,16 @@ struct LowerOptions {
 struct Lowered {
   runtime::Model model;
   // What the Model leaves out and why, one line each, in source order:
-  // `PATH:LINE:COL: note: contact between ... is not simulated yet; left out`. Notes about the
+  // `PATH:LINE:COL: note: belt `lap` is not simulated yet; left out`. Notes about the
   // scenario as a whole (symmetry, settling, restart) have no position: `note: ...`.
   std::vector<std::string> notes;
 };
 
 // Lowers a checked scenario. The scenario must have checked without errors: a broken tree or an
 // index out of range is a programming error (std::logic_error naming the stage and the object).
-// Features the runtime does not simulate yet (contacts, belts, harnesses, airbags, injury
-// criteria, contact/belt/airbag outputs, symmetry, settling, restart) are left out of the Model;
-// `notes` lists each with its source position so `sled run` can say so.
+// Features the runtime does not simulate yet (belts, harnesses, airbags, injury criteria,
+// belt/airbag outputs, symmetry, settling, restart) and contact pairs that can never touch are
+// left out of the Model; `notes` lists each with its source position so `sled run` can say so.
 Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
               const LowerOptions& options);
 

@@ -220,14 +220,14 @@ void LowerOutputs(Lowering& lowering) {
         }
         break;
       case Kind::kContactForce:
+        LowerContactOutput(lowering, output);
+        continue;
       case Kind::kBeltForce:
       case Kind::kAirbagPressure:
         lowering.AddNote(output.range,
                          fmt::format("output `{} {}` is left out: {} are not simulated yet",
                                      OutputKeyword(output.kind), output.label,
-                                     output.kind == Kind::kContactForce ? "contacts"
-                                     : output.kind == Kind::kBeltForce  ? "belts"
-                                                                        : "airbags"));
+                                     output.kind == Kind::kBeltForce ? "belts" : "airbags"));
         continue;
     }
     model.output_kind.push_back(kind);
@@ -239,13 +239,6 @@ void LowerOutputs(Lowering& lowering) {
                  : ToEigen(output.point));
     if (!lowering.mirror_twin.empty()) model.output_mirrored.push_back(mirrored ? 1 : 0);
   }
-}
-
-// A contact side by name (segment ellipsoids are named after their segment: occupant.pelvis).
-std::string SurfaceName(const CheckedScenario& scenario, const SurfaceRef& surface) {
-  return surface.kind == SurfaceRef::Kind::kPlane
-             ? scenario.planes.at(static_cast<std::size_t>(surface.index)).name
-             : scenario.ellipsoids.at(static_cast<std::size_t>(surface.index)).name;
 }
 
 }  // namespace
@@ -260,12 +253,6 @@ void LowerScene(Lowering& lowering) {
 
 void NoteLeftOut(Lowering& lowering) {
   const CheckedScenario& scenario = lowering.scenario();
-  for (const Contact& contact : scenario.contacts) {
-    lowering.AddNote(
-        contact.range,
-        fmt::format("contact between `{}` and `{}` is not simulated yet; left out",
-                    SurfaceName(scenario, contact.first), SurfaceName(scenario, contact.second)));
-  }
   for (const Harness& harness : scenario.harnesses) {
     lowering.AddNote(harness.range,
                      fmt::format("harness `{}` is not simulated yet; left out", harness.name));

@@ -66,6 +66,8 @@ class Lowering {
   bool Dropped(const FrameRef& frame) const {
     return frame.kind == FrameRef::Kind::kSegment && Dropped(frame.index);
   }
+  // By checked contact: its pair in Model::contacts, -1 when it was left out (never touches).
+  std::vector<int> contact_pair;
 
   // The Model's id of a checked function, copying it into the table on first use; -1 for -1.
   std::int32_t Function(FunctionId id);
@@ -108,6 +110,10 @@ void ApplyMirrorSymmetry(Lowering& lowering, std::size_t s);
 void LowerInitialState(Lowering& lowering);
 // Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).
 void LowerScene(Lowering& lowering);
+// Contact surfaces and the pairs that can touch (after LowerTree, before LowerScene).
+void LowerContacts(Lowering& lowering);
+// A `contact_force` request: its output group and channels (after LowerContacts).
+void LowerContactOutput(Lowering& lowering, const OutputRequest& output);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 

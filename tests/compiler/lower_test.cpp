@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 using runtime::JointKind;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
+using ::testing::IsEmpty;
 using ::testing::Not;
 
 const fs::path kRoot = SLED_SOURCE_ROOT;
@@ -428,13 +429,17 @@ TEST(LowerFunctions, OnlyFunctionsTheModelUsesAreKept) {
                                                kUnitInertia)));
   ASSERT_CHECKED(r);
   const runtime::Model& m = r.model();
-  // `unused` is never referred to; `foam` only by a contact, which is left out.
-  ASSERT_EQ(m.functions.size(), 1u);
+  // `unused` is never referred to; the joint's `knee` comes first, then the contact's `foam`.
+  ASSERT_EQ(m.functions.size(), 2u);
+  EXPECT_EQ(m.contacts.pair_function[0], 1);
+  EXPECT_EQ(m.functions.count[1], 2);
   EXPECT_THAT(m.joint_function[1], ElementsAre(0, -1, -1));
   EXPECT_EQ(m.functions.kind[0], runtime::FunctionTable::Kind::kTable);
   EXPECT_EQ(m.functions.first[0], 0);
   EXPECT_EQ(m.functions.count[0], 3);
-  ASSERT_EQ(m.functions.points_x.size(), 3u);
+  ASSERT_EQ(m.functions.points_x.size(), 5u);  // knee's three rows, then foam's two
+  EXPECT_EQ(m.functions.first[1], 3);
+  EXPECT_DOUBLE_EQ(m.functions.points_y[4], 1000);
   EXPECT_NEAR(m.functions.points_x[0], -10 * kDeg, 1e-15);
   EXPECT_DOUBLE_EQ(m.functions.points_y[2], 5);
   EXPECT_DOUBLE_EQ(m.functions.energy_loss[0], 0.5);
@@ -686,26 +691,99 @@ TEST(LowerScene, JointOutputsNameTheChildSegmentInTreeOrder) {
   ExpectNear(m.output_point[1], runtime::Vec3(0, 0, 0.01), 1e-15);
 }
 
-TEST(LowerNotes, ContactsAreLeftOutWithTheirSourcePosition) {
+TEST(LowerContacts, ContactsBecomePairsWithTheirOutputs) {
   const Result r = LowerText(Scene(R"(
   plane floor { corners = (0, 0, 0) m, (1, 0, 0) m, (0, 1, 0) m }
   body b {
     segment s {
       mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
       ellipsoid { semi_axes = (0.1, 0.1, 0.1) m }
+      ellipsoid toe { semi_axes = (0.05, 0.1, 0.2) m  center = (0.1, 0, 0) m  degree = 4 }
     }
   }
-  contact b.s with floor { force = 10 kN/m }
+  contact b.s with floor { force = 10 kN/m  damping = 5 N*s/m  friction = 0.3  impulse = true
+                           restitution = 0.4 }
   initial b { position = (0, 0, 1) m }
   output { contact_force b.s with floor })"));
   ASSERT_CHECKED(r);
-  EXPECT_THAT(r.lowered.notes,
-              ElementsAre("test.sled:11:3: note: contact between `b.s` and `floor` is not "
-                          "simulated yet; left out",
-                          "test.sled:13:12: note: output `contact_force b.s.floor` is left out: "
-                          "contacts are not simulated yet"));
-  EXPECT_TRUE(r.model().output_kind.empty());
-  EXPECT_TRUE(r.model().functions.kind.empty());
+  EXPECT_THAT(r.lowered.notes, IsEmpty());
+  const runtime::ContactTable& c = r.model().contacts;
+  ASSERT_EQ(c.npair(), 2u);  // one pair per ellipsoid of the segment
+  EXPECT_EQ(c.nplane(), 1u);
+  EXPECT_EQ(c.nellipsoid(), 2u);
+  EXPECT_EQ(c.pair_kind[0], runtime::ContactTable::PairKind::kPlaneEllipsoid);
+  EXPECT_EQ(c.pair_second[0], 0);
+  EXPECT_EQ(c.pair_second[1], 0);
+  EXPECT_EQ(c.pair_damping[1], 5.0);
+  EXPECT_EQ(c.pair_friction[1], 0.3);
+  EXPECT_EQ(c.pair_impulse[1], 1);
+  EXPECT_EQ(c.pair_restitution[1], 0.4);
+  EXPECT_EQ(c.ellipsoid_degree[1], 4.0);
+  ExpectNear(c.plane_normal[0], runtime::Vec3::UnitZ(), 1e-15);
+  ExpectNear(c.plane_edge_v[0], runtime::Vec3::UnitY(), 1e-15);
+  ASSERT_EQ(r.model().functions.size(), 1u);
+  EXPECT_EQ(c.pair_function[0], 0);
+  // The request sums both pairs: force, point and deflection channels.
+  EXPECT_THAT(c.group_pairs, ElementsAre(0, 1));
+  EXPECT_THAT(r.model().output_kind, ElementsAre(runtime::Model::OutputKind::kContactForce,
+                                                 runtime::Model::OutputKind::kContactPoint,
+                                                 runtime::Model::OutputKind::kContactDeflection));
+  EXPECT_THAT(r.model().output_label, ElementsAre("b.s.floor", "b.s.floor", "b.s.floor"));
+}
+
+TEST(LowerContacts, PairsThatCanNeverTouchAreLeftOut) {
+  // A two-link arm hung from the ground at (0, 0, 2) m: the upper link reaches 0.3 + 0.1 m from
+  // the pivot, the lower 0.6 + 0.1 m, both far above the floor at z = 0; the pin joint holds the
+  // lower link's ellipsoid 0.2 m from the elbow and the upper's 0.1 m away, which their radii
+  // (0.04, 0.05) cannot bridge; a third segment is locked to the second for good.
+  const Result r = LowerText(Scene(R"(
+  plane floor { corners = (-5, -5, 0) m, (5, -5, 0) m, (-5, 5, 0) m }
+  plane wall { corners = (0.5, -5, 0) m, (0.5, 5, 0) m, (0.5, -5, 5) m }
+  ellipsoid post on ground { semi_axes = (0.1, 0.1, 0.1) m  center = (0, 0, 2.9) m }
+  body arm {
+    segment upper {
+      mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
+      ellipsoid { semi_axes = (0.05, 0.05, 0.05) m  center = (0, 0, 0.1) m }
+    }
+    segment lower {
+      mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
+      ellipsoid { semi_axes = (0.04, 0.04, 0.04) m  center = (0, 0, -0.2) m }
+    }
+    segment hand {
+      mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
+      ellipsoid { semi_axes = (0.03, 0.03, 0.03) m }
+    }
+    joint elbow : pin(upper -> lower) { at upper = (0, 0, -0.2) m  at lower = (0, 0, 0.2) m }
+    joint wrist : pin(lower -> hand) {
+      at lower = (0, 0, -0.2) m  at hand = (0, 0, 0.1) m  locked = true
+    }
+  }
+  constraint shoulder : fixed_point(ground -> arm.upper) {
+    at ground = (0, 0, 2) m  at arm.upper = (0, 0, 0.2) m
+  }
+  contact arm.upper with floor { force = 10 kN/m }
+  contact arm.lower with floor { force = 10 kN/m }
+  contact arm.lower with wall { force = 10 kN/m }
+  contact arm.upper with arm.lower { force = 10 kN/m }
+  contact arm.lower with arm.hand { force = 10 kN/m }
+  contact arm.hand with arm.upper { force = 10 kN/m }
+  contact arm.lower with post { force = 10 kN/m }
+  initial arm { position = (0, 0, 1.8) m })"));
+  ASSERT_CHECKED(r);
+  EXPECT_THAT(
+      r.lowered.notes,
+      ElementsAre(
+          "test.sled:28:3: note: contact between `arm.upper` and `floor` is left out: they can "
+          "never touch (`arm.upper` is held 2 m from it and reaches 0.15 m)",
+          "test.sled:29:3: note: contact between `arm.lower` and `floor` is left out: they can "
+          "never touch (`arm.lower` is held 2 m from it and reaches 0.84 m)",
+          "test.sled:31:3: note: contact between `arm.upper` and `arm.lower` is left out: they "
+          "can never touch (joint `arm.elbow` keeps them apart)",
+          "test.sled:32:3: note: contact between `arm.lower` and `arm.hand` is left out: they "
+          "can never touch (their segments are joined rigidly by joints locked for good)"));
+  // Left: the wall (0.5 m from the pivot, within reach), the hand against the upper link, and
+  // the post (0.9 m above the pivot, its surface 0.8 m: within the 0.84 m reach).
+  EXPECT_EQ(r.model().contacts.npair(), 3u);
 }
 
 // --- `sled check --dump-model` -----------------------------------------------------------------

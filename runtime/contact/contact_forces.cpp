@@ -1,0 +1,221 @@
+#include "runtime/contact/contact_forces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "runtime/contact/contact_force_law.h"
+#include "runtime/dynamics.h"
+#include "runtime/forces.h"
+
+namespace sled::runtime {
+namespace {
+
+// Coulomb friction as a smooth function of the sliding speed: full friction well above this
+// speed [m/s], so the equations stay Lipschitz for the integrators (as the joints' Coulomb
+// torque). A static tangential load below full friction creeps at v0 atanh(load / (mu N)).
+constexpr double kFrictionSpeed = 1e-2;
+
+// World pose and motion of a frame at the current kinematics (vehicles from the per-evaluation
+// cache).
+struct FrameMotion {
+  Vec3 origin = Vec3::Zero();
+  Mat3 rotation = Mat3::Identity();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+};
+
+FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
+  FrameMotion out;
+  const auto i = static_cast<std::size_t>(frame.index);
+  switch (frame.kind) {
+    case FrameRef::Kind::kSegment:
+      out.origin = data.position[i];
+      out.rotation = data.rotation[i];
+      out.velocity = out.rotation * data.velocity[i].tail<3>();
+      out.angular_velocity = out.rotation * data.velocity[i].head<3>();
+      break;
+    case FrameRef::Kind::kVehicle: {
+      const VehicleState& v = data.contacts.vehicles[i];
+      out.origin = v.position;
+      out.rotation = v.rotation;
+      out.velocity = v.velocity;
+      out.angular_velocity = v.angular_velocity;
+      break;
+    }
+    case FrameRef::Kind::kGround:
+      break;
+  }
+  return out;
+}
+
+FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side) {
+  if (side == 0) return table.ellipsoid_frame[static_cast<std::size_t>(table.pair_first[k])];
+  const auto second = static_cast<std::size_t>(table.pair_second[k]);
+  return table.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid
+             ? table.plane_frame[second]
+             : table.ellipsoid_frame[second];
+}
+
+EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std::int32_t e) {
+  const auto i = static_cast<std::size_t>(e);
+  EllipsoidShape shape;
+  shape.center = state.ellipsoid_center[i];
+  shape.rotation = state.ellipsoid_rotation[i];
+  shape.semi_axes = table.ellipsoid_semi_axes[i];
+  shape.degree = table.ellipsoid_degree[i];
+  shape.radius = table.ellipsoid_radius[i];
+  return shape;
+}
+
+PlaneShape PlaneOf(const ContactState& state, std::int32_t p) {
+  const auto i = static_cast<std::size_t>(p);
+  return {state.plane_origin[i], state.plane_edge_u[i], state.plane_edge_v[i],
+          state.plane_normal[i]};
+}
+
+// Pair k's geometry when the bounding spheres may meet; otherwise `touching` false and a gap
+// that is a lower bound of the true one (positive).
+ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
+  const ContactTable& table = model.contacts;
+  const ContactState& state = data.contacts;
+  const auto first = static_cast<std::size_t>(table.pair_first[k]);
+  const Vec3& center = state.ellipsoid_center[first];
+  const double radius = table.ellipsoid_radius[first];
+  ContactGeometry apart;
+  if (table.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid) {
+    const auto p = static_cast<std::size_t>(table.pair_second[k]);
+    const double height = state.plane_normal[p].dot(center - state.plane_origin[p]);
+    // Above the plane by more than the bounding radius, or wholly behind it.
+    if (height > radius || height < -radius) {
+      apart.deflection = -std::abs(height) + radius;
+      return apart;
+    }
+  } else {
+    const auto second = static_cast<std::size_t>(table.pair_second[k]);
+    const double distance = (state.ellipsoid_center[second] - center).norm();
+    const double clearance = distance - radius - table.ellipsoid_radius[second];
+    if (clearance > 0) {
+      apart.deflection = -clearance;
+      return apart;
+    }
+  }
+  return PairGeometry(model, data, k);
+}
+
+}  // namespace
+
+void PlaceContactSurfaces(const Model& model, Data& data) {
+  const ContactTable& table = model.contacts;
+  ContactState& state = data.contacts;
+  for (std::size_t v = 0; v < state.vehicles.size(); ++v) {
+    state.vehicles[v] = VehicleAt(model, v, data.time);
+  }
+  for (std::size_t e = 0; e < table.nellipsoid(); ++e) {
+    const FrameMotion frame = MotionOf(data, table.ellipsoid_frame[e]);
+    state.ellipsoid_center[e] = frame.origin + frame.rotation * table.ellipsoid_center[e];
+    state.ellipsoid_rotation[e] = frame.rotation * table.ellipsoid_axes[e];
+  }
+  for (std::size_t p = 0; p < table.nplane(); ++p) {
+    const FrameMotion frame = MotionOf(data, table.plane_frame[p]);
+    state.plane_origin[p] = frame.origin + frame.rotation * table.plane_origin[p];
+    state.plane_edge_u[p] = frame.rotation * table.plane_edge_u[p];
+    state.plane_edge_v[p] = frame.rotation * table.plane_edge_v[p];
+    state.plane_normal[p] = frame.rotation * table.plane_normal[p];
+  }
+}
+
+ContactGeometry PairGeometry(const Model& model, Data& data, std::size_t k) {
+  const ContactTable& table = model.contacts;
+  ContactState& state = data.contacts;
+  const EllipsoidShape first = ShapeOf(table, state, table.pair_first[k]);
+  if (table.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid) {
+    return PlaneEllipsoid(PlaneOf(state, table.pair_second[k]), first);
+  }
+  return EllipsoidEllipsoid(first, ShapeOf(table, state, table.pair_second[k]),
+                            state.search_direction[k]);
+}
+
+Vec3 SurfacePointVelocity(const Model& model, const Data& data, std::size_t k, int side,
+                          const Vec3& point) {
+  const FrameMotion frame = MotionOf(data, SurfaceFrame(model.contacts, k, side));
+  return frame.velocity + frame.angular_velocity.cross(point - frame.origin);
+}
+
+void AccumulateContactForces(const Model& model, Data& data) {
+  const ContactTable& table = model.contacts;
+  ContactState& state = data.contacts;
+  PlaceContactSurfaces(model, data);
+  for (std::size_t k = 0; k < table.npair(); ++k) {
+    const ContactGeometry g = BoundedGeometry(model, data, k);
+    // Off a plane's edges or behind it counts as apart, whatever the overlap of the surfaces.
+    state.gap[k] = g.touching ? -g.deflection
+                   : g.deflection <= 0
+                       ? -g.deflection
+                       : table.ellipsoid_radius[static_cast<std::size_t>(table.pair_first[k])];
+    if (!g.touching || !state.engaged[k]) {
+      state.deflection[k] = 0.0;
+      state.normal_force[k] = 0.0;
+      state.force[k].setZero();
+      continue;
+    }
+    // Relative motion of the material points at the contact point: the deflection rate and
+    // the sliding velocity of the first surface on the second.
+    const Vec3 relative = SurfacePointVelocity(model, data, k, 0, g.point) -
+                          SurfacePointVelocity(model, data, k, 1, g.point);
+    const double rate = -g.normal.dot(relative);
+    const double elastic =
+        ElasticForce(model.functions, table.pair_function[k], g.deflection, state.history[k]);
+    const double depth = table.pair_damping_depth[k];
+    const double ramp = depth > 0 ? std::min(1.0, g.deflection / depth) : 1.0;
+    const double normal_force =
+        std::max(0.0, g.weight * (elastic + ramp * table.pair_damping[k] * rate));
+    Vec3 force = normal_force * g.normal;
+    const double mu = table.pair_friction[k];
+    if (mu > 0 && normal_force > 0) {
+      const Vec3 sliding = relative - g.normal.dot(relative) * g.normal;
+      const double speed = sliding.norm();
+      // mu N tanh(speed / v0) against the sliding direction; tanh(x)/x -> 1 as x -> 0.
+      const double per_speed = speed > 1e-12 * kFrictionSpeed
+                                   ? std::tanh(speed / kFrictionSpeed) / speed
+                                   : 1.0 / kFrictionSpeed;
+      force -= mu * normal_force * per_speed * sliding;
+    }
+    state.deflection[k] = g.deflection;
+    state.normal_force[k] = normal_force;
+    state.force[k] = force;
+    state.point[k] = g.point;
+    state.normal[k] = g.normal;
+    const FrameRef first = SurfaceFrame(table, k, 0);
+    const FrameRef second = SurfaceFrame(table, k, 1);
+    if (first.kind == FrameRef::Kind::kSegment) {
+      AddPointForce(data, static_cast<std::size_t>(first.index), g.point, force);
+    }
+    if (second.kind == FrameRef::Kind::kSegment) {
+      AddPointForce(data, static_cast<std::size_t>(second.index), g.point, -force);
+    }
+  }
+}
+
+void CommitContactHistory(const Model& model, Data& data, double t, std::span<const double> y) {
+  ContactState& state = data.contacts;
+  if (!state.any_commit) return;
+  const auto nq = static_cast<std::ptrdiff_t>(model.nq);
+  data.time = t;
+  std::copy(y.begin(), y.begin() + nq, data.q.begin());
+  std::copy(y.begin() + nq, y.end(), data.v.begin());
+  ComputeKinematics(model, data);
+  PlaceContactSurfaces(model, data);
+  const ContactTable& table = model.contacts;
+  for (std::size_t k = 0; k < table.npair(); ++k) {
+    const std::int32_t f = table.pair_function[k];
+    const bool history = HasHysteresis(model.functions, f);
+    if (!history && !table.pair_impulse[k]) continue;
+    const ContactGeometry g = BoundedGeometry(model, data, k);
+    if (table.pair_impulse[k]) state.engaged[k] = g.touching ? 1 : 0;
+    if (history && g.touching) {
+      state.history[k] = CommitDeflection(model.functions, f, g.deflection, state.history[k]);
+    }
+  }
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,56 @@
+// What changes during a run for the contacts of a Model: per pair, the result of the last force
+// evaluation (outputs and events read it), the loading history committed after each accepted
+// step, and the work arrays of the force pass. Sized once by SizeContactState; nothing in a step
+// allocates.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "runtime/contact/contact_force_law.h"
+#include "runtime/model_types.h"
+#include "runtime/vehicle.h"
+
+namespace sled::runtime {
+
+struct Model;
+
+struct ContactState {
+  // --- Per pair, from the last force evaluation (world frame).
+  std::vector<double> deflection;    // > 0 in contact, 0 apart
+  std::vector<double> gap;           // signed distance, > 0 apart (a lower bound when far apart)
+  std::vector<double> normal_force;  // >= 0, including damping and the edge weight
+  std::vector<Vec3> force;           // on the first surface: normal force plus friction
+  std::vector<Vec3> point;           // where the force acts
+  std::vector<Vec3> normal;          // unit, the direction the first surface is pushed
+  // Warm start of the common-normal search of ellipsoid pairs: the last normal found (from the
+  // first ellipsoid towards the second).
+  std::vector<Vec3> search_direction;
+
+  // --- Per pair, committed after accepted steps: the largest deflection and its unloading curve.
+  std::vector<LoadingHistory> history;
+  // Per pair with the impulse option: 1 while its surfaces are in contact at the last accepted
+  // step (the impulse has been applied, or they started in contact). The force law waits for
+  // it, so the step that reaches the surface is free flight and the impact is located exactly.
+  std::vector<std::uint8_t> engaged;
+  bool any_commit = false;  // some pair keeps a history or has the impulse option
+
+  // --- Per surface, recomputed each evaluation: world pose and motion of its frame.
+  std::vector<Vec3> ellipsoid_center;    // world
+  std::vector<Mat3> ellipsoid_rotation;  // ellipsoid axes to world
+  std::vector<Vec3> plane_origin;        // world
+  std::vector<Vec3> plane_edge_u;
+  std::vector<Vec3> plane_edge_v;
+  std::vector<Vec3> plane_normal;
+
+  // --- Per vehicle, recomputed each evaluation when a surface is fixed in a vehicle.
+  std::vector<VehicleState> vehicles;
+
+  // --- Impulse workspace: the velocity response to a unit contact impulse and a saved velocity.
+  std::vector<double> response;
+  std::vector<double> saved_v;
+};
+
+void SizeContactState(const Model& model, ContactState& state);
+
+}  // namespace sled::runtime
