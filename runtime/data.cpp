@@ -1,6 +1,7 @@
 #include "runtime/data.h"
 
 #include "runtime/constraints.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 
@@ -34,6 +35,7 @@ Data MakeData(const Model& model) {
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
   SetUpConstraints(model, data);
+  SetUpBelts(model, data);
   return data;
 }
 

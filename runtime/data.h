@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "runtime/model.h"
+#include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
 
 namespace sled::runtime {
@@ -58,6 +59,9 @@ struct Data {
   // Spring–dampers: current length and force (positive in tension).
   std::vector<double> spring_length;
   std::vector<double> spring_force;
+
+  // Belts and harnesses (restraint/belts.h).
+  BeltState belts;
 
   // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
   // null when the Model has none.

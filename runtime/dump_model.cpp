@@ -84,6 +84,8 @@ const char* Name(Model::OutputKind kind) {
       return "joint_force";
     case Model::OutputKind::kSpringForce:
       return "spring_force";
+    case Model::OutputKind::kBeltForce:
+      return "belt_force";
   }
   return "?";
 }
@@ -147,6 +149,37 @@ std::string FunctionText(const FunctionTable& f, std::size_t i) {
   }
   return out + fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
                            Get(f.permanent_set, i));
+}
+
+// One line per belt and per path point, then the harnesses and their tie points.
+template <typename Line>
+void DumpBelts(const Model& m, Line& line) {
+  const BeltTable& belts = m.belts;
+  for (std::size_t b = 0; b < belts.size(); ++b) {
+    line(fmt::format(
+        "belt {} {} function {} slack {} pretension {} friction {} harness {} points {}", b,
+        belts.name[b], Get(belts.function, b), Get(belts.slack, b), Get(belts.pretension, b),
+        Get(belts.friction, b), Get(belts.harness, b), Get(belts.point_count, b)));
+    const auto first = static_cast<std::size_t>(Get(belts.first_point, b));
+    for (std::size_t k = first; k < first + static_cast<std::size_t>(belts.point_count[b]); ++k) {
+      if (Get(belts.point_wraps, k)) {
+        line(fmt::format("  wrap {} centre {} axes {} semi_axes {}",
+                         Text(Get(belts.point_frame, k)), Text(Get(belts.point_position, k)),
+                         Text(Get(belts.point_axes, k)), Text(Get(belts.point_semi_axes, k))));
+      } else {
+        line(fmt::format("  anchor {} {}", Text(Get(belts.point_frame, k)),
+                         Text(Get(belts.point_position, k))));
+      }
+    }
+  }
+  for (std::size_t h = 0; h < belts.harness_name.size(); ++h) {
+    line(fmt::format("harness {} {} friction {}", h, belts.harness_name[h],
+                     Get(belts.harness_friction, h)));
+  }
+  for (std::size_t t = 0; t < belts.tie_points.size(); ++t) {
+    line(fmt::format("tie {} harness {} points {} {}", t, Get(belts.tie_harness, t),
+                     belts.tie_points[t][0], belts.tie_points[t][1]));
+  }
 }
 
 }  // namespace
@@ -223,6 +256,7 @@ std::string DumpModel(const Model& m) {
                      Text(Get(m.constraint_second, c)), Text(Get(m.constraint_point_second, c)),
                      Get(m.constraint_distance, c), Text(Get(m.constraint_axis, c))));
   }
+  DumpBelts(m, line);
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
     line(fmt::format("output {} {} {} index {} point {}", o, Name(m.output_kind[o]),
                      Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o))));

@@ -4,6 +4,7 @@
 
 #include "runtime/functions.h"
 #include "runtime/joint.h"
+#include "runtime/restraint/belts.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -62,6 +63,8 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
   }
 }
 
+}  // namespace
+
 void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
                    const Vec3& force_world) {
   const Mat3& R = data.rotation[segment];
@@ -70,8 +73,6 @@ void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
   data.external[segment].head<3>() += arm.cross(force);
   data.external[segment].tail<3>() += force;
 }
-
-}  // namespace
 
 SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation) {
   Eigen::Quaterniond q = rotation;
@@ -144,6 +145,7 @@ void ComputeForces(const Model& model, Data& data) {
                     -force * direction);
     }
   }
+  ComputeBeltForces(model, data);
 }
 
 }  // namespace sled::runtime

@@ -18,6 +18,8 @@
 
 #include <Eigen/Core>
 
+#include "runtime/restraint/belt_table.h"
+
 namespace sled::runtime {
 
 using Vec3 = Eigen::Vector3d;
@@ -157,6 +159,9 @@ struct Model {
   std::vector<double> spring_free_length;
   std::vector<std::uint8_t> spring_tension_only;
 
+  // --- Belts and harnesses.
+  BeltTable belts;
+
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
   std::vector<std::string> constraint_name;
@@ -191,10 +196,11 @@ struct Model {
     kJointTorque,
     kJointForce,
     kSpringForce,
+    kBeltForce,
   };
   std::vector<OutputKind> output_kind;
   std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
-  std::vector<std::int32_t> output_index;  // segment, joint (= child segment) or spring
+  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring or belt
   std::vector<Vec3> output_point;          // in the segment frame
 
   // --- Side table: where each entity was declared.

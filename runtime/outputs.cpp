@@ -7,6 +7,7 @@
 
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 namespace {
@@ -52,6 +53,8 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
       return {"joint_force", "N", kXyz};
     case Model::OutputKind::kSpringForce:
       return {"spring_force", "N", {"axial"}};
+    case Model::OutputKind::kBeltForce:
+      return {"belt_force", "N", {}};  // named by AppendBeltChannelNames
   }
   return {"value", "", {"value"}};
 }
@@ -61,6 +64,11 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
 std::vector<std::string> ChannelNames(const Model& model) {
   std::vector<std::string> names;
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
+    if (model.output_kind[k] == Model::OutputKind::kBeltForce) {
+      AppendBeltChannelNames(model, static_cast<std::size_t>(model.output_index[k]),
+                             model.output_label[k], names);
+      continue;
+    }
     const ChannelGroup group = GroupOf(model, k);
     for (const char* component : group.components) {
       names.push_back(fmt::format("{}.{}.{} [{}]", model.output_label[k], group.quantity, component,
@@ -143,6 +151,9 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         break;
       case Model::OutputKind::kSpringForce:
         values[column++] = data.spring_force[index];
+        break;
+      case Model::OutputKind::kBeltForce:
+        column += WriteBeltChannels(model, data, index, values.subspan(column));
         break;
     }
   }

@@ -9,6 +9,7 @@
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 
@@ -101,6 +102,8 @@ void MultibodySystem::Project(double t, std::span<double> y) {
   }
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
   if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
+  // Belts: the webbing distribution and loading histories of the accepted step.
+  CommitBelts(model_, data_, t, y);
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {

@@ -209,15 +209,21 @@ void LowerOutputs(Lowering& lowering) {
                                              output.label, index, model.nspring()));
         }
         break;
-      case Kind::kContactForce:
       case Kind::kBeltForce:
+        kind = Model::OutputKind::kBeltForce;
+        index = output.index;
+        if (index < 0 || static_cast<std::size_t>(index) >= lowering.scenario().belts.size()) {
+          throw std::logic_error(fmt::format("compiler::Lower: output `{}` names belt {} of {}",
+                                             output.label, index,
+                                             lowering.scenario().belts.size()));
+        }
+        break;
+      case Kind::kContactForce:
       case Kind::kAirbagPressure:
         lowering.AddNote(output.range,
                          fmt::format("output `{} {}` is left out: {} are not simulated yet",
                                      OutputKeyword(output.kind), output.label,
-                                     output.kind == Kind::kContactForce ? "contacts"
-                                     : output.kind == Kind::kBeltForce  ? "belts"
-                                                                        : "airbags"));
+                                     output.kind == Kind::kContactForce ? "contacts" : "airbags"));
         continue;
     }
     model.output_kind.push_back(kind);
@@ -251,15 +257,6 @@ void NoteLeftOut(Lowering& lowering) {
         contact.range,
         fmt::format("contact between `{}` and `{}` is not simulated yet; left out",
                     SurfaceName(scenario, contact.first), SurfaceName(scenario, contact.second)));
-  }
-  for (const Harness& harness : scenario.harnesses) {
-    lowering.AddNote(harness.range,
-                     fmt::format("harness `{}` is not simulated yet; left out", harness.name));
-  }
-  for (const Belt& belt : scenario.belts) {
-    if (belt.harness >= 0) continue;  // in its harness's note
-    lowering.AddNote(belt.range,
-                     fmt::format("belt `{}` is not simulated yet; left out", belt.name));
   }
   for (const Airbag& airbag : scenario.airbags) {
     lowering.AddNote(airbag.range,

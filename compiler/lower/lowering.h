@@ -82,6 +82,8 @@ void LowerTree(Lowering& lowering);
 void LowerInitialState(Lowering& lowering);
 // Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).
 void LowerScene(Lowering& lowering);
+// Belts and harnesses, in the checked scenario's order (after LowerTree).
+void LowerBelts(Lowering& lowering);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 
