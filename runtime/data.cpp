@@ -1,6 +1,7 @@
 #include "runtime/data.h"
 
 #include "runtime/constraints.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 
@@ -35,6 +36,7 @@ Data MakeData(const Model& model) {
   data.spring_force.assign(model.nspring(), 0.0);
   SizeContactState(model, data.contacts);
   SetUpConstraints(model, data);
+  SetUpBelts(model, data);
   return data;
 }
 

@@ -10,6 +10,7 @@
 
 #include "runtime/contact/contact_state.h"
 #include "runtime/model.h"
+#include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
 
 namespace sled::runtime {
@@ -62,6 +63,8 @@ struct Data {
 
   // Contacts: per pair deflection, force and point, the loading history and work arrays.
   ContactState contacts;
+  // Belts and harnesses (restraint/belts.h).
+  BeltState belts;
 
   // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
   // null when the Model has none.

@@ -90,6 +90,8 @@ const char* Name(Model::OutputKind kind) {
       return "contact_point";
     case Model::OutputKind::kContactDeflection:
       return "contact_deflection";
+    case Model::OutputKind::kBeltForce:
+      return "belt_force";
   }
   return "?";
 }
@@ -153,6 +155,37 @@ std::string FunctionText(const FunctionTable& f, std::size_t i) {
   }
   return out + fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
                            Get(f.permanent_set, i));
+}
+
+// One line per belt and per path point, then the harnesses and their tie points.
+template <typename Line>
+void DumpBelts(const Model& m, Line& line) {
+  const BeltTable& belts = m.belts;
+  for (std::size_t b = 0; b < belts.size(); ++b) {
+    line(fmt::format(
+        "belt {} {} function {} slack {} pretension {} friction {} harness {} points {}", b,
+        belts.name[b], Get(belts.function, b), Get(belts.slack, b), Get(belts.pretension, b),
+        Get(belts.friction, b), Get(belts.harness, b), Get(belts.point_count, b)));
+    const auto first = static_cast<std::size_t>(Get(belts.first_point, b));
+    for (std::size_t k = first; k < first + static_cast<std::size_t>(belts.point_count[b]); ++k) {
+      if (Get(belts.point_wraps, k)) {
+        line(fmt::format("  wrap {} centre {} axes {} semi_axes {}",
+                         Text(Get(belts.point_frame, k)), Text(Get(belts.point_position, k)),
+                         Text(Get(belts.point_axes, k)), Text(Get(belts.point_semi_axes, k))));
+      } else {
+        line(fmt::format("  anchor {} {}", Text(Get(belts.point_frame, k)),
+                         Text(Get(belts.point_position, k))));
+      }
+    }
+  }
+  for (std::size_t h = 0; h < belts.harness_name.size(); ++h) {
+    line(fmt::format("harness {} {} friction {}", h, belts.harness_name[h],
+                     Get(belts.harness_friction, h)));
+  }
+  for (std::size_t t = 0; t < belts.tie_points.size(); ++t) {
+    line(fmt::format("tie {} harness {} points {} {}", t, Get(belts.tie_harness, t),
+                     belts.tie_points[t][0], belts.tie_points[t][1]));
+  }
 }
 
 }  // namespace
@@ -273,6 +306,7 @@ std::string DumpModel(const Model& m) {
                                           contacts.group_pairs.begin() + first + count);
     line(fmt::format("contact_group {} pairs {}", g, List(pairs)));
   }
+  DumpBelts(m, line);
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
     const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;
     line(fmt::format("output {} {} {} index {} point {}{}", o, Name(m.output_kind[o]),

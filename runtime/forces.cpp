@@ -5,6 +5,7 @@
 #include "runtime/contact/contact_forces.h"
 #include "runtime/functions.h"
 #include "runtime/joint.h"
+#include "runtime/restraint/belts.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -148,6 +149,7 @@ void ComputeForces(const Model& model, Data& data) {
                     -force * direction);
     }
   }
+  ComputeBeltForces(model, data);
 }
 
 }  // namespace sled::runtime

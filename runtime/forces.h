@@ -29,6 +29,11 @@ struct PointState {
   Vec3 position;
   Vec3 velocity;
 };
+
+// Adds a force (world) applied at a point (world) to a segment's wrench at its centre of mass.
+void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
+                   const Vec3& force_world);
+
 PointState PointInFrame(const Model& model, const Data& data, const FrameRef& frame,
                         const Vec3& point);
 

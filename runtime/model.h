@@ -22,6 +22,8 @@
 #include "runtime/contact/contact_table.h"
 #include "runtime/model_types.h"
 
+#include "runtime/restraint/belt_table.h"
+
 namespace sled::runtime {
 
 // Typed indices: a SegmentId cannot be passed where a JointId belongs.
@@ -169,6 +171,8 @@ struct Model {
 
   // --- Contacts: plane–ellipsoid and ellipsoid–ellipsoid pairs (runtime/contact/).
   ContactTable contacts;
+  // --- Belts and harnesses.
+  BeltTable belts;
 
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
@@ -207,10 +211,11 @@ struct Model {
     kContactForce,       // index: a contact output group; world frame, on the first surface
     kContactPoint,       // index: a contact output group; world frame
     kContactDeflection,  // index: a contact output group
+    kBeltForce,          // index: a belt
   };
   std::vector<OutputKind> output_kind;
   std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
-  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring or
+  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring, belt or
                                            // contact output group
   std::vector<Vec3> output_point;          // in the segment frame
   // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,

@@ -9,6 +9,7 @@
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/mirror.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 namespace {
@@ -60,6 +61,9 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
       return {"contact_point", "m", kXyz};
     case Model::OutputKind::kContactDeflection:
       return {"contact_deflection", "m", {"normal"}};
+      break;
+    case Model::OutputKind::kBeltForce:
+      return {"belt_force", "N", {}};  // named by AppendBeltChannelNames
   }
   return {"value", "", {"value"}};
 }
@@ -69,6 +73,11 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
 std::vector<std::string> ChannelNames(const Model& model) {
   std::vector<std::string> names;
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
+    if (model.output_kind[k] == Model::OutputKind::kBeltForce) {
+      AppendBeltChannelNames(model, static_cast<std::size_t>(model.output_index[k]),
+                             model.output_label[k], names);
+      continue;
+    }
     const ChannelGroup group = GroupOf(model, k);
     for (const char* component : group.components) {
       names.push_back(fmt::format("{}.{}.{} [{}]", model.output_label[k], group.quantity, component,
@@ -171,6 +180,9 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         break;
       case Model::OutputKind::kContactDeflection:
         values[column++] = EvaluateContactGroup(model, data, index).deflection;
+        break;
+      case Model::OutputKind::kBeltForce:
+        column += WriteBeltChannels(model, data, index, values.subspan(column));
         break;
     }
   }

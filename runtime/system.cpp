@@ -11,6 +11,7 @@
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 
@@ -107,6 +108,8 @@ void MultibodySystem::Project(double t, std::span<double> y) {
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
   if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
   CommitContactHistory(model_, data_, t, y);
+  // Belts: the webbing distribution and loading histories of the accepted step.
+  CommitBelts(model_, data_, t, y);
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {

@@ -139,6 +139,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowering::LowerTree(lowering);
   lowering::LowerContacts(lowering);
   lowering::LowerScene(lowering);
+  lowering::LowerBelts(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);
   lowered.notes = lowering.TakeNotes();

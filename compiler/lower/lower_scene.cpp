@@ -223,11 +223,18 @@ void LowerOutputs(Lowering& lowering) {
         LowerContactOutput(lowering, output);
         continue;
       case Kind::kBeltForce:
+        kind = Model::OutputKind::kBeltForce;
+        index = output.index;
+        if (index < 0 || static_cast<std::size_t>(index) >= lowering.scenario().belts.size()) {
+          throw std::logic_error(fmt::format("compiler::Lower: output `{}` names belt {} of {}",
+                                             output.label, index,
+                                             lowering.scenario().belts.size()));
+        }
+        break;
       case Kind::kAirbagPressure:
         lowering.AddNote(output.range,
-                         fmt::format("output `{} {}` is left out: {} are not simulated yet",
-                                     OutputKeyword(output.kind), output.label,
-                                     output.kind == Kind::kBeltForce ? "belts" : "airbags"));
+                         fmt::format("output `{} {}` is left out: airbags are not simulated yet",
+                                     OutputKeyword(output.kind), output.label));
         continue;
     }
     model.output_kind.push_back(kind);
@@ -253,15 +260,6 @@ void LowerScene(Lowering& lowering) {
 
 void NoteLeftOut(Lowering& lowering) {
   const CheckedScenario& scenario = lowering.scenario();
-  for (const Harness& harness : scenario.harnesses) {
-    lowering.AddNote(harness.range,
-                     fmt::format("harness `{}` is not simulated yet; left out", harness.name));
-  }
-  for (const Belt& belt : scenario.belts) {
-    if (belt.harness >= 0) continue;  // in its harness's note
-    lowering.AddNote(belt.range,
-                     fmt::format("belt `{}` is not simulated yet; left out", belt.name));
-  }
   for (const Airbag& airbag : scenario.airbags) {
     lowering.AddNote(airbag.range,
                      fmt::format("airbag `{}` is not simulated yet; left out", airbag.name));

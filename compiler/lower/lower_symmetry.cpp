@@ -176,6 +176,14 @@ void PlanMirrorSymmetry(Lowering& lowering) {
       return refuse(fmt::format("spring `{}` acts on a right segment", spring.name));
     }
   }
+  for (const Belt& belt : scenario.belts) {
+    for (const BeltPoint& point : belt.path) {
+      const bool right = point.kind == BeltPoint::Kind::kSegment
+                             ? twin[static_cast<std::size_t>(point.segment)] >= 0
+                             : on_right(point.frame);
+      if (right) return refuse(fmt::format("belt `{}` runs over a right segment", belt.name));
+    }
+  }
   for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
     const Constraint& constraint = scenario.constraints[c];
     const bool holds_a_root =

@@ -114,6 +114,8 @@ void LowerScene(Lowering& lowering);
 void LowerContacts(Lowering& lowering);
 // A `contact_force` request: its output group and channels (after LowerContacts).
 void LowerContactOutput(Lowering& lowering, const OutputRequest& output);
+// Belts and harnesses, in the checked scenario's order (after LowerTree).
+void LowerBelts(Lowering& lowering);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 

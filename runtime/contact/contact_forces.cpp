@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "runtime/contact/contact_force_law.h"
 #include "runtime/dynamics.h"
+#include "runtime/force_deflection.h"
 #include "runtime/forces.h"
 
 namespace sled::runtime {
@@ -163,8 +163,8 @@ void AccumulateContactForces(const Model& model, Data& data) {
     const Vec3 relative = SurfacePointVelocity(model, data, k, 0, g.point) -
                           SurfacePointVelocity(model, data, k, 1, g.point);
     const double rate = -g.normal.dot(relative);
-    const double elastic =
-        ElasticForce(model.functions, table.pair_function[k], g.deflection, state.history[k]);
+    const double elastic = LoadingUnloadingForce(model.functions, table.pair_function[k],
+                                                 g.deflection, state.history[k]);
     const double depth = table.pair_damping_depth[k];
     const double ramp = depth > 0 ? std::min(1.0, g.deflection / depth) : 1.0;
     const double normal_force =
@@ -213,7 +213,7 @@ void CommitContactHistory(const Model& model, Data& data, double t, std::span<co
     const ContactGeometry g = BoundedGeometry(model, data, k);
     if (table.pair_impulse[k]) state.engaged[k] = g.touching ? 1 : 0;
     if (history && g.touching) {
-      state.history[k] = CommitDeflection(model.functions, f, g.deflection, state.history[k]);
+      UpdateLoadingHistory(model.functions, f, g.deflection, state.history[k]);
     }
   }
 }

@@ -1,6 +1,6 @@
 #include "runtime/contact/contact_state.h"
 
-#include "runtime/contact/contact_force_law.h"
+#include "runtime/force_deflection.h"
 #include "runtime/model.h"
 
 namespace sled::runtime {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/contact/contact_force_law.h"
+#include "runtime/force_deflection.h"
 #include "runtime/model_types.h"
 #include "runtime/vehicle.h"
 

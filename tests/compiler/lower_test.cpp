@@ -786,6 +786,70 @@ TEST(LowerContacts, PairsThatCanNeverTouchAreLeftOut) {
   EXPECT_EQ(r.model().contacts.npair(), 3u);
 }
 
+TEST(LowerBelts, PathsFunctionsHarnessesAndTiePoints) {
+  const Result r = LowerText(Scene(R"(
+  vehicle sled { motion = half_sine(delta_v = 10 km/h, duration = 50 ms, axis = -x) }
+  function webbing = table(strain -> force) { 0 -> 0 N  0.1 -> 8 kN  0.2 -> 8 kN }
+  body b {
+    segment s {
+      mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
+      ellipsoid { semi_axes = (0.1, 0.2, 0.3) m  center = (10, 0, 0) mm  orientation = (90, 0, 0) deg }
+    }
+  }
+  body c { segment s { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 } }
+  belt lap on sled {
+    path = (0, -200, 0) mm -> b.s -> (0, 200, 0) mm
+    force = webbing
+    slack = 5 mm
+    pretension = 10 kN
+    friction = 0.2
+  }
+  harness h on sled {
+    friction = 0.3
+    belt one { path = (0, 0, 0) m -> b.s -> (0.1, 0, 0) m  force = webbing }
+    belt two { path = (0.1, 0, 0) m -> c.s -> (0.2, 0, 0) m  force = webbing }
+  }
+  initial b { position = (0.3, 0, 0) m }
+  initial c { position = (0.3, 0, 0.5) m }
+  output { belt_force h.two })"));
+  ASSERT_CHECKED(r);
+  const runtime::BeltTable& belts = r.model().belts;
+  EXPECT_THAT(belts.name, ElementsAre("lap", "h.one", "h.two"));
+  EXPECT_THAT(belts.harness, ElementsAre(-1, 0, 0));
+  EXPECT_THAT(belts.first_point, ElementsAre(0, 3, 6));
+  EXPECT_THAT(belts.point_count, ElementsAre(3, 3, 3));
+  EXPECT_THAT(belts.slack, ElementsAre(0.005, 0.0, 0.0));
+  EXPECT_THAT(belts.pretension, ElementsAre(10000.0, 0.0, 0.0));
+  EXPECT_THAT(belts.friction, ElementsAre(0.2, 0.0, 0.0));
+  EXPECT_THAT(belts.function, ElementsAre(0, 0, 0));  // one webbing function, copied once
+  EXPECT_THAT(belts.point_wraps, ElementsAre(0, 1, 0, 0, 1, 0, 0, 1, 0));
+  EXPECT_EQ(belts.point_frame[0].kind, runtime::FrameRef::Kind::kVehicle);
+  EXPECT_EQ(belts.point_frame[1].kind, runtime::FrameRef::Kind::kSegment);
+  EXPECT_EQ(belts.point_frame[1].index, r.Segment("b.s"));
+  EXPECT_EQ(belts.point_frame[7].index, r.Segment("c.s"));
+  ExpectNear(belts.point_position[2], runtime::Vec3(0, 0.2, 0), 1e-15);
+  ExpectNear(belts.point_position[1], runtime::Vec3(0.01, 0, 0), 1e-15);
+  ExpectNear(belts.point_semi_axes[1], runtime::Vec3(0.1, 0.2, 0.3), 1e-15);
+  ExpectNear(belts.point_axes[1],
+             Eigen::AngleAxisd(90 * kDeg, runtime::Vec3::UnitZ()).toRotationMatrix(), 1e-15);
+  ExpectNear(belts.point_semi_axes[7], runtime::Vec3::Zero(), 0.0);  // no ellipsoid: a point
+  EXPECT_THAT(belts.harness_name, ElementsAre("h"));
+  EXPECT_THAT(belts.harness_friction, ElementsAre(0.3));
+  // h.one ends where h.two starts: one tie point between path points 5 and 6.
+  ASSERT_EQ(belts.tie_points.size(), 1u);
+  EXPECT_EQ(belts.tie_points[0], (std::array<std::int32_t, 2>{5, 6}));
+  EXPECT_THAT(belts.tie_harness, ElementsAre(0));
+  ASSERT_EQ(r.model().output_kind.size(), 1u);
+  EXPECT_EQ(r.model().output_kind[0], runtime::Model::OutputKind::kBeltForce);
+  EXPECT_EQ(r.model().output_index[0], 2);
+  std::string notes;
+  for (const std::string& note : r.lowered.notes) notes += note + "\n";
+  EXPECT_THAT(notes, HasSubstr("segment `c.s` has no ellipsoid: belt `h.two` passes through its "
+                               "centre of mass"));
+  EXPECT_THAT(notes, HasSubstr("the force of belt `lap` does not reach its pretension of 10000 N"));
+  EXPECT_THAT(notes, ::testing::Not(HasSubstr("not simulated")));
+}
+
 // --- `sled check --dump-model` -----------------------------------------------------------------
 
 TEST(LowerDriver, CheckDumpModelPrintsTheModel) {

@@ -1,6 +1,7 @@
 // No allocation inside a step (DESIGN.md §4): once an integrator is set up, advancing a
 // multibody system through many steps, events included, allocates nothing. Global operator new
 // is replaced in this test binary to count allocations while a flag is raised.
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -31,6 +32,35 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace sled::runtime {
 namespace {
 
+struct Counted {
+  long allocations = 0;
+  long steps = 0;
+};
+
+// Advances from 0 to each multiple of `interval` up to `outputs` of them with `method`, counting
+// allocations after the first (which warms up any lazily sized buffer of the method) and calling
+// `after_each` after every counted Advance.
+template <typename AfterEach>
+Counted AdvanceCounting(const Model& model, Data& data, const char* method, double interval,
+                        int outputs, AfterEach after_each) {
+  MultibodySystem system(model, data);
+  std::vector<double> y(system.size());
+  system.Store(y);
+  auto integrator = MakeIntegrator(method);
+  IntegratorOptions options;
+  options.relative_tolerance = 1e-8;
+  integrator->Reset(system, 0.0, y, options);
+  integrator->Advance(interval);
+  allocations = 0;
+  counting = true;
+  for (int k = 2; k <= outputs; ++k) {
+    integrator->Advance(interval * k);
+    after_each();
+  }
+  counting = false;
+  return {allocations.load(), integrator->stats().steps};
+}
+
 TEST(NoAllocation, AdvancingAllocatesNothing) {
   Model model;
   testing::AddSegment(model, "pelvis", -1, JointKind::kFree, 10.0, Vec3(0.1, 0.1, 0.1));
@@ -47,20 +77,61 @@ TEST(NoAllocation, AdvancingAllocatesNothing) {
     model.v0[k] = 1.0 + 0.1 * static_cast<double>(k);
   for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
     Data data = MakeData(model);
-    MultibodySystem system(model, data);
-    std::vector<double> y(system.size());
-    system.Store(y);
-    auto integrator = MakeIntegrator(method);
-    IntegratorOptions options;
-    options.relative_tolerance = 1e-8;
-    integrator->Reset(system, 0.0, y, options);
-    integrator->Advance(0.01);  // warm up any lazily sized buffer of the method
-    allocations = 0;
-    counting = true;
-    for (int k = 2; k <= 100; ++k) integrator->Advance(0.01 * k);
-    counting = false;
-    EXPECT_EQ(allocations.load(), 0) << method;
-    EXPECT_GT(integrator->stats().steps, 50) << method;
+    const Counted counted = AdvanceCounting(model, data, method, 0.01, 100, [] {});
+    EXPECT_EQ(counted.allocations, 0) << method;
+    EXPECT_GT(counted.steps, 50) << method;
+  }
+}
+
+// Two spheres, each wrapped by a belt with friction and a lossy webbing function; the belts form
+// a harness joined at a tie point with friction. Both spheres move into their belts.
+TEST(NoAllocation, BeltsAllocateNothing) {
+  Model model;
+  model.gravity.setZero();
+  for (const char* name : {"a", "b"}) {
+    testing::AddSegment(model, name, -1, JointKind::kFree, 1.0, Vec3(2e-4, 2e-4, 2e-4));
+  }
+  model.q0[0] = 0.05;
+  model.q0[1] = -0.5;
+  model.q0[7] = 0.05;
+  model.q0[8] = 0.5;
+  model.v0[3] = 2.0;  // a: along its x
+  model.v0[9] = 1.0;  // b: along its x
+  model.v0[2] = 5.0;  // a spins
+  testing::AddTableFunction(model.functions, {{0, 0}, {1, 20000}}, 0.4, 0.1);
+  BeltTable& belts = model.belts;
+  belts.harness_name.push_back("harness");
+  belts.harness_friction.push_back(0.3);
+  const Vec3 ends[2][2] = {{Vec3(0, -1, 0), Vec3(0, 0, 0)}, {Vec3(0, 0, 0), Vec3(0, 1, 0)}};
+  for (int b = 0; b < 2; ++b) {
+    belts.name.push_back(b == 0 ? "harness.left" : "harness.right");
+    belts.function.push_back(0);
+    belts.slack.push_back(0.001);
+    belts.pretension.push_back(0.0);
+    belts.friction.push_back(0.2);
+    belts.harness.push_back(0);
+    belts.first_point.push_back(3 * b);
+    belts.point_count.push_back(3);
+    for (int k = 0; k < 3; ++k) {
+      const bool wraps = k == 1;
+      belts.point_frame.push_back(wraps ? FrameRef{FrameRef::Kind::kSegment, b} : FrameRef{});
+      belts.point_wraps.push_back(wraps ? 1 : 0);
+      belts.point_position.push_back(wraps ? Vec3::Zero() : ends[b][k / 2]);
+      belts.point_axes.push_back(Mat3::Identity());
+      belts.point_semi_axes.push_back(wraps ? Vec3(0.03, 0.02, 0.02) : Vec3::Zero());
+    }
+  }
+  belts.tie_points.push_back({2, 3});
+  belts.tie_harness.push_back(0);
+  for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
+    Data data = MakeData(model);
+    double largest = 0.0;
+    const Counted counted = AdvanceCounting(model, data, method, 0.001, 60, [&] {
+      largest = std::max(largest, data.belts.tension[1]);
+    });
+    EXPECT_EQ(counted.allocations, 0) << method;
+    EXPECT_GT(largest, 10.0) << method;  // the belts did pull
+    EXPECT_GT(counted.steps, 30) << method;
   }
 }
 

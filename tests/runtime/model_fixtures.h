@@ -1,7 +1,9 @@
 // Small Models built by hand for the runtime's tests: the runtime is tested without the compiler.
 #pragma once
 
+#include <array>
 #include <string>
+#include <vector>
 
 #include "runtime/data.h"
 
@@ -60,6 +62,23 @@ inline void AddConstraint(Model& model, std::string name, Model::ConstraintKind 
   model.constraint_point_second.push_back(point_second);
   model.constraint_distance.push_back(distance);
   model.constraint_axis.push_back(axis);
+}
+
+// Appends a table function (x, f(x)) with unloading parameters; returns its id.
+inline std::int32_t AddTableFunction(FunctionTable& f,
+                                     const std::vector<std::array<double, 2>>& points,
+                                     double energy_loss = 0.0, double permanent_set = 0.0) {
+  f.kind.push_back(FunctionTable::Kind::kTable);
+  f.constant.push_back(0.0);
+  f.first.push_back(static_cast<std::int32_t>(f.points_x.size()));
+  f.count.push_back(static_cast<std::int32_t>(points.size()));
+  f.energy_loss.push_back(energy_loss);
+  f.permanent_set.push_back(permanent_set);
+  for (const auto& [x, y] : points) {
+    f.points_x.push_back(x);
+    f.points_y.push_back(y);
+  }
+  return static_cast<std::int32_t>(f.size() - 1);
 }
 
 }  // namespace sled::runtime::testing
