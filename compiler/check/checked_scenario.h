@@ -265,6 +265,10 @@ struct OutputRequest {
   std::string label;  // channel prefix: `as` name or the target's name
   int index = -1;     // segment, joint, contact, belt, airbag or spring
   Vec3 point{};       // point requests: the point in the segment frame
+  // The SAE J211 class of the filtered channels [Hz]: 0 none, -1 the default for the kind; and
+  // whether the block's filter_standard is ISO 6487.
+  int filter_class = -1;
+  bool iso_filter = false;
   SourceRange range;
 };
 
@@ -285,6 +289,8 @@ struct Criterion {
   Kind kind = Kind::kHic15;
   int segment = -1;  // head, chest criteria
   int joint = -1;    // neck and femur criteria
+  // The block's filter_standard is ISO 6487.
+  bool iso_filter = false;
   SourceRange range;
 };
 

@@ -134,6 +134,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
   lowering::LowerScene(lowering);
+  lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);
   lowered.notes = lowering.TakeNotes();

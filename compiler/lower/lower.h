@@ -28,8 +28,8 @@ struct Lowered {
 
 // Lowers a checked scenario. The scenario must have checked without errors: a broken tree or an
 // index out of range is a programming error (std::logic_error naming the stage and the object).
-// Features the runtime does not simulate yet (contacts, belts, harnesses, airbags, injury
-// criteria, contact/belt/airbag outputs, symmetry, settling, restart) are left out of the Model;
+// Features the runtime does not simulate yet (contacts, belts, harnesses, airbags, the viscous
+// criterion, contact/belt/airbag outputs, symmetry, settling, restart) are left out of the Model;
 // `notes` lists each with its source position so `sled run` can say so.
 Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
               const LowerOptions& options);

@@ -238,6 +238,8 @@ void LowerOutputs(Lowering& lowering) {
         mirrored ? runtime::Vec3(runtime::MirrorFrameVector(ToEigen(output.point)))
                  : ToEigen(output.point));
     if (!lowering.mirror_twin.empty()) model.output_mirrored.push_back(mirrored ? 1 : 0);
+    model.output_filter_class.push_back(FilterClassOf(output, kind));
+    model.output_filter_iso.push_back(output.iso_filter ? 1 : 0);
   }
 }
 
@@ -278,17 +280,6 @@ void NoteLeftOut(Lowering& lowering) {
   for (const Airbag& airbag : scenario.airbags) {
     lowering.AddNote(airbag.range,
                      fmt::format("airbag `{}` is not simulated yet; left out", airbag.name));
-  }
-  for (const Criterion& criterion : scenario.criteria) {
-    const std::string_view name =
-        AllCriterionSpecs().at(static_cast<std::size_t>(criterion.kind)).name;
-    const std::string& target =
-        criterion.segment >= 0
-            ? scenario.segments.at(static_cast<std::size_t>(criterion.segment)).name
-            : scenario.joints.at(static_cast<std::size_t>(criterion.joint)).name;
-    lowering.AddNote(
-        criterion.range,
-        fmt::format("injury criterion `{}({})` is not computed yet; left out", name, target));
   }
   const RunSettings& run = scenario.run;
   if (run.settle_duration) {

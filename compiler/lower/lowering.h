@@ -108,6 +108,11 @@ void ApplyMirrorSymmetry(Lowering& lowering, std::size_t s);
 void LowerInitialState(Lowering& lowering);
 // Vehicles, spring–dampers, constraints, run settings and outputs (after LowerTree).
 void LowerScene(Lowering& lowering);
+// The SAE J211 class of an output request's channels: its `filter`, else its kind's default.
+std::int16_t FilterClassOf(const OutputRequest& request, runtime::Model::OutputKind kind);
+// The injury criteria and the output groups they read, added when the scene lacks them (after
+// LowerScene).
+void LowerCriteria(Lowering& lowering);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 
