@@ -309,9 +309,18 @@ std::string DumpModel(const Model& m) {
   DumpBelts(m, line);
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
     const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;
-    line(fmt::format("output {} {} {} index {} point {}{}", o, Name(m.output_kind[o]),
+    const int cfc = o < m.output_filter_class.size() ? m.output_filter_class[o] : 0;
+    const bool iso = o < m.output_filter_iso.size() && m.output_filter_iso[o] != 0;
+    line(fmt::format("output {} {} {} index {} point {}{} filter {}{}", o, Name(m.output_kind[o]),
                      Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o)),
-                     mirrored ? " mirrored" : ""));
+                     mirrored ? " mirrored" : "", cfc > 0 ? fmt::format("cfc{}", cfc) : "none",
+                     iso ? " iso_6487" : ""));
+  }
+  for (std::size_t c = 0; c < m.ncriterion(); ++c) {
+    line(fmt::format("criterion {} {} {} output {} moment_output {}{}", c, Get(m.criterion_name, c),
+                     Get(m.criterion_target, c), Get(m.criterion_output, c),
+                     Get(m.criterion_moment_output, c),
+                     Get(m.criterion_filter_iso, c) != 0 ? " iso_6487" : ""));
   }
   return out;
 }

@@ -221,6 +221,32 @@ struct Model {
   // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,
   // read from its left twin and mirrored. Empty when there is no mirror symmetry.
   std::vector<std::uint8_t> output_mirrored;
+  // SAE J211 channel frequency class of each group's filtered channels (0: not filtered), and
+  // 1 where ISO 6487 gives the coefficients. Empty: nothing filtered.
+  std::vector<std::int16_t> output_filter_class;
+  std::vector<std::uint8_t> output_filter_iso;
+
+  // --- Injury criteria, computed after the run from the output channels (runtime/post/).
+  enum class CriterionKind : std::uint8_t {
+    kHic15,
+    kHic36,
+    kHead3ms,
+    kChest3ms,
+    kGaddHead,
+    kGaddChest,
+    kNij,
+    kNeckTension,
+    kNeckCompression,
+    kFemurLoad,
+  };
+  std::vector<CriterionKind> criterion_kind;
+  std::vector<std::string> criterion_name;    // as the language spells it: hic15
+  std::vector<std::string> criterion_target;  // the segment or joint: occupant.head
+  // The output group it reads: the acceleration of the segment's centre of mass, or the joint
+  // force; Nij also reads the joint torque (else -1).
+  std::vector<std::int32_t> criterion_output;
+  std::vector<std::int32_t> criterion_moment_output;
+  std::vector<std::uint8_t> criterion_filter_iso;  // 1: ISO 6487 coefficients
 
   // --- Side table: where each entity was declared.
   std::vector<SourcePosition> segment_source;
@@ -230,6 +256,7 @@ struct Model {
   std::size_t nvehicle() const { return vehicle_name.size(); }
   std::size_t nspring() const { return spring_name.size(); }
   std::size_t nconstraint() const { return constraint_name.size(); }
+  std::size_t ncriterion() const { return criterion_kind.size(); }
 };
 
 // A stable text form of the model for `sled check --dump-model` and golden tests.

@@ -1,5 +1,6 @@
 #include "runtime/output_writer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -34,6 +35,35 @@ std::string JsonString(const std::string& text) {
   return out + "\"";
 }
 
+namespace {
+
+// The "criteria" array; a value that was not computed is null, with the reason.
+void WriteCriteria(std::ofstream& out, const std::vector<post::CriterionValue>& criteria) {
+  auto number = [](bool known, double value) {
+    return known && std::isfinite(value) ? fmt::format("{}", value) : std::string("null");
+  };
+  out << "  \"criteria\": [";
+  for (std::size_t i = 0; i < criteria.size(); ++i) {
+    const post::CriterionValue& c = criteria[i];
+    out << (i == 0 ? "\n    {" : ",\n    {");
+    out << fmt::format("\"name\": {}, \"variant\": {}, \"target\": {}, ", JsonString(c.name),
+                       JsonString(c.variant), JsonString(c.target));
+    out << fmt::format("\"value\": {}, \"unit\": {}, ", number(c.computed, c.value),
+                       JsonString(c.unit));
+    out << fmt::format("\"window_start\": {}, \"window_end\": {}, \"filter_class\": {}, ",
+                       number(c.computed, c.window_start), number(c.computed, c.window_end),
+                       c.filter_class);
+    out << fmt::format("\"limit\": {}, \"limit_source\": {}, \"pass\": {}",
+                       number(c.has_limit, c.limit), JsonString(c.limit_source),
+                       c.computed ? (c.pass ? "true" : "false") : "null");
+    if (!c.computed) out << fmt::format(", \"reason\": {}", JsonString(c.reason));
+    out << "}";
+  }
+  out << (criteria.empty() ? "],\n" : "\n  ],\n");
+}
+
+}  // namespace
+
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) {
@@ -63,7 +93,7 @@ bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::
 
 bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
                       const RunSummary& summary, const std::vector<std::string>& warnings,
-                      std::string* error) {
+                      std::string* error, const std::vector<post::CriterionValue>& criteria) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) {
     if (error) *error = fmt::format("cannot write `{}`", path);
@@ -102,6 +132,7 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
     }
     out << "\n  },\n";
   }
+  WriteCriteria(out, criteria);
   out << "  \"warnings\": [";
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     out << (i == 0 ? "\n    " : ",\n    ") << JsonString(warnings[i]);

@@ -87,6 +87,10 @@ std::vector<std::string> ChannelNames(const Model& model) {
   return names;
 }
 
+std::size_t ChannelCount(const Model& model, std::size_t group) {
+  return GroupOf(model, group).components.size();
+}
+
 void EvaluateChannels(const Model& model, const Data& data, std::span<double> values) {
   std::size_t column = 0;
   bool mirrored = false;

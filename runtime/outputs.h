@@ -18,6 +18,9 @@ namespace sled::runtime {
 // writes them.
 std::vector<std::string> ChannelNames(const Model& model);
 
+// The number of channels output group `group` produces (its columns in ChannelNames).
+std::size_t ChannelCount(const Model& model, std::size_t group);
+
 // Values after Forward (accelerations and joint wrenches must be current).
 void EvaluateChannels(const Model& model, const Data& data, std::span<double> values);
 

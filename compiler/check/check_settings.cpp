@@ -167,11 +167,45 @@ void Checker::CheckInitialConditions() {
   }
 }
 
+// `filter cfc1000` on an output request: the class in Hz, 0 for `none`, -1 when invalid
+// (reported) so the request keeps its kind's default.
+int Checker::ReadFilterClass(const ast::Expr& value) {
+  static const std::vector<std::string> kClasses = {"cfc60", "cfc180", "cfc600", "cfc1000", "none"};
+  static constexpr int kHertz[] = {60, 180, 600, 1000, 0};
+  const std::string word = value.kind == ast::ExprKind::kPath ? value.PathText() : "";
+  for (std::size_t i = 0; i < kClasses.size(); ++i) {
+    if (word == kClasses[i]) return kHertz[i];
+  }
+  Report(DiagnosticKind::kInvalidEnumValue, value.range,
+         "a channel's filter is a SAE J211 class, `cfc60`, `cfc180`, `cfc600` or `cfc1000`, or "
+         "`none`",
+         "not a filter class", lang::DidYouMean(word, kClasses));
+  return -1;
+}
+
+// `filter_standard = sae_j211 | iso_6487` of an output block: true for ISO 6487.
+bool Checker::ReadFilterStandard(const BoundBlock& bound) {
+  const ast::Statement* statement = One(bound, "filter_standard");
+  if (!statement) return false;
+  const ast::Expr* value = SingleValue(*statement);
+  if (!value) return false;
+  static const std::vector<std::string> kStandards = {"sae_j211", "iso_6487"};
+  const std::string word = value->kind == ast::ExprKind::kPath ? value->PathText() : "";
+  if (word == "iso_6487") return true;
+  if (word != "sae_j211") {
+    Report(DiagnosticKind::kInvalidEnumValue, value->range,
+           "`filter_standard` is `sae_j211` or `iso_6487`", "not a filter standard",
+           lang::DidYouMean(word, kStandards));
+  }
+  return false;
+}
+
 void Checker::CheckOutputs() {
   for (const Pending& pending : outputs_) {
     const ast::Statement& statement = *pending.statement;
     Scope& scope = *pending.scope;
     const BoundBlock bound = Bind(BlockKind::kOutput, statement.block.get(), statement.range);
+    const bool iso_filter = ReadFilterStandard(bound);
     for (const ast::Statement* request : bound.declarations) {
       const OutputSpec* spec = FindOutput(request->keyword);
       if (!request->target || request->has_value || request->block) {
@@ -186,8 +220,10 @@ void Checker::CheckOutputs() {
       output.range = request->range;
       output.kind = static_cast<OutputRequest::Kind>(spec - AllOutputSpecs().data());
       output.label = request->target->PathText();
+      output.iso_filter = iso_filter;
       for (const ast::Clause& clause : request->clauses) {
         const bool allowed = (clause.word == "at" && spec->takes_point) || clause.word == "as" ||
+                             clause.word == "filter" ||
                              (clause.word == "with" && spec->target_kind == "contact");
         if (!allowed) {
           Report(DiagnosticKind::kMalformedStatement, clause.word_range,
@@ -202,6 +238,9 @@ void Checker::CheckOutputs() {
           Report(DiagnosticKind::kMalformedStatement, as->value.range, "`as` takes one plain name",
                  "not a plain name");
         }
+      }
+      if (const ast::Clause* filter = request->FindClause("filter")) {
+        output.filter_class = ReadFilterClass(filter->value);
       }
       if (const ast::Clause* at = request->FindClause("at"); at && spec->takes_point) {
         output.point = ExpectVector(scope, at->value, dim::kLength, "at").value_or(Vec3{});
@@ -292,6 +331,7 @@ void Checker::CheckOutputs() {
         Criterion criterion;
         criterion.kind = static_cast<Criterion::Kind>(spec - AllCriterionSpecs().data());
         (kind == EntityKind::kSegment ? criterion.segment : criterion.joint) = target->index;
+        criterion.iso_filter = iso_filter;
         criterion.range = value.range;
         scenario_.criteria.push_back(criterion);
       }

@@ -267,6 +267,10 @@ struct OutputRequest {
   std::vector<int> contacts;  // kContactForce: every contact pair the request names (index is
                               // the first): a segment's ellipsoids give one pair each
   Vec3 point{};               // point requests: the point in the segment frame
+  // The SAE J211 class of the filtered channels [Hz]: 0 none, -1 the default for the kind; and
+  // whether the block's filter_standard is ISO 6487.
+  int filter_class = -1;
+  bool iso_filter = false;
   SourceRange range;
 };
 
@@ -287,6 +291,8 @@ struct Criterion {
   Kind kind = Kind::kHic15;
   int segment = -1;  // head, chest criteria
   int joint = -1;    // neck and femur criteria
+  // The block's filter_standard is ISO 6487.
+  bool iso_filter = false;
   SourceRange range;
 };
 

@@ -177,6 +177,8 @@ class Checker {
   void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
   void CheckInitialConditions();
   void CheckOutputs();
+  int ReadFilterClass(const ast::Expr& value);
+  bool ReadFilterStandard(const BoundBlock& bound);
   void CheckTopology(Body& body, int body_index);
   void RunLints();
   // Loads and declares an import; returns the alias entity.

@@ -241,7 +241,9 @@ std::vector<BlockSpec> MakeSpecs() {
                            "twist")},
                    {}});
   specs.push_back({BlockKind::kOutput,
-                   {Typed("criteria", V::kCriteria, "injury criteria: hic15(occupant.head), ...")},
+                   {Typed("criteria", V::kCriteria, "injury criteria: hic15(occupant.head), ..."),
+                    Typed("filter_standard", V::kWord,
+                          "filter coefficients: `sae_j211` (default) or `iso_6487`")},
                    {}});
   specs.push_back({BlockKind::kTime,
                    {Positive("end", d::kTime, "end time of the run", true),

@@ -11,6 +11,8 @@
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
 #include "runtime/output_writer.h"
+#include "runtime/post/channel_filters.h"
+#include "runtime/post/injury_criteria.h"
 #include "runtime/run.h"
 
 namespace sled::driver {
@@ -34,6 +36,22 @@ void ShowProgress(double fraction, void* context) {
   (void)context;
   std::fprintf(stderr, "\r  simulating: %3d %%", static_cast<int>(fraction * 100 + 0.5));
   std::fflush(stderr);
+}
+
+// One line per criterion value: `  hic15(occupant.head) = 173.4 (limit 700, FMVSS 208): pass`.
+void PrintCriteria(const std::vector<runtime::post::CriterionValue>& criteria) {
+  for (const runtime::post::CriterionValue& c : criteria) {
+    const std::string what =
+        fmt::format("{}({}){}", c.name, c.target, c.variant.empty() ? "" : " " + c.variant);
+    if (!c.computed) {
+      std::cerr << fmt::format("  {}: not computed: {}\n", what, c.reason);
+      continue;
+    }
+    std::cerr << fmt::format("  {} = {:.4g}{}{} (limit {:g}{}, {}): {}\n", what, c.value,
+                             c.unit.empty() ? "" : " ", c.unit, c.limit,
+                             c.unit.empty() ? "" : " " + c.unit, c.limit_source,
+                             c.pass ? "pass" : "FAIL");
+  }
 }
 
 }  // namespace
@@ -86,16 +104,31 @@ int RunCommand(const RunCommandOptions& options) {
     }
   }
 
+  // Filtered channels and injury criteria, from the rows there are (up to a failure).
+  runtime::post::FilteredChannels filtered =
+      runtime::post::FilterOutputChannels(lowered.model, series);
+  const std::vector<runtime::post::CriterionValue> criteria =
+      runtime::post::EvaluateCriteria(lowered.model, series);
+  std::vector<std::string> warnings = lowered.notes;
+  for (std::string& warning : filtered.warnings) {
+    std::cerr << "sled: " << warning << '\n';
+    warnings.push_back(std::move(warning));
+  }
+
   std::string write_error;
-  const std::string csv = (std::filesystem::path(directory) / "timeseries.csv").string();
-  const std::string json = (std::filesystem::path(directory) / "summary.json").string();
+  const std::filesystem::path out(directory);
   const bool written =
-      runtime::WriteTimeSeriesCsv(csv, series, &write_error) &&
-      runtime::WriteSummaryJson(json, lowered.model, series, summary, lowered.notes, &write_error);
+      runtime::WriteTimeSeriesCsv((out / "timeseries.csv").string(), series, &write_error) &&
+      (filtered.series.names.empty() ||
+       runtime::WriteTimeSeriesCsv((out / "timeseries_filtered.csv").string(), filtered.series,
+                                   &write_error)) &&
+      runtime::WriteSummaryJson((out / "summary.json").string(), lowered.model, series, summary,
+                                warnings, &write_error, criteria);
   if (!written) {
     std::cerr << "sled: " << write_error << '\n';
     return kExitInputErrors;
   }
+  PrintCriteria(criteria);
   if (summary.failed) {
     const runtime::Failure& f = summary.failure;
     std::cerr << fmt::format(

@@ -104,6 +104,16 @@ runtime::SourcePosition Lowering::Position(const SourceRange& range) const {
   return {buffer.path(), at.line, at.column};
 }
 
+void Lowering::AddOutput(const Output& output) {
+  model_.output_kind.push_back(output.kind);
+  model_.output_label.push_back(output.label);
+  model_.output_index.push_back(output.index);
+  model_.output_point.push_back(output.point);
+  if (!mirror_twin.empty()) model_.output_mirrored.push_back(output.mirrored ? 1 : 0);
+  model_.output_filter_class.push_back(output.filter_class);
+  model_.output_filter_iso.push_back(output.iso_filter ? 1 : 0);
+}
+
 void Lowering::AddNote(const SourceRange& range, std::string message) {
   notes_.push_back({range, std::move(message)});
 }
@@ -140,6 +150,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowering::LowerContacts(lowering);
   lowering::LowerScene(lowering);
   lowering::LowerBelts(lowering);
+  lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);
   lowered.notes = lowering.TakeNotes();

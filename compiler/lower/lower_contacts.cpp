@@ -277,10 +277,8 @@ void LowerContactOutput(Lowering& lowering, const OutputRequest& output) {
   for (const Model::OutputKind kind :
        {Model::OutputKind::kContactForce, Model::OutputKind::kContactPoint,
         Model::OutputKind::kContactDeflection}) {
-    model.output_kind.push_back(kind);
-    model.output_label.push_back(output.label);
-    model.output_index.push_back(group);
-    model.output_point.push_back(runtime::Vec3::Zero());
+    lowering.AddOutput({kind, output.label, group, runtime::Vec3::Zero(), false,
+                        FilterClassOf(output, kind), output.iso_filter});
   }
 }
 

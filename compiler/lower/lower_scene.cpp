@@ -237,14 +237,11 @@ void LowerOutputs(Lowering& lowering) {
                                      OutputKeyword(output.kind), output.label));
         continue;
     }
-    model.output_kind.push_back(kind);
-    model.output_label.push_back(output.label);
-    model.output_index.push_back(index);
     // A point of the right twin lies in the left one's frame with y reversed.
-    model.output_point.push_back(
-        mirrored ? runtime::Vec3(runtime::MirrorFrameVector(ToEigen(output.point)))
-                 : ToEigen(output.point));
-    if (!lowering.mirror_twin.empty()) model.output_mirrored.push_back(mirrored ? 1 : 0);
+    lowering.AddOutput(
+        {kind, output.label, index,
+         mirrored ? runtime::MirrorFrameVector(ToEigen(output.point)) : ToEigen(output.point),
+         mirrored, FilterClassOf(output, kind), output.iso_filter});
   }
 }
 
@@ -263,17 +260,6 @@ void NoteLeftOut(Lowering& lowering) {
   for (const Airbag& airbag : scenario.airbags) {
     lowering.AddNote(airbag.range,
                      fmt::format("airbag `{}` is not simulated yet; left out", airbag.name));
-  }
-  for (const Criterion& criterion : scenario.criteria) {
-    const std::string_view name =
-        AllCriterionSpecs().at(static_cast<std::size_t>(criterion.kind)).name;
-    const std::string& target =
-        criterion.segment >= 0
-            ? scenario.segments.at(static_cast<std::size_t>(criterion.segment)).name
-            : scenario.joints.at(static_cast<std::size_t>(criterion.joint)).name;
-    lowering.AddNote(
-        criterion.range,
-        fmt::format("injury criterion `{}({})` is not computed yet; left out", name, target));
   }
   const RunSettings& run = scenario.run;
   if (run.settle_duration) {

@@ -79,6 +79,18 @@ class Lowering {
   const Joint& joint(int index) const;
 
   void AddNote(const SourceRange& range, std::string message);
+  // Appends an output group to the Model, with every column of its per-output arrays: the one
+  // place the lowering adds outputs, so those arrays stay the same length.
+  struct Output {
+    runtime::Model::OutputKind kind{};
+    std::string label;
+    std::int32_t index = -1;
+    runtime::Vec3 point = runtime::Vec3::Zero();
+    bool mirrored = false;  // read from a left twin (mirror symmetry)
+    std::int16_t filter_class = 0;
+    bool iso_filter = false;
+  };
+  void AddOutput(const Output& output);
   // The notes in source order (those without a position last), formatted.
   std::vector<std::string> TakeNotes();
 
@@ -116,6 +128,11 @@ void LowerContacts(Lowering& lowering);
 void LowerContactOutput(Lowering& lowering, const OutputRequest& output);
 // Belts and harnesses, in the checked scenario's order (after LowerTree).
 void LowerBelts(Lowering& lowering);
+// The SAE J211 class of an output request's channels: its `filter`, else its kind's default.
+std::int16_t FilterClassOf(const OutputRequest& request, runtime::Model::OutputKind kind);
+// The injury criteria and the output groups they read, added when the scene lacks them (after
+// LowerScene).
+void LowerCriteria(Lowering& lowering);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 

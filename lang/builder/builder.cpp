@@ -70,7 +70,7 @@ bool IsIdentifier(std::string_view text) {
 // Words the grammar never reads as a name: booleans and clause words.
 bool IsReserved(std::string_view word) {
   return word == "true" || word == "false" || word == "on" || word == "with" || word == "at" ||
-         word == "as";
+         word == "as" || word == "filter";
 }
 
 // A plain name: an identifier that is not a reserved word.
@@ -550,6 +550,12 @@ Statement& Statement::At(Value point, SourceLocation where) {
 Statement& Statement::As(std::string_view name, SourceLocation where) {
   CheckName(name, "name", "As", where);
   clauses_.push_back({"as", Ref(name, where), where});
+  return *this;
+}
+
+Statement& Statement::Filter(std::string_view filter_class, SourceLocation where) {
+  CheckName(filter_class, "filter class", "Filter", where);
+  clauses_.push_back({"filter", Ref(filter_class, where), where});
   return *this;
 }
 

@@ -182,6 +182,9 @@ class Statement {
   Statement& With(Value other, SourceLocation where = SourceLocation::current());
   Statement& At(Value point, SourceLocation where = SourceLocation::current());
   Statement& As(std::string_view name, SourceLocation where = SourceLocation::current());
+  // `filter cfc1000` on an output request.
+  Statement& Filter(std::string_view filter_class,
+                    SourceLocation where = SourceLocation::current());
   Statement& Is(Value value, SourceLocation where = SourceLocation::current());
   // `= value` (call again for `= a, b, c`).
   Statement& Equals(Value value);

@@ -9,7 +9,7 @@
 //   row        = sum "->" sum {"->" sum}               (starts with a number, `(` or `-`)
 //   header     = keyword [target] {clause} ["=" values] [block] end
 //   target     = path | string
-//   clause     = ("on" | "with" | "at" | "as") value | ":" value
+//   clause     = ("on" | "with" | "at" | "as" | "filter") value | ":" value
 //   values     = value {"," value}
 //   block      = "{" ws { item ws } "}"
 //   value      = arrow
@@ -54,7 +54,8 @@ struct kw_on : keyword< 'o', 'n' > {};
 struct kw_with : keyword< 'w', 'i', 't', 'h' > {};
 struct kw_at : keyword< 'a', 't' > {};
 struct kw_as : keyword< 'a', 's' > {};
-struct clause_word : sor< kw_on, kw_with, kw_at, kw_as > {};
+struct kw_filter : keyword< 'f', 'i', 'l', 't', 'e', 'r' > {};
+struct clause_word : sor< kw_on, kw_with, kw_at, kw_as, kw_filter > {};
 struct reserved : sor< kw_true, kw_false, clause_word > {};
 
 struct name : identifier {};

@@ -403,5 +403,35 @@ TEST(CheckRun, OutputStepLongerThanTheRunIsReported) {
   EXPECT_THAT(r.codes, Contains(HasSubstr("E0412")));
 }
 
+TEST(CheckOutputs, FilterClassesAndTheFilterStandard) {
+  const Result r = CheckText(Scene(kTwoSegments + R"(
+  output {
+    filter_standard = iso_6487
+    acceleration b.s1 filter cfc180
+    acceleration b.s2 filter none as raw
+    joint_force b.j filter cfc600
+    criteria = hic15(b.s1)
+  })"));
+  ASSERT_EQ(r.errors, 0) << ::testing::PrintToString(r.messages);
+  ASSERT_EQ(r.scenario.outputs.size(), 3u);
+  EXPECT_EQ(r.scenario.outputs[0].filter_class, 180);
+  EXPECT_EQ(r.scenario.outputs[1].filter_class, 0);
+  EXPECT_EQ(r.scenario.outputs[2].filter_class, 600);
+  EXPECT_TRUE(r.scenario.outputs[0].iso_filter);
+  ASSERT_EQ(r.scenario.criteria.size(), 1u);
+  EXPECT_TRUE(r.scenario.criteria[0].iso_filter);
+}
+
+TEST(CheckOutputs, AnUnknownFilterClassOrStandardIsReported) {
+  const Result r = CheckText(Scene(kTwoSegments + R"(
+  output {
+    filter_standard = iso6487
+    acceleration b.s1 filter cfc100
+  })"));
+  EXPECT_EQ(r.errors, 2);
+  EXPECT_THAT(r.messages, Contains(HasSubstr("`cfc60`, `cfc180`, `cfc600` or `cfc1000`")));
+  EXPECT_THAT(r.messages, Contains(HasSubstr("`filter_standard` is `sae_j211` or `iso_6487`")));
+}
+
 }  // namespace
 }  // namespace sled::compiler
