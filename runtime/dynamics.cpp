@@ -1,6 +1,10 @@
 #include "runtime/dynamics.h"
 
 #include <cmath>
+#include <type_traits>
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include <fmt/format.h>
 
@@ -12,27 +16,164 @@
 namespace sled::runtime {
 namespace {
 
-// The active joint velocities of a segment as a small vector.
-SmallVector ActiveVelocities(const Model& model, const Data& data, std::size_t s) {
-  int axes[6];
-  const int count = ActiveAxes(model, s, data.locked[s], axes);
-  SmallVector out(count);
+// Calls step(std::integral_constant<int, N>{}) for N = count (1 to 6 active joint axes), so the
+// articulated-body steps run on fixed-size matrices.
+template <typename Step>
+bool WithAxisCount(int count, Step&& step) {
+  switch (count) {
+    case 1:
+      return step(std::integral_constant<int, 1>{});
+    case 2:
+      return step(std::integral_constant<int, 2>{});
+    case 3:
+      return step(std::integral_constant<int, 3>{});
+    case 4:
+      return step(std::integral_constant<int, 4>{});
+    case 5:
+      return step(std::integral_constant<int, 5>{});
+    case 6:
+      return step(std::integral_constant<int, 6>{});
+    default:
+      return true;  // no active axes: nothing to do
+  }
+}
+
+// The active entries of a joint-space vector (velocities, forces) for the joint above segment
+// `s`: all its coordinates unless some are locked (then ActiveAxes picks).
+template <int N>
+Eigen::Matrix<double, N, 1> GatherActive(const Model& model, const Data& data, std::size_t s,
+                                         const std::vector<double>& x) {
+  Eigen::Matrix<double, N, 1> out;
   const auto va = static_cast<std::size_t>(model.v_address[s]);
-  for (int c = 0; c < count; ++c) out[c] = data.v[va + static_cast<std::size_t>(axes[c])];
+  if (N == model.v_count[s]) {
+    for (int c = 0; c < N; ++c) out[c] = x[va + static_cast<std::size_t>(c)];
+    return out;
+  }
+  int axes[6];
+  ActiveAxes(model, s, data.locked[s], axes);
+  for (int c = 0; c < N; ++c) out[c] = x[va + static_cast<std::size_t>(axes[c])];
   return out;
 }
 
-// A frame's pose, spatial velocity and spatial acceleration (in its own coordinates).
+// Writes the active entries of the joint above `s` into x and zeroes its locked ones.
+template <int N>
+void ScatterActive(const Model& model, const Data& data, std::size_t s,
+                   const Eigen::Matrix<double, N, 1>& values, std::vector<double>& x) {
+  const auto va = static_cast<std::size_t>(model.v_address[s]);
+  if (N == model.v_count[s]) {
+    for (int c = 0; c < N; ++c) x[va + static_cast<std::size_t>(c)] = values[c];
+    return;
+  }
+  int axes[6];
+  ActiveAxes(model, s, data.locked[s], axes);
+  for (int k = 0; k < model.v_count[s]; ++k) x[va + static_cast<std::size_t>(k)] = 0.0;
+  for (int c = 0; c < N; ++c) x[va + static_cast<std::size_t>(axes[c])] = values[c];
+}
+
+// S of segment `s` as a fixed-size 6 x N matrix (a MotionSubspace is stored column by column).
+template <int N>
+Eigen::Map<const Eigen::Matrix<double, 6, N>> Subspace(const Data& data, std::size_t s) {
+  return Eigen::Map<const Eigen::Matrix<double, 6, N>>(data.subspace[s].data());
+}
+
+// D^-1 for the symmetric positive definite D = S^T I^A S: closed form up to three axes,
+// Cholesky for the free joint. False when D is singular or not finite.
+template <int N>
+bool InvertJointInertia(const Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double, N, N>& out) {
+  if constexpr (N <= 3) {
+    out = D.inverse();
+  } else {
+    const Eigen::LLT<Eigen::Matrix<double, N, N>> cholesky(D);
+    if (cholesky.info() != Eigen::Success) return false;
+    out = cholesky.solve(Eigen::Matrix<double, N, N>::Identity());
+  }
+  return out.allFinite();
+}
+
+// The backward step at the joint above segment i with N active axes: U, D^-1 and u, then the
+// articulated inertia Ia and bias pa the segment hands to its parent (when it has one). False
+// when D is singular.
+template <int N>
+bool ArticulatedStep(const Model& model, Data& data, std::size_t i, Mat6& Ia, Vec6& pa) {
+  using MatN = Eigen::Matrix<double, N, N>;
+  using VecN = Eigen::Matrix<double, N, 1>;
+  const Mat6& IA = data.articulated_inertia[i];
+  const Vec6& pA = data.articulated_bias[i];
+  auto U = data.u_matrix[i].leftCols<N>();
+  auto u = data.u_vector[i].head<N>();
+  const VecN tau = GatherActive<N>(model, data, i, data.generalized_force);
+  MatN D;
+  if constexpr (N == 6) {
+    // The only six-axis joint is the free joint, whose S is the identity.
+    U = IA;
+    D = IA;
+    u = tau - pA;
+  } else {
+    const auto S = Subspace<N>(data, i);
+    U.noalias() = IA * S;
+    D.noalias() = S.transpose() * U;
+    u = tau;
+    u.noalias() -= S.transpose() * pA;
+  }
+  MatN D_inverse;
+  if (!InvertJointInertia<N>(D, D_inverse)) return false;
+  data.d_inverse[i].topLeftCorner<N, N>() = D_inverse;
+  if (model.segment_parent[i] < 0) return true;
+  if constexpr (N == 6) {
+    // A free joint passes no inertia to its parent, only its generalized force.
+    Ia.setZero();
+    pa = tau;
+  } else {
+    const Eigen::Matrix<double, 6, N> UD = U * D_inverse;
+    Ia = IA;
+    Ia.noalias() -= UD * U.transpose();
+    pa = pA;
+    pa.noalias() += Ia * data.bias_acceleration[i];
+    pa.noalias() += UD * u;
+  }
+  return true;
+}
+
+// The forward step at the joint above segment i: the joint accelerations (into data.vdot) and
+// the segment's acceleration a from a_prime, its parent's acceleration seen in its frame plus
+// its bias acceleration.
+template <int N>
+bool AccelerationStep(const Model& model, Data& data, std::size_t i, Vec6& a) {
+  using VecN = Eigen::Matrix<double, N, 1>;
+  const auto U = data.u_matrix[i].leftCols<N>();
+  const auto D_inverse = data.d_inverse[i].topLeftCorner<N, N>();
+  VecN rhs = data.u_vector[i].head<N>();
+  rhs.noalias() -= U.transpose() * a;
+  const VecN qdd = D_inverse * rhs;
+  if constexpr (N == 6) {
+    a += qdd;  // S = I
+  } else {
+    a.noalias() += Subspace<N>(data, i) * qdd;
+  }
+  ScatterActive<N>(model, data, i, qdd, data.vdot);
+  return true;
+}
+
+// S times the active entries of x for the joint above `s`: the joint's spatial velocity.
+Vec6 SubspaceTimes(const Model& model, const Data& data, std::size_t s,
+                   const std::vector<double>& x) {
+  Vec6 out = Vec6::Zero();
+  WithAxisCount(static_cast<int>(data.subspace[s].cols()), [&](auto axes) {
+    constexpr int N = decltype(axes)::value;
+    out.noalias() = Subspace<N>(data, s) * GatherActive<N>(model, data, s, x);
+    return true;
+  });
+  return out;
+}
+
+// The pose, spatial velocity and spatial acceleration (in its own coordinates) of a root's
+// base: the ground or a vehicle.
 struct Frame {
   Mat3 rotation = Mat3::Identity();
   Vec3 position = Vec3::Zero();
   Vec6 velocity = Vec6::Zero();
   Vec6 acceleration = Vec6::Zero();
 };
-
-Frame SegmentFrame(const Data& data, std::size_t s) {
-  return {data.rotation[s], data.position[s], data.velocity[s], Vec6::Zero()};
-}
 
 Frame BaseFrame(const Model& model, const FrameRef& base, double t) {
   Frame frame;
@@ -53,18 +194,20 @@ Frame BaseFrame(const Model& model, const FrameRef& base, double t) {
 Mat6 SpatialInertia(const Model& model, std::size_t segment) {
   Mat6 inertia = Mat6::Zero();
   inertia.topLeftCorner<3, 3>() = model.segment_inertia[segment];
-  inertia.bottomRightCorner<3, 3>() = Mat3::Identity() * model.segment_mass[segment];
+  inertia.bottomRightCorner<3, 3>().diagonal().setConstant(model.segment_mass[segment]);
   return inertia;
 }
 
 void ComputeKinematics(const Model& model, Data& data) {
   JointMotion motion;
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
-    ComputeJointMotion(model, s, data.q, data.v, data.locked[s], motion);
-    data.subspace[s] = motion.subspace;
-    const SmallVector qdot = ActiveVelocities(model, data, s);
-    const Vec6 joint_velocity = motion.subspace * qdot;
-    const std::int32_t parent = model.segment_parent[s];
+    const std::uint8_t locked = data.locked[s];
+    ComputeJointPose(model, s, data.q, data.v, locked, motion);
+    if (data.subspace_locked[s] != locked || SubspaceDependsOnPosition(model.joint_kind[s])) {
+      ComputeJointSubspace(model, s, data.q, locked, data.subspace[s]);
+      data.subspace_locked[s] = locked;
+    }
+    const Vec6 joint_velocity = SubspaceTimes(model, data, s, data.v);
     Transform& x = data.parent_to_child[s];
     const Mat3& frame_parent = model.joint_frame_in_parent[s];
     const Mat3 rotation_parent_child =
@@ -73,13 +216,20 @@ void ComputeKinematics(const Model& model, Data& data) {
     x.r = model.joint_point_in_parent[s] + frame_parent * motion.translation -
           rotation_parent_child * model.joint_point_in_child[s];
     // The parent: a segment, or for a root its base (the ground or a vehicle).
-    const Frame base = parent >= 0 ? SegmentFrame(data, static_cast<std::size_t>(parent))
-                                   : BaseFrame(model, model.segment_base[s], data.time);
-    data.rotation[s] = base.rotation * rotation_parent_child;
-    data.position[s] = base.position + base.rotation * x.r;
-    data.velocity[s] = x.ApplyMotion(base.velocity) + joint_velocity;
-    data.bias_acceleration[s] = CrossMotion(data.velocity[s], joint_velocity) + motion.bias;
-    if (parent < 0) {
+    auto place = [&](const Mat3& parent_rotation, const Vec3& parent_position,
+                     const Vec6& parent_velocity) {
+      data.rotation[s] = parent_rotation * rotation_parent_child;
+      data.position[s] = parent_position + parent_rotation * x.r;
+      data.velocity[s] = x.ApplyMotion(parent_velocity) + joint_velocity;
+      data.bias_acceleration[s] = CrossMotion(data.velocity[s], joint_velocity) + motion.bias;
+    };
+    const std::int32_t parent = model.segment_parent[s];
+    if (parent >= 0) {
+      const auto p = static_cast<std::size_t>(parent);
+      place(data.rotation[p], data.position[p], data.velocity[p]);
+    } else {
+      const Frame base = BaseFrame(model, model.segment_base[s], data.time);
+      place(base.rotation, base.position, base.velocity);
       // A moving base's acceleration enters as the root's parent acceleration.
       data.bias_acceleration[s] += x.ApplyMotion(base.acceleration);
     }
@@ -88,81 +238,58 @@ void ComputeKinematics(const Model& model, Data& data) {
 
 bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
   const std::size_t n = model.nsegment();
-  // Bias forces: gyroscopic terms less the applied wrenches.
+  // Rigid-body inertias, and bias forces: gyroscopic terms less the applied wrenches.
   for (std::size_t s = 0; s < n; ++s) {
+    const Mat3& J = model.segment_inertia[s];
+    const double m = model.segment_mass[s];
     data.articulated_inertia[s] = SpatialInertia(model, s);
-    data.articulated_bias[s] =
-        CrossForce(data.velocity[s], data.articulated_inertia[s] * data.velocity[s]) -
-        data.external[s];
+    const Vec6& v = data.velocity[s];
+    Vec6 momentum;
+    momentum << J * v.head<3>(), m * v.tail<3>();
+    data.articulated_bias[s] = CrossForce(v, momentum) - data.external[s];
   }
   // Leaves to roots: articulated inertias and biases, each handed to the parent.
   for (std::size_t i = n; i-- > 0;) {
-    const MotionSubspace& S = data.subspace[i];
-    const Mat6& IA = data.articulated_inertia[i];
-    int axes[6];
-    const int count = ActiveAxes(model, i, data.locked[i], axes);
-    data.u_matrix[i] = IA * S;
-    const SmallMatrix D = S.transpose() * data.u_matrix[i];
-    SmallVector tau(count);
-    const auto va = static_cast<std::size_t>(model.v_address[i]);
-    for (int c = 0; c < count; ++c) {
-      tau[c] = data.generalized_force[va + static_cast<std::size_t>(axes[c])];
-    }
-    data.u_vector[i] = tau - S.transpose() * data.articulated_bias[i];
-    if (count > 0) {
-      // D = S^T I^A S is symmetric positive definite for a physical segment; a closed-form
-      // inverse for the common one- and three-axis joints, LU otherwise.
-      if (count == 1) {
-        data.d_inverse[i] = SmallMatrix::Constant(1, 1, 1.0 / D(0, 0));
-      } else if (count == 3) {
-        data.d_inverse[i] = Eigen::Matrix3d(D).inverse();
-      } else {
-        data.d_inverse[i] = D.inverse();
+    const int count = static_cast<int>(data.subspace[i].cols());
+    Mat6 Ia;
+    Vec6 pa;
+    const bool regular = WithAxisCount(count, [&](auto axes) {
+      return ArticulatedStep<decltype(axes)::value>(model, data, i, Ia, pa);
+    });
+    if (!regular) {
+      if (failure) {
+        failure->where = model.segment_name[i];
+        failure->cause =
+            "the articulated inertia is singular (a massless segment without "
+            "enough constraints?)";
       }
-      if (!data.d_inverse[i].allFinite()) {
-        if (failure) {
-          failure->where = model.segment_name[i];
-          failure->cause =
-              "the articulated inertia is singular (a massless segment without "
-              "enough constraints?)";
-        }
-        return false;
-      }
-    } else {
-      data.d_inverse[i].resize(0, 0);
+      return false;
     }
     const std::int32_t parent = model.segment_parent[i];
     if (parent < 0) continue;
-    const auto p = static_cast<std::size_t>(parent);
-    Mat6 Ia = IA;
-    Vec6 pa = data.articulated_bias[i] + IA * data.bias_acceleration[i];
-    if (count > 0) {
-      Ia -= data.u_matrix[i] * data.d_inverse[i] * data.u_matrix[i].transpose();
-      pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i] +
-           data.u_matrix[i] * (data.d_inverse[i] * data.u_vector[i]);
+    if (count == 0) {  // a locked joint: the segment moves with its parent
+      Ia = data.articulated_inertia[i];
+      pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i];
     }
+    const auto p = static_cast<std::size_t>(parent);
     data.articulated_inertia[p] += data.parent_to_child[i].TransposeApplyInertia(Ia);
     data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
   }
   // Roots to leaves: accelerations; then the wrench each joint transmits.
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t parent = model.segment_parent[i];
-    const Vec6 a_prime = parent < 0
-                             ? Vec6(data.bias_acceleration[i])
-                             : Vec6(data.parent_to_child[i].ApplyMotion(
-                                        data.acceleration[static_cast<std::size_t>(parent)]) +
-                                    data.bias_acceleration[i]);
-    int axes[6];
-    const int count = ActiveAxes(model, i, data.locked[i], axes);
-    const auto va = static_cast<std::size_t>(model.v_address[i]);
-    for (int k = 0; k < model.v_count[i]; ++k) data.vdot[va + static_cast<std::size_t>(k)] = 0.0;
-    Vec6 a = a_prime;
-    if (count > 0) {
-      const SmallVector qdd =
-          data.d_inverse[i] * (data.u_vector[i] - data.u_matrix[i].transpose() * a_prime);
-      a += data.subspace[i] * qdd;
-      for (int c = 0; c < count; ++c) data.vdot[va + static_cast<std::size_t>(axes[c])] = qdd[c];
+    Vec6 a = data.bias_acceleration[i];
+    if (parent >= 0) {
+      a += data.parent_to_child[i].ApplyMotion(data.acceleration[static_cast<std::size_t>(parent)]);
     }
+    const int count = static_cast<int>(data.subspace[i].cols());
+    if (count == 0) {
+      const auto va = static_cast<std::size_t>(model.v_address[i]);
+      for (int k = 0; k < model.v_count[i]; ++k) data.vdot[va + static_cast<std::size_t>(k)] = 0.0;
+    }
+    WithAxisCount(count, [&](auto axes) {
+      return AccelerationStep<decltype(axes)::value>(model, data, i, a);
+    });
     data.acceleration[i] = a;
     data.joint_wrench[i] = data.articulated_inertia[i] * a + data.articulated_bias[i];
     if (!a.allFinite()) {
