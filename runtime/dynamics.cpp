@@ -3,7 +3,6 @@
 #include <cmath>
 #include <type_traits>
 
-#include <Eigen/Cholesky>
 #include <Eigen/LU>
 
 #include <fmt/format.h>
@@ -76,18 +75,95 @@ Eigen::Map<const Eigen::Matrix<double, 6, N>> Subspace(const Data& data, std::si
   return Eigen::Map<const Eigen::Matrix<double, 6, N>>(data.subspace[s].data());
 }
 
+// The inverse of a symmetric positive definite matrix by its Cholesky factor L (D = L L^T,
+// D^-1 = L^-T L^-1), in plain loops the compiler unrolls for a fixed size. False when D is not
+// positive definite.
+template <int N>
+bool InvertByCholesky(const Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double, N, N>& out) {
+  Eigen::Matrix<double, N, N> L = Eigen::Matrix<double, N, N>::Zero();
+  for (int j = 0; j < N; ++j) {
+    double diagonal = D(j, j);
+    for (int k = 0; k < j; ++k) diagonal -= L(j, k) * L(j, k);
+    if (!(diagonal > 0.0)) return false;
+    L(j, j) = std::sqrt(diagonal);
+    for (int i = j + 1; i < N; ++i) {
+      double value = D(i, j);
+      for (int k = 0; k < j; ++k) value -= L(i, k) * L(j, k);
+      L(i, j) = value / L(j, j);
+    }
+  }
+  // L^-1, lower triangular, by forward substitution.
+  Eigen::Matrix<double, N, N> L_inverse = Eigen::Matrix<double, N, N>::Zero();
+  for (int j = 0; j < N; ++j) {
+    L_inverse(j, j) = 1.0 / L(j, j);
+    for (int i = j + 1; i < N; ++i) {
+      double value = 0.0;
+      for (int k = j; k < i; ++k) value -= L(i, k) * L_inverse(k, j);
+      L_inverse(i, j) = value / L(i, i);
+    }
+  }
+  for (int j = 0; j < N; ++j) {
+    for (int i = j; i < N; ++i) {
+      double value = 0.0;
+      for (int k = i; k < N; ++k) value += L_inverse(k, i) * L_inverse(k, j);
+      out(i, j) = value;
+      out(j, i) = value;
+    }
+  }
+  return true;
+}
+
 // D^-1 for the symmetric positive definite D = S^T I^A S: closed form up to three axes,
-// Cholesky for the free joint. False when D is singular or not finite.
+// Cholesky for more. False when D is singular or not finite.
 template <int N>
 bool InvertJointInertia(const Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double, N, N>& out) {
   if constexpr (N <= 3) {
     out = D.inverse();
-  } else {
-    const Eigen::LLT<Eigen::Matrix<double, N, N>> cholesky(D);
-    if (cholesky.info() != Eigen::Success) return false;
-    out = cholesky.solve(Eigen::Matrix<double, N, N>::Identity());
+  } else if (!InvertByCholesky<N>(D, out)) {
+    return false;
   }
   return out.allFinite();
+}
+
+// U = I^A S, D = S^T U and S^T p^A for the joint above segment i with N active axes.
+template <int N, typename UBlock>
+void JointProducts(const Model& model, const Data& data, std::size_t i, UBlock& U,
+                   Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double, N, 1>& S_bias) {
+  const Mat6& IA = data.articulated_inertia[i];
+  const Vec6& pA = data.articulated_bias[i];
+  if constexpr (N == 6) {
+    // The only six-axis joint is the free joint, whose S is the identity.
+    U = IA;
+    D = IA;
+    S_bias = pA;
+    return;
+  }
+  if constexpr (N == 3) {
+    if (model.joint_kind[i] == JointKind::kBall) {
+      // S = [1; p~] (p: the joint point in the segment frame, p~ its cross-product matrix).
+      // With I^A = [A B; B^T C]: U = [A + B p~; B^T + C p~], D = U_top - p~ U_bottom and
+      // S^T p^A = p_top - p x p_bottom; each product with p~ is a cross product per row or
+      // column, a third of the work of the general products.
+      const Vec3& p = model.joint_point_in_child[i];
+      for (int k = 0; k < 3; ++k) {
+        // Row k of B p~ is (row k of B) x p; likewise for C.
+        const Vec3 b_row = IA.block<1, 3>(k, 3).transpose();
+        const Vec3 c_row = IA.block<1, 3>(k + 3, 3).transpose();
+        U.template block<1, 3>(k, 0) = IA.block<1, 3>(k, 0) + b_row.cross(p).transpose();
+        U.template block<1, 3>(k + 3, 0) = IA.block<1, 3>(k + 3, 0) + c_row.cross(p).transpose();
+      }
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 bottom = U.template block<3, 1>(3, k);
+        D.col(k) = U.template block<3, 1>(0, k) - p.cross(bottom);
+      }
+      S_bias = pA.head<3>() - p.cross(Vec3(pA.tail<3>()));
+      return;
+    }
+  }
+  const auto S = Subspace<N>(data, i);
+  U.noalias() = IA * S;
+  D.noalias() = S.transpose() * U;
+  S_bias.noalias() = S.transpose() * pA;
 }
 
 // The backward step at the joint above segment i with N active axes: U, D^-1 and u, then the
@@ -103,18 +179,9 @@ bool ArticulatedStep(const Model& model, Data& data, std::size_t i, Mat6& Ia, Ve
   auto u = data.u_vector[i].head<N>();
   const VecN tau = GatherActive<N>(model, data, i, data.generalized_force);
   MatN D;
-  if constexpr (N == 6) {
-    // The only six-axis joint is the free joint, whose S is the identity.
-    U = IA;
-    D = IA;
-    u = tau - pA;
-  } else {
-    const auto S = Subspace<N>(data, i);
-    U.noalias() = IA * S;
-    D.noalias() = S.transpose() * U;
-    u = tau;
-    u.noalias() -= S.transpose() * pA;
-  }
+  VecN S_bias;
+  JointProducts<N>(model, data, i, U, D, S_bias);
+  u = tau - S_bias;
   MatN D_inverse;
   if (!InvertJointInertia<N>(D, D_inverse)) return false;
   data.d_inverse[i].topLeftCorner<N, N>() = D_inverse;
@@ -272,7 +339,7 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
       pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i];
     }
     const auto p = static_cast<std::size_t>(parent);
-    data.articulated_inertia[p] += data.parent_to_child[i].TransposeApplyInertia(Ia);
+    data.parent_to_child[i].AddTransposeApplyInertia(Ia, data.articulated_inertia[p]);
     data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
   }
   // Roots to leaves: accelerations; then the wrench each joint transmits.
