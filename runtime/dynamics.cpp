@@ -166,11 +166,17 @@ void JointProducts(const Model& model, const Data& data, std::size_t i, UBlock& 
   S_bias.noalias() = S.transpose() * pA;
 }
 
+// Hands segment i's articulated inertia Ia and bias pa to its parent p (both in i's frame).
+void HandToParent(Data& data, std::size_t i, std::size_t p, const Mat6& Ia, const Vec6& pa) {
+  data.parent_to_child[i].AddTransposeApplyInertia(Ia, data.articulated_inertia[p]);
+  data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
+}
+
 // The backward step at the joint above segment i with N active axes: U, D^-1 and u, then the
-// articulated inertia Ia and bias pa the segment hands to its parent (when it has one). False
-// when D is singular.
+// articulated inertia Ia = I^A - U D^-1 U^T and bias pa = p^A + Ia c + U D^-1 u that the
+// segment hands to its parent (when it has one). False when D is singular.
 template <int N>
-bool ArticulatedStep(const Model& model, Data& data, std::size_t i, Mat6& Ia, Vec6& pa) {
+bool ArticulatedStep(const Model& model, Data& data, std::size_t i) {
   using MatN = Eigen::Matrix<double, N, N>;
   using VecN = Eigen::Matrix<double, N, 1>;
   const Mat6& IA = data.articulated_inertia[i];
@@ -185,19 +191,42 @@ bool ArticulatedStep(const Model& model, Data& data, std::size_t i, Mat6& Ia, Ve
   MatN D_inverse;
   if (!InvertJointInertia<N>(D, D_inverse)) return false;
   data.d_inverse[i].topLeftCorner<N, N>() = D_inverse;
-  if (model.segment_parent[i] < 0) return true;
+  const std::int32_t parent = model.segment_parent[i];
+  if (parent < 0) return true;
+  const auto p = static_cast<std::size_t>(parent);
+  const Transform& X = data.parent_to_child[i];
+  const Vec6& c = data.bias_acceleration[i];
   if constexpr (N == 6) {
-    // A free joint passes no inertia to its parent, only its generalized force.
-    Ia.setZero();
-    pa = tau;
-  } else {
-    const Eigen::Matrix<double, 6, N> UD = U * D_inverse;
-    Ia = IA;
-    Ia.noalias() -= UD * U.transpose();
-    pa = pA;
-    pa.noalias() += Ia * data.bias_acceleration[i];
-    pa.noalias() += UD * u;
+    // A free joint passes no inertia to its parent (Ia = 0), only its generalized force.
+    data.articulated_bias[p] += X.TransposeApplyForce(tau);
+    return true;
   }
+  if constexpr (N == 3) {
+    if (model.joint_kind[i] == JointKind::kBall) {
+      // Ia S = 0 with S = [1; p~]: through a ball joint at p only a translational inertia K at
+      // p passes, Ia = [-p~ K p~, p~ K; -K p~, K] with K = C - U_bottom D^-1 U_bottom^T; then
+      // Ia c = [p x g; g] with g = K (c_linear - p x c_angular).
+      const Vec3& point = model.joint_point_in_child[i];
+      Mat3 K = IA.bottomRightCorner<3, 3>();
+      K.noalias() -=
+          (U.template bottomRows<3>() * D_inverse) * U.template bottomRows<3>().transpose();
+      const Vec3 g = K * (c.tail<3>() - point.cross(c.head<3>()));
+      Vec6 pa = pA;
+      pa.head<3>() += point.cross(g);
+      pa.tail<3>() += g;
+      pa.noalias() += U * (D_inverse * u);
+      X.AddTransposeApplyPointInertia(K, point, data.articulated_inertia[p]);
+      data.articulated_bias[p] += X.TransposeApplyForce(pa);
+      return true;
+    }
+  }
+  const Eigen::Matrix<double, 6, N> UD = U * D_inverse;
+  Mat6 Ia = IA;
+  Ia.noalias() -= UD * U.transpose();
+  Vec6 pa = pA;
+  pa.noalias() += Ia * c;
+  pa.noalias() += UD * u;
+  HandToParent(data, i, p, Ia, pa);
   return true;
 }
 
@@ -318,11 +347,8 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
   // Leaves to roots: articulated inertias and biases, each handed to the parent.
   for (std::size_t i = n; i-- > 0;) {
     const int count = static_cast<int>(data.subspace[i].cols());
-    Mat6 Ia;
-    Vec6 pa;
-    const bool regular = WithAxisCount(count, [&](auto axes) {
-      return ArticulatedStep<decltype(axes)::value>(model, data, i, Ia, pa);
-    });
+    const bool regular = WithAxisCount(
+        count, [&](auto axes) { return ArticulatedStep<decltype(axes)::value>(model, data, i); });
     if (!regular) {
       if (failure) {
         failure->where = model.segment_name[i];
@@ -333,14 +359,12 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
       return false;
     }
     const std::int32_t parent = model.segment_parent[i];
-    if (parent < 0) continue;
-    if (count == 0) {  // a locked joint: the segment moves with its parent
-      Ia = data.articulated_inertia[i];
-      pa = data.articulated_bias[i] + Ia * data.bias_acceleration[i];
+    if (count == 0 && parent >= 0) {
+      // A locked joint: the segment moves with its parent and hands it all of its inertia.
+      const Mat6& IA = data.articulated_inertia[i];
+      HandToParent(data, i, static_cast<std::size_t>(parent), IA,
+                   data.articulated_bias[i] + IA * data.bias_acceleration[i]);
     }
-    const auto p = static_cast<std::size_t>(parent);
-    data.parent_to_child[i].AddTransposeApplyInertia(Ia, data.articulated_inertia[p]);
-    data.articulated_bias[p] += data.parent_to_child[i].TransposeApplyForce(pa);
   }
   // Roots to leaves: accelerations; then the wrench each joint transmits.
   for (std::size_t i = 0; i < n; ++i) {

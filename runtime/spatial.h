@@ -88,6 +88,22 @@ struct Transform {
     out.bottomLeftCorner<3, 3>() += top_right.transpose();
     out.bottomRightCorner<3, 3>() += 0.5 * (C + C.transpose());
   }
+  // out += X^T I X for I = [-p~ K p~, p~ K; -K p~, K]: a translational inertia K (symmetric)
+  // acting at the point p of the child frame, which is all that passes through a ball joint at
+  // p. In parent coordinates it has the same form, with K' = E^T K E at q = r + E^T p.
+  void AddTransposeApplyPointInertia(const Eigen::Matrix3d& K, const Eigen::Vector3d& p,
+                                     Mat6& out) const {
+    const Eigen::Matrix3d K_parent = E.transpose() * K * E;
+    const Eigen::Vector3d q = r + E.transpose() * p;
+    Eigen::Matrix3d top_right, top_left;  // q~ K' and -q~ K' q~
+    for (int j = 0; j < 3; ++j) top_right.col(j) = q.cross(K_parent.col(j));
+    // Column j of -q~ K' q~ = (q~ K')(q~)^T is q x (row j of q~ K').
+    for (int j = 0; j < 3; ++j) top_left.col(j) = q.cross(top_right.row(j).transpose());
+    out.topLeftCorner<3, 3>() += 0.5 * (top_left + top_left.transpose());
+    out.topRightCorner<3, 3>() += top_right;
+    out.bottomLeftCorner<3, 3>() += top_right.transpose();
+    out.bottomRightCorner<3, 3>() += 0.5 * (K_parent + K_parent.transpose());
+  }
   Mat6 Matrix() const {
     Mat6 x = Mat6::Zero();
     x.topLeftCorner<3, 3>() = E;

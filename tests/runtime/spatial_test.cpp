@@ -52,5 +52,26 @@ TEST(Spatial, BlockwiseTransformsMatchTheSixBySixProducts) {
   }
 }
 
+TEST(Spatial, PointInertiaTransformMatchesTheSixBySixProducts) {
+  RandomSpatial random;
+  for (int trial = 0; trial < 20; ++trial) {
+    const Transform x = random.NextTransform();
+    const Mat6 X = x.Matrix();
+    const Mat6 any = random.NextSymmetric();
+    const Mat3 K = any.topLeftCorner<3, 3>();
+    const Eigen::Vector3d p(random.Next(), random.Next(), random.Next());
+    // The inertia of K at p: [-p~ K p~, p~ K; -K p~, K], written with the 6x6 shift.
+    Mat6 shift = Mat6::Identity();
+    shift.bottomLeftCorner<3, 3>() = -Skew(p);
+    Mat6 at_point = Mat6::Zero();
+    at_point.bottomRightCorner<3, 3>() = K;
+    const Mat6 inertia = shift.transpose() * at_point * shift;
+    const Mat6 expected = X.transpose() * inertia * X;
+    Mat6 sum = Mat6::Zero();
+    x.AddTransposeApplyPointInertia(K, p, sum);
+    EXPECT_LT((sum - expected).norm(), 1e-12 * expected.norm());
+  }
+}
+
 }  // namespace
 }  // namespace sled::runtime
