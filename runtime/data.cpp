@@ -20,6 +20,13 @@ Data MakeData(const Model& model) {
   data.parent_to_child.assign(n, Transform{});
   data.subspace.assign(n, MotionSubspace(6, 0));
   data.subspace_locked.assign(n, -1);
+  data.joint_frame_identity.assign(n, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    const bool parent_identity = model.joint_frame_in_parent[s] == Mat3::Identity();
+    const bool child_identity = model.joint_frame_in_child[s] == Mat3::Identity();
+    data.joint_frame_identity[s] =
+        static_cast<std::uint8_t>((parent_identity ? 1 : 0) | (child_identity ? 2 : 0));
+  }
   data.velocity.assign(n, Vec6::Zero());
   data.bias_acceleration.assign(n, Vec6::Zero());
   data.acceleration.assign(n, Vec6::Zero());

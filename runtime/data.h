@@ -41,6 +41,9 @@ struct Data {
   // The lock mask each subspace was built for (-1: not built yet); a subspace constant in the
   // segment frame is rebuilt only when its joint locks or unlocks.
   std::vector<std::int16_t> subspace_locked;
+  // Per segment, from the Model: bit 0 when the joint frame in the parent is exactly the
+  // identity, bit 1 when the one in the child is, so the kinematics skips those products.
+  std::vector<std::uint8_t> joint_frame_identity;
   std::vector<Vec6> velocity;           // spatial velocity in the segment frame
   std::vector<Vec6> bias_acceleration;  // c = v x S qdot + Sdot qdot
   std::vector<Vec6> acceleration;       // spatial acceleration in the segment frame

@@ -305,12 +305,19 @@ void ComputeKinematics(const Model& model, Data& data) {
     }
     const Vec6 joint_velocity = SubspaceTimes(model, data, s, data.v);
     Transform& x = data.parent_to_child[s];
+    // R_PC = F_parent R_J F_child^T (F: the joint frames), skipping identity frames.
     const Mat3& frame_parent = model.joint_frame_in_parent[s];
-    const Mat3 rotation_parent_child =
-        frame_parent * motion.rotation * model.joint_frame_in_child[s].transpose();
+    const std::uint8_t identity = data.joint_frame_identity[s];
+    Mat3 rotation_parent_child = motion.rotation;
+    if (!(identity & 2u)) {
+      rotation_parent_child = motion.rotation * model.joint_frame_in_child[s].transpose();
+    }
+    if (!(identity & 1u)) rotation_parent_child = frame_parent * rotation_parent_child;
     x.E = rotation_parent_child.transpose();
-    x.r = model.joint_point_in_parent[s] + frame_parent * motion.translation -
-          rotation_parent_child * model.joint_point_in_child[s];
+    x.r = model.joint_point_in_parent[s] - rotation_parent_child * model.joint_point_in_child[s];
+    if (model.joint_kind[s] == JointKind::kFree || model.joint_kind[s] == JointKind::kSlip) {
+      x.r += frame_parent * motion.translation;
+    }
     // The parent: a segment, or for a root its base (the ground or a vehicle).
     auto place = [&](const Mat3& parent_rotation, const Vec3& parent_position,
                      const Vec6& parent_velocity) {

@@ -32,13 +32,18 @@ count() {
 
 printf '%-12s %14s %14s %8s\n' model sled_Ir mujoco_Ir ratio
 row() {
-  local label=$1 sled_filter=$2 mujoco_filter=$3
-  local s m
+  local label=$1 sled_filter=$2 mujoco_filter=${3:-}
+  local s m=""
   s=$(count "$sled_filter" 'sled::runtime::Forward(*')
-  m=$(count "$mujoco_filter" 'mj_forward')
-  awk -v l="$label" -v s="$s" -v m="$m" 'BEGIN { printf "%-12s %14s %14s %8.2f\n", l, s, m, s / m }'
+  [[ -n $mujoco_filter ]] && m=$(count "$mujoco_filter" 'mj_forward')
+  awk -v l="$label" -v s="$s" -v m="$m" 'BEGIN {
+    if (m == "") printf "%-12s %14s %14s %8s\n", l, s, "-", "-"
+    else printf "%-12s %14s %14s %8.2f\n", l, s, m, s / m }'
 }
 row cvs15 'BM_SledForward$' 'BM_MujocoForward$'
 for n in 5 10 15 30 45 60; do
   row "chain$n" "BM_SledForwardScaling/$n\$" "BM_MujocoForwardScaling/$n\$"
 done
+# The four-bar example with and without its loop-closing constraint (sled only).
+row fourbar 'BM_SledForwardFourBar$'
+row fourbar_open 'BM_SledForwardFourBarOpen$'
