@@ -117,7 +117,21 @@ bool InvertByCholesky(const Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double
 // Cholesky for more. False when D is singular or not finite.
 template <int N>
 bool InvertJointInertia(const Eigen::Matrix<double, N, N>& D, Eigen::Matrix<double, N, N>& out) {
-  if constexpr (N <= 3) {
+  if constexpr (N == 3) {
+    // The cofactors of a symmetric matrix (six distinct) over the determinant, which is
+    // positive for a positive definite D.
+    const double c00 = D(1, 1) * D(2, 2) - D(1, 2) * D(1, 2);
+    const double c01 = D(0, 2) * D(1, 2) - D(0, 1) * D(2, 2);
+    const double c02 = D(0, 1) * D(1, 2) - D(0, 2) * D(1, 1);
+    const double determinant = D(0, 0) * c00 + D(0, 1) * c01 + D(0, 2) * c02;
+    const double scale = 1.0 / determinant;
+    if (!(determinant > 0.0) || !std::isfinite(scale)) return false;
+    const double c11 = D(0, 0) * D(2, 2) - D(0, 2) * D(0, 2);
+    const double c12 = D(0, 1) * D(0, 2) - D(0, 0) * D(1, 2);
+    const double c22 = D(0, 0) * D(1, 1) - D(0, 1) * D(0, 1);
+    out << c00, c01, c02, c01, c11, c12, c02, c12, c22;
+    out *= scale;
+  } else if constexpr (N <= 2) {
     out = D.inverse();
   } else if (!InvertByCholesky<N>(D, out)) {
     return false;
