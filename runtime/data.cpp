@@ -20,6 +20,14 @@ Data MakeData(const Model& model) {
   data.position.assign(n, Vec3::Zero());
   data.parent_to_child.assign(n, Transform{});
   data.subspace.assign(n, MotionSubspace(6, 0));
+  data.subspace_locked.assign(n, -1);
+  data.joint_frame_identity.assign(n, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    const bool parent_identity = model.joint_frame_in_parent[s] == Mat3::Identity();
+    const bool child_identity = model.joint_frame_in_child[s] == Mat3::Identity();
+    data.joint_frame_identity[s] =
+        static_cast<std::uint8_t>((parent_identity ? 1 : 0) | (child_identity ? 2 : 0));
+  }
   data.velocity.assign(n, Vec6::Zero());
   data.bias_acceleration.assign(n, Vec6::Zero());
   data.acceleration.assign(n, Vec6::Zero());
@@ -29,9 +37,9 @@ Data MakeData(const Model& model) {
   data.vdot.assign(static_cast<std::size_t>(model.nv), 0.0);
   data.articulated_inertia.assign(n, Mat6::Zero());
   data.articulated_bias.assign(n, Vec6::Zero());
-  data.u_matrix.assign(n, MotionSubspace(6, 0));
-  data.d_inverse.assign(n, SmallMatrix(0, 0));
-  data.u_vector.assign(n, SmallVector(0));
+  data.u_matrix.assign(n, Mat6::Zero());
+  data.d_inverse.assign(n, Mat6::Zero());
+  data.u_vector.assign(n, Vec6::Zero());
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
   SizeContactState(model, data.contacts);

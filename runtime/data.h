@@ -40,9 +40,15 @@ struct Data {
   std::vector<Vec3> position;              // centre of mass in the world frame
   std::vector<Transform> parent_to_child;  // X from the parent (or world) frame
   std::vector<MotionSubspace> subspace;    // S: active joint axes as motion vectors
-  std::vector<Vec6> velocity;              // spatial velocity in the segment frame
-  std::vector<Vec6> bias_acceleration;     // c = v x S qdot + Sdot qdot
-  std::vector<Vec6> acceleration;          // spatial acceleration in the segment frame
+  // The lock mask each subspace was built for (-1: not built yet); a subspace constant in the
+  // segment frame is rebuilt only when its joint locks or unlocks.
+  std::vector<std::int16_t> subspace_locked;
+  // Per segment, from the Model: bit 0 when the joint frame in the parent is exactly the
+  // identity, bit 1 when the one in the child is, so the kinematics skips those products.
+  std::vector<std::uint8_t> joint_frame_identity;
+  std::vector<Vec6> velocity;           // spatial velocity in the segment frame
+  std::vector<Vec6> bias_acceleration;  // c = v x S qdot + Sdot qdot
+  std::vector<Vec6> acceleration;       // spatial acceleration in the segment frame
 
   // Forces.
   std::vector<Vec6> external;             // applied wrench at the centre of mass, segment frame
@@ -50,12 +56,14 @@ struct Data {
   std::vector<Vec6> joint_wrench;  // force the parent transmits to the segment, segment frame
   std::vector<double> vdot;        // generalized accelerations (nv)
 
-  // Articulated-body workspace.
+  // Articulated-body workspace. With N active axes, only the first N columns of U, the top-left
+  // N x N of D^-1 and the first N entries of u are used: fixed-size storage, so the recursion
+  // works on fixed-size blocks.
   std::vector<Mat6> articulated_inertia;
   std::vector<Vec6> articulated_bias;
-  std::vector<MotionSubspace> u_matrix;  // U = I^A S
-  std::vector<SmallMatrix> d_inverse;    // (S^T U)^-1
-  std::vector<SmallVector> u_vector;     // tau - S^T p^A
+  std::vector<Mat6> u_matrix;   // U = I^A S
+  std::vector<Mat6> d_inverse;  // D^-1 = (S^T U)^-1
+  std::vector<Vec6> u_vector;   // u = tau - S^T p^A
 
   // Spring–dampers: current length and force (positive in tension).
   std::vector<double> spring_length;

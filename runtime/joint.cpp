@@ -47,94 +47,116 @@ int ActiveAxes(const Model& model, std::size_t s, std::uint8_t locked, int axes[
   }
 }
 
-void ComputeJointMotion(const Model& model, std::size_t s, std::span<const double> q,
-                        std::span<const double> v, std::uint8_t locked, JointMotion& motion) {
-  const auto qa = static_cast<std::size_t>(model.q_address[s]);
-  const auto va = static_cast<std::size_t>(model.v_address[s]);
-  const Mat3& frame_child = model.joint_frame_in_child[s];
-  const Vec3& point_child = model.joint_point_in_child[s];
-  motion.translation.setZero();
-  motion.bias.setZero();
+bool SubspaceDependsOnPosition(JointKind kind) {
+  return kind == JointKind::kEuler || kind == JointKind::kPlanar;
+}
+
+void ComputeJointSubspace(const Model& model, std::size_t s, std::span<const double> q,
+                          std::uint8_t locked, MotionSubspace& subspace) {
   int axes[6];
   const int count = ActiveAxes(model, s, locked, axes);
-  motion.subspace.resize(6, count);
-
+  subspace.resize(6, count);
+  const Mat3& frame_child = model.joint_frame_in_child[s];
+  const Vec3& point_child = model.joint_point_in_child[s];
   // Angular joint columns in the segment frame: the segment turns about the joint point, so its
   // centre of mass moves with p x w (p: the joint point in the segment frame).
   auto set_angular = [&](int column, const Vec3& axis_child) {
-    motion.subspace.col(column).head<3>() = axis_child;
-    motion.subspace.col(column).tail<3>() = point_child.cross(axis_child);
+    subspace.col(column).head<3>() = axis_child;
+    subspace.col(column).tail<3>() = point_child.cross(axis_child);
   };
-
   switch (model.joint_kind[s]) {
-    case JointKind::kFree: {
+    case JointKind::kFree:
+      subspace.setIdentity();
+      return;
+    case JointKind::kBall:
+      // The velocity coordinates are w in the segment frame.
+      for (int c = 0; c < count; ++c) set_angular(c, Vec3::Unit(axes[c]));
+      return;
+    case JointKind::kPin:
+      if (count == 1) set_angular(0, frame_child * model.joint_axis[s]);
+      return;
+    case JointKind::kSlip:
+      if (count == 1) {
+        subspace.col(0).head<3>().setZero();
+        subspace.col(0).tail<3>() = frame_child * model.joint_axis[s];
+      }
+      return;
+    case JointKind::kPlanar: {
+      // x and z in base axes, then the turn about y: the segment sees the base's x and z axes
+      // turned by -angle.
+      const auto qa = static_cast<std::size_t>(model.q_address[s]);
+      const Mat3 base_to_child =
+          Eigen::AngleAxisd(q[qa + 2], Vec3::UnitY()).toRotationMatrix().transpose();
+      subspace.setZero();
+      subspace.col(0).tail<3>() = base_to_child.col(0);
+      subspace.col(1).tail<3>() = base_to_child.col(2);
+      subspace(1, 2) = 1.0;
+      return;
+    }
+    case JointKind::kEuler: {
+      const auto qa = static_cast<std::size_t>(model.q_address[s]);
+      const Mat3 rates = EulerRates(q[qa + 1], q[qa + 2]);
+      for (int c = 0; c < count; ++c) set_angular(c, frame_child * rates.col(axes[c]));
+      return;
+    }
+  }
+}
+
+void ComputeJointPose(const Model& model, std::size_t s, std::span<const double> q,
+                      std::span<const double> v, std::uint8_t locked, JointMotion& motion) {
+  const auto qa = static_cast<std::size_t>(model.q_address[s]);
+  motion.translation.setZero();
+  motion.bias.setZero();
+  switch (model.joint_kind[s]) {
+    case JointKind::kFree:
       motion.rotation = QuaternionAt(q, qa + 3).normalized().toRotationMatrix();
       motion.translation = Vec3(q[qa], q[qa + 1], q[qa + 2]);
-      motion.subspace.setIdentity();
       return;
-    }
-    case JointKind::kBall: {
+    case JointKind::kBall:
       motion.rotation = QuaternionAt(q, qa).normalized().toRotationMatrix();
-      for (int c = 0; c < count; ++c) {
-        Vec3 unit = Vec3::Zero();
-        unit[axes[c]] = 1.0;
-        set_angular(c, unit);  // the velocity coordinates are w in the segment frame
-      }
       return;
-    }
-    case JointKind::kPin: {
-      const Vec3& axis = model.joint_axis[s];
-      motion.rotation = Eigen::AngleAxisd(q[qa], axis).toRotationMatrix();
-      if (count == 1) set_angular(0, frame_child * axis);
+    case JointKind::kPin:
+      motion.rotation = Eigen::AngleAxisd(q[qa], model.joint_axis[s]).toRotationMatrix();
       return;
-    }
-    case JointKind::kSlip: {
-      const Vec3& axis = model.joint_axis[s];
+    case JointKind::kSlip:
       motion.rotation.setIdentity();
-      motion.translation = axis * q[qa];
-      if (count == 1) {
-        motion.subspace.col(0).head<3>().setZero();
-        motion.subspace.col(0).tail<3>() = frame_child * axis;
-      }
+      motion.translation = model.joint_axis[s] * q[qa];
       return;
-    }
     case JointKind::kPlanar: {
-      // x and z in base axes, then the turn about y. The segment sees the base's x and z axes
-      // turned by -angle, so S depends on q: Sdot qdot = -w x (the linear part).
+      // The subspace turns with the segment: Sdot qdot = -w x (the linear part).
+      const auto va = static_cast<std::size_t>(model.v_address[s]);
       motion.rotation = Eigen::AngleAxisd(q[qa + 2], Vec3::UnitY()).toRotationMatrix();
       motion.translation = Vec3(q[qa], 0.0, q[qa + 1]);
-      const Mat3 base_to_child = motion.rotation.transpose();
-      motion.subspace.setZero();
-      motion.subspace.col(0).tail<3>() = base_to_child.col(0);
-      motion.subspace.col(1).tail<3>() = base_to_child.col(2);
-      motion.subspace(1, 2) = 1.0;
-      const Vec3 linear = base_to_child * Vec3(v[va], 0.0, v[va + 1]);
+      const Vec3 linear = motion.rotation.transpose() * Vec3(v[va], 0.0, v[va + 1]);
       motion.bias.tail<3>() = -Vec3(0.0, v[va + 2], 0.0).cross(linear);
       return;
     }
     case JointKind::kEuler: {
+      const auto va = static_cast<std::size_t>(model.v_address[s]);
       const double precession = q[qa], nutation = q[qa + 1], spin = q[qa + 2];
       motion.rotation = EulerRotation(precession, nutation, spin);
-      const Mat3 rates = EulerRates(nutation, spin);
-      for (int c = 0; c < count; ++c) set_angular(c, frame_child * rates.col(axes[c]));
       // Sdot * qdot: the rate columns turn as nutation and spin change.
       const double sn = std::sin(nutation), cn = std::cos(nutation);
       const double ss = std::sin(spin), cs = std::cos(spin);
-      const bool free_precession = !(locked & 1u), free_nutation = !(locked & 2u),
-                 free_spin = !(locked & 4u);
-      const double dp = free_precession ? v[va] : 0.0;
-      const double dn = free_nutation ? v[va + 1] : 0.0;
-      const double ds = free_spin ? v[va + 2] : 0.0;
+      const double dp = (locked & 1u) ? 0.0 : v[va];
+      const double dn = (locked & 2u) ? 0.0 : v[va + 1];
+      const double ds = (locked & 4u) ? 0.0 : v[va + 2];
       const Vec3 d_precession_column(-cn * dn, -ss * sn * dn + cs * cn * ds,
                                      -cs * sn * dn - ss * cn * ds);
       const Vec3 d_nutation_column(0, -ss * ds, -cs * ds);
-      const Vec3 w_dot = frame_child * (d_precession_column * dp + d_nutation_column * dn);
+      const Vec3 w_dot =
+          model.joint_frame_in_child[s] * (d_precession_column * dp + d_nutation_column * dn);
       motion.bias.head<3>() = w_dot;
-      motion.bias.tail<3>() = point_child.cross(w_dot);
+      motion.bias.tail<3>() = model.joint_point_in_child[s].cross(w_dot);
       return;
     }
   }
-  (void)va;
+}
+
+void ComputeJointMotion(const Model& model, std::size_t s, std::span<const double> q,
+                        std::span<const double> v, std::uint8_t locked, JointMotion& motion) {
+  ComputeJointPose(model, s, q, v, locked, motion);
+  ComputeJointSubspace(model, s, q, locked, motion.subspace);
 }
 
 void PositionDerivative(const Model& model, std::span<const double> q, std::span<const double> v,

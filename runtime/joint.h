@@ -29,6 +29,20 @@ struct JointMotion {
 void ComputeJointMotion(const Model& model, std::size_t s, std::span<const double> q,
                         std::span<const double> v, std::uint8_t locked, JointMotion& motion);
 
+// ComputeJointMotion without the subspace: rotation, translation and bias (motion.subspace is
+// left as it is). The kinematics pass keeps each subspace from call to call and rebuilds only
+// those that change (see SubspaceDependsOnPosition).
+void ComputeJointPose(const Model& model, std::size_t s, std::span<const double> q,
+                      std::span<const double> v, std::uint8_t locked, JointMotion& motion);
+
+// S of the joint above segment `s`: one column per active axis (ActiveAxes), in order.
+void ComputeJointSubspace(const Model& model, std::size_t s, std::span<const double> q,
+                          std::uint8_t locked, MotionSubspace& subspace);
+
+// True when S changes with q (Euler joints, whose rate axes turn); otherwise S is constant in
+// the segment frame for a given lock mask (free, ball, pin and slip joints).
+bool SubspaceDependsOnPosition(JointKind kind);
+
 // Indices (into the joint's velocity coordinates) of the active axes, in order; `count` is set.
 int ActiveAxes(const Model& model, std::size_t s, std::uint8_t locked, int axes[6]);
 

@@ -21,8 +21,8 @@ void CompositeRigidBodyMassMatrix(const Model& model, const Data& data, std::spa
   for (std::size_t i = n; i-- > 0;) {
     const std::int32_t parent = model.segment_parent[i];
     if (parent < 0) continue;
-    const Mat6 X = data.parent_to_child[i].Matrix();
-    composite[static_cast<std::size_t>(parent)] += X.transpose() * composite[i] * X;
+    data.parent_to_child[i].AddTransposeApplyInertia(composite[i],
+                                                     composite[static_cast<std::size_t>(parent)]);
   }
   for (std::size_t i = 0; i < n; ++i) {
     int axes_i[6];
@@ -34,14 +34,20 @@ void CompositeRigidBodyMassMatrix(const Model& model, const Data& data, std::spa
     }
     if (count_i == 0) continue;
     // F = I^c_i S_i, carried up the tree: M_ij = F^T S_j for each ancestor j.
-    MotionSubspace F = composite[i] * data.subspace[i];
-    const SmallMatrix diagonal = data.subspace[i].transpose() * F;
+    // Column by column, so each product is a fixed-size 6x6 times a 6-vector.
+    const MotionSubspace& S_i = data.subspace[i];
+    MotionSubspace F(6, count_i);
+    for (int a = 0; a < count_i; ++a) F.col(a).noalias() = composite[i] * S_i.col(a);
     for (int a = 0; a < count_i; ++a) {
-      for (int b = 0; b < count_i; ++b) mass(va_i + axes_i[a], va_i + axes_i[b]) = diagonal(a, b);
+      for (int b = 0; b < count_i; ++b) {
+        mass(va_i + axes_i[a], va_i + axes_i[b]) = S_i.col(a).dot(F.col(b));
+      }
     }
     std::size_t j = i;
     while (model.segment_parent[j] >= 0) {
-      F = data.parent_to_child[j].Matrix().transpose() * F;
+      for (Eigen::Index c = 0; c < F.cols(); ++c) {
+        F.col(c) = data.parent_to_child[j].TransposeApplyForce(F.col(c));
+      }
       j = static_cast<std::size_t>(model.segment_parent[j]);
       int axes_j[6];
       const int count_j = ActiveAxes(model, j, data.locked[j], axes_j);
@@ -54,11 +60,11 @@ void CompositeRigidBodyMassMatrix(const Model& model, const Data& data, std::spa
         }
       }
       if (count_j == 0) continue;
-      const SmallMatrix block = F.transpose() * data.subspace[j];
       for (int a = 0; a < count_i; ++a) {
         for (int b = 0; b < count_j; ++b) {
-          mass(va_i + axes_i[a], va_j + axes_j[b]) = block(a, b);
-          mass(va_j + axes_j[b], va_i + axes_i[a]) = block(a, b);
+          const double value = F.col(a).dot(data.subspace[j].col(b));
+          mass(va_i + axes_i[a], va_j + axes_j[b]) = value;
+          mass(va_j + axes_j[b], va_i + axes_i[a]) = value;
         }
       }
     }

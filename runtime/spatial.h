@@ -60,25 +60,49 @@ struct Transform {
     return out;
   }
   // X^T I X: a symmetric spatial inertia (or articulated inertia) in child coordinates,
-  // expressed in parent coordinates. Done in 3x3 blocks, about a tenth of the work of the 6x6
-  // products: with I = [A B; B^T C] rotated to A', B', C', the shift by r gives
-  // [A' - B' r~ + r~ B'^T - r~ C' r~,  B' + r~ C';  (B' + r~ C')^T,  C'].
+  // expressed in parent coordinates. Done in 3x3 blocks, a fraction of the work of the 6x6
+  // products: with I = [A B; B^T C] rotated to A', B', C' and r~ the cross-product matrix of r,
+  // the shift gives [A' - B' r~ + r~ B'^T - r~ C' r~,  Z;  Z^T,  C'] with Z = B' + r~ C'. The
+  // top-left block is A' + (r~ B'^T)^T + r~ Z^T, and each r~ M is a cross product per column.
   Mat6 TransposeApplyInertia(const Mat6& inertia) const {
+    Mat6 out = Mat6::Zero();
+    AddTransposeApplyInertia(inertia, out);
+    return out;
+  }
+  // out += X^T I X, for summing children's inertias into their parent's.
+  void AddTransposeApplyInertia(const Mat6& inertia, Mat6& out) const {
     const Eigen::Matrix3d Et = E.transpose();
     const Eigen::Matrix3d A = Et * inertia.topLeftCorner<3, 3>() * E;
     const Eigen::Matrix3d B = Et * inertia.topRightCorner<3, 3>() * E;
     const Eigen::Matrix3d C = Et * inertia.bottomRightCorner<3, 3>() * E;
-    const Eigen::Matrix3d rx = Skew(r);
-    const Eigen::Matrix3d top_right = B + rx * C;
-    Mat6 out;
-    const Eigen::Matrix3d top_left = A - B * rx + rx * B.transpose() - rx * C * rx;
+    Eigen::Matrix3d top_right, top_left;
+    for (int j = 0; j < 3; ++j) top_right.col(j) = B.col(j) + r.cross(C.col(j));
+    // Row j of (r~ B'^T)^T is r x (row j of B'); column j of r~ Z^T is r x (row j of Z).
+    for (int j = 0; j < 3; ++j) top_left.row(j) = r.cross(B.row(j).transpose()).transpose();
+    for (int j = 0; j < 3; ++j) top_left.col(j) += r.cross(top_right.row(j).transpose());
+    top_left += A;
     // The result is symmetric in exact arithmetic; symmetrising keeps rounding from growing
     // along long chains (a 30-segment chain lost five digits without it).
-    out.topLeftCorner<3, 3>() = 0.5 * (top_left + top_left.transpose());
-    out.topRightCorner<3, 3>() = top_right;
-    out.bottomLeftCorner<3, 3>() = top_right.transpose();
-    out.bottomRightCorner<3, 3>() = 0.5 * (C + C.transpose());
-    return out;
+    out.topLeftCorner<3, 3>() += 0.5 * (top_left + top_left.transpose());
+    out.topRightCorner<3, 3>() += top_right;
+    out.bottomLeftCorner<3, 3>() += top_right.transpose();
+    out.bottomRightCorner<3, 3>() += 0.5 * (C + C.transpose());
+  }
+  // out += X^T I X for I = [-p~ K p~, p~ K; -K p~, K]: a translational inertia K (symmetric)
+  // acting at the point p of the child frame, which is all that passes through a ball joint at
+  // p. In parent coordinates it has the same form, with K' = E^T K E at q = r + E^T p.
+  void AddTransposeApplyPointInertia(const Eigen::Matrix3d& K, const Eigen::Vector3d& p,
+                                     Mat6& out) const {
+    const Eigen::Matrix3d K_parent = E.transpose() * K * E;
+    const Eigen::Vector3d q = r + E.transpose() * p;
+    Eigen::Matrix3d top_right, top_left;  // q~ K' and -q~ K' q~
+    for (int j = 0; j < 3; ++j) top_right.col(j) = q.cross(K_parent.col(j));
+    // Column j of -q~ K' q~ = (q~ K')(q~)^T is q x (row j of q~ K').
+    for (int j = 0; j < 3; ++j) top_left.col(j) = q.cross(top_right.row(j).transpose());
+    out.topLeftCorner<3, 3>() += 0.5 * (top_left + top_left.transpose());
+    out.topRightCorner<3, 3>() += top_right;
+    out.bottomLeftCorner<3, 3>() += top_right.transpose();
+    out.bottomRightCorner<3, 3>() += 0.5 * (K_parent + K_parent.transpose());
   }
   Mat6 Matrix() const {
     Mat6 x = Mat6::Zero();

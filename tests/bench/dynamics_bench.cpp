@@ -11,6 +11,9 @@
 // BM_SledForwardScaling / BM_MujocoForwardScaling: chains of N segments (free root, then ball,
 // ball, pin, ...), with the time per segment as a counter; sled's fit is O(N), MuJoCo's is left
 // to the fit (a chain's mass matrix is dense).
+// BM_SledForwardFourBar / BM_SledForwardFourBarOpen: examples/four_bar.sled with its loop-closing
+// constraint (the KKT system, KLU) and without it (the open chain), so the difference is the
+// cost of the constraint.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -21,6 +24,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include "compiler/check/check.h"
+#include "compiler/lower/lower.h"
+#include "lang/syntax/parser.h"
 #include "runtime/dynamics.h"
 #include "tests/verification/tree_models.h"
 
@@ -65,16 +71,55 @@ Subject& ChainOf(int n) {
   return *subject;
 }
 
-void RunSled(benchmark::State& state, Subject& subject) {
+// examples/four_bar.sled lowered, at its initial state; `open` drops the loop-closing constraint.
+struct FourBar {
+  explicit FourBar(bool open) : model(Load(open)), data(runtime::MakeData(model)) {}
+  static runtime::Model Load(bool open) {
+    const std::string root = SLED_SOURCE_ROOT;
+    lang::SourceManager sources;
+    const auto file = sources.Load(root + "/examples/four_bar.sled");
+    lang::DiagnosticCollector collector;
+    lang::ParseOptions parse_options;
+    parse_options.diagnostics = &collector;
+    const lang::ast::File ast = lang::Parse(sources, *file, parse_options);
+    compiler::CheckOptions check_options;
+    check_options.diagnostics = &collector;
+    check_options.stdlib_root = root + "/stdlib";
+    const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
+    if (collector.has_errors()) {
+      std::fprintf(stderr, "examples/four_bar.sled does not check\n");
+      std::abort();
+    }
+    runtime::Model model = compiler::Lower(scenario, sources, compiler::LowerOptions{}).model;
+    if (open) {
+      model.constraint_name.clear();
+      model.constraint_kind.clear();
+      model.constraint_first.clear();
+      model.constraint_second.clear();
+      model.constraint_point_first.clear();
+      model.constraint_point_second.clear();
+      model.constraint_distance.clear();
+      model.constraint_axis.clear();
+    }
+    return model;
+  }
+  runtime::Model model;
+  runtime::Data data;
+};
+
+void RunSledModel(benchmark::State& state, const runtime::Model& model, runtime::Data& data) {
+  data.model = &model;
   for (auto _ : state) {
-    const bool ok = runtime::Forward(subject.model, subject.data, nullptr);
+    const bool ok = runtime::Forward(model, data, nullptr);
     benchmark::DoNotOptimize(ok);
-    benchmark::DoNotOptimize(subject.data.vdot.data());
+    benchmark::DoNotOptimize(data.vdot.data());
     benchmark::ClobberMemory();
   }
-  if (!runtime::Forward(subject.model, subject.data, nullptr)) {
-    state.SkipWithError("sled's Forward failed");
-  }
+  if (!runtime::Forward(model, data, nullptr)) state.SkipWithError("sled's Forward failed");
+}
+
+void RunSled(benchmark::State& state, Subject& subject) {
+  RunSledModel(state, subject.model, subject.data);
 }
 
 void RunMujoco(benchmark::State& state, Subject& subject) {
@@ -107,6 +152,15 @@ void BM_MujocoForwardScaling(benchmark::State& state) {
   SetPerSegment(state, n);
 }
 
+void BM_SledForwardFourBar(benchmark::State& state) {
+  static FourBar four_bar(false);
+  RunSledModel(state, four_bar.model, four_bar.data);
+}
+void BM_SledForwardFourBarOpen(benchmark::State& state) {
+  static FourBar four_bar(true);
+  RunSledModel(state, four_bar.model, four_bar.data);
+}
+
 BENCHMARK(BM_SledForward)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_MujocoForward)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_SledForwardScaling)
@@ -128,6 +182,8 @@ BENCHMARK(BM_MujocoForwardScaling)
     ->Arg(45)
     ->Arg(60)
     ->Complexity();
+BENCHMARK(BM_SledForwardFourBar)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_SledForwardFourBarOpen)->Unit(benchmark::kNanosecond);
 
 // The console table, plus the CPU time per iteration of every repetition, kept to print the
 // sled/MuJoCo ratios (medians over repetitions) after the table.
