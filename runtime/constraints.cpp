@@ -84,7 +84,7 @@ struct FrameMotion {
   Vec3 angular_acceleration = Vec3::Zero();
 };
 
-FrameMotion MotionOf(const Model& model, const Data& data, const FrameRef& frame) {
+FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
   FrameMotion motion;
   switch (frame.kind) {
     case FrameRef::Kind::kSegment: {
@@ -102,8 +102,7 @@ FrameMotion MotionOf(const Model& model, const Data& data, const FrameRef& frame
       return motion;
     }
     case FrameRef::Kind::kVehicle: {
-      const VehicleState vehicle =
-          VehicleAt(model, static_cast<std::size_t>(frame.index), data.time);
+      const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(frame.index)];
       motion.rotation = vehicle.rotation;
       motion.origin = vehicle.position;
       motion.velocity = vehicle.velocity;
@@ -178,8 +177,8 @@ bool Evaluate(const Model& model, const Data& data, ConstraintWorkspace& w, bool
                   "the constraint joins two prescribed frames (ground or vehicles): nothing can "
                   "move to satisfy it");
     }
-    const FrameMotion f1 = MotionOf(model, data, first);
-    const FrameMotion f2 = MotionOf(model, data, second);
+    const FrameMotion f1 = MotionOf(data, first);
+    const FrameMotion f2 = MotionOf(data, second);
     const PointMotion p1 = PointOf(f1, model.constraint_point_first[c]);
     const PointMotion p2 = PointOf(f2, model.constraint_point_second[c]);
     w.point_first[c] = p1.position;
@@ -396,7 +395,7 @@ void ConstraintForces(const Model& model, const Data& data, ConstraintWorkspace&
         AddForce(data, w, second, p2, -force);
         break;
       case Model::ConstraintKind::kSliding: {
-        const Mat3 rotation = MotionOf(model, data, second).rotation;
+        const Mat3 rotation = MotionOf(data, second).rotation;
         for (int k = 0; k < 2; ++k) {
           force +=
               w.lambda[r0 + k] * (rotation * w.sliding_normal[2 * c + static_cast<std::size_t>(k)]);

@@ -17,6 +17,7 @@ Data MakeData(const Model& model) {
   data.locked.assign(model.joint_locked.begin(), model.joint_locked.end());
   data.locked.resize(n, 0);
   data.rotation.assign(n, Mat3::Identity());
+  data.vehicle.assign(model.nvehicle(), VehicleState{});
   data.position.assign(n, Vec3::Zero());
   data.parent_to_child.assign(n, Transform{});
   data.subspace.assign(n, MotionSubspace(6, 0));

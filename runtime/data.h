@@ -12,6 +12,7 @@
 #include "runtime/model.h"
 #include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
+#include "runtime/vehicle.h"
 
 namespace sled::runtime {
 
@@ -34,6 +35,10 @@ struct Data {
   std::vector<double> q;             // generalized positions (nq)
   std::vector<double> v;             // generalized velocities (nv)
   std::vector<std::uint8_t> locked;  // per segment: bit k locks axis k of its joint
+
+  // Prescribed motion: each vehicle's pose and motion at `time`, set by ComputeKinematics, so
+  // every force element and constraint on a vehicle reads it instead of evaluating the pulse.
+  std::vector<VehicleState> vehicle;
 
   // Kinematics, per segment.
   std::vector<Mat3> rotation;              // R_WS: segment to world

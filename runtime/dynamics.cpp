@@ -302,10 +302,10 @@ struct Frame {
   Vec6 acceleration = Vec6::Zero();
 };
 
-Frame BaseFrame(const Model& model, const FrameRef& base, double t) {
+Frame BaseFrame(const Data& data, const FrameRef& base) {
   Frame frame;
   if (base.kind != FrameRef::Kind::kVehicle) return frame;
-  const VehicleState vehicle = VehicleAt(model, static_cast<std::size_t>(base.index), t);
+  const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(base.index)];
   frame.rotation = vehicle.rotation;
   frame.position = vehicle.position;
   const Vec3 w = vehicle.rotation.transpose() * vehicle.angular_velocity;
@@ -326,6 +326,9 @@ Mat6 SpatialInertia(const Model& model, std::size_t segment) {
 }
 
 void ComputeKinematics(const Model& model, Data& data) {
+  for (std::size_t v = 0; v < data.vehicle.size(); ++v) {
+    data.vehicle[v] = VehicleAt(model, v, data.time);
+  }
   JointMotion motion;
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     const std::uint8_t locked = data.locked[s];
@@ -363,7 +366,7 @@ void ComputeKinematics(const Model& model, Data& data) {
       const auto p = static_cast<std::size_t>(parent);
       place(data.rotation[p], data.position[p], data.velocity[p]);
     } else {
-      const Frame base = BaseFrame(model, model.segment_base[s], data.time);
+      const Frame base = BaseFrame(data, model.segment_base[s]);
       place(base.rotation, base.position, base.velocity);
       // A moving base's acceleration enters as the root's parent acceleration.
       data.bias_acceleration[s] += x.ApplyMotion(base.acceleration);

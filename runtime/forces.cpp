@@ -91,8 +91,7 @@ SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation) {
   return out;
 }
 
-PointState PointInFrame(const Model& model, const Data& data, const FrameRef& frame,
-                        const Vec3& point) {
+PointState PointInFrame(const Data& data, const FrameRef& frame, const Vec3& point) {
   switch (frame.kind) {
     case FrameRef::Kind::kSegment: {
       const auto s = static_cast<std::size_t>(frame.index);
@@ -102,8 +101,7 @@ PointState PointInFrame(const Model& model, const Data& data, const FrameRef& fr
       return {data.position[s] + arm, v + w.cross(arm)};
     }
     case FrameRef::Kind::kVehicle: {
-      const VehicleState vehicle =
-          VehicleAt(model, static_cast<std::size_t>(frame.index), data.time);
+      const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(frame.index)];
       const Vec3 arm = vehicle.rotation * point;
       return {vehicle.position + arm, vehicle.velocity + vehicle.angular_velocity.cross(arm)};
     }
@@ -125,10 +123,8 @@ void ComputeForces(const Model& model, Data& data) {
   if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
 
   for (std::size_t k = 0; k < model.nspring(); ++k) {
-    const PointState a =
-        PointInFrame(model, data, model.spring_first[k], model.spring_point_first[k]);
-    const PointState b =
-        PointInFrame(model, data, model.spring_second[k], model.spring_point_second[k]);
+    const PointState a = PointInFrame(data, model.spring_first[k], model.spring_point_first[k]);
+    const PointState b = PointInFrame(data, model.spring_second[k], model.spring_point_second[k]);
     const Vec3 gap = b.position - a.position;
     const double length = gap.norm();
     data.spring_length[k] = length;

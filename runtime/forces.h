@@ -34,7 +34,6 @@ struct PointState {
 void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
                    const Vec3& force_world);
 
-PointState PointInFrame(const Model& model, const Data& data, const FrameRef& frame,
-                        const Vec3& point);
+PointState PointInFrame(const Data& data, const FrameRef& frame, const Vec3& point);
 
 }  // namespace sled::runtime

@@ -115,13 +115,13 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
       }
       case Model::OutputKind::kVelocity: {
         const PointState state =
-            PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
+            PointInFrame(data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
         put(state.velocity, MirrorWorldVector);
         break;
       }
       case Model::OutputKind::kPosition: {
         const PointState state =
-            PointInFrame(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
+            PointInFrame(data, {FrameRef::Kind::kSegment, model.output_index[k]}, point);
         // The mirror plane is y = mirror_plane_y of the ground.
         put(mirrored ? Vec3(state.position + Vec3(0, -2 * model.mirror_plane_y, 0))
                      : state.position,

@@ -15,8 +15,7 @@ namespace {
 // torque). A static tangential load below full friction creeps at v0 atanh(load / (mu N)).
 constexpr double kFrictionSpeed = 1e-2;
 
-// World pose and motion of a frame at the current kinematics (vehicles from the per-evaluation
-// cache).
+// World pose and motion of a frame at the current kinematics (vehicles from data.vehicle).
 struct FrameMotion {
   Vec3 origin = Vec3::Zero();
   Mat3 rotation = Mat3::Identity();
@@ -35,7 +34,7 @@ FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
       out.angular_velocity = out.rotation * data.velocity[i].head<3>();
       break;
     case FrameRef::Kind::kVehicle: {
-      const VehicleState& v = data.contacts.vehicles[i];
+      const VehicleState& v = data.vehicle[i];
       out.origin = v.position;
       out.rotation = v.rotation;
       out.velocity = v.velocity;
@@ -107,9 +106,6 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
 void PlaceContactSurfaces(const Model& model, Data& data) {
   const ContactTable& table = model.contacts;
   ContactState& state = data.contacts;
-  for (std::size_t v = 0; v < state.vehicles.size(); ++v) {
-    state.vehicles[v] = VehicleAt(model, v, data.time);
-  }
   for (std::size_t e = 0; e < table.nellipsoid(); ++e) {
     const FrameMotion frame = MotionOf(data, table.ellipsoid_frame[e]);
     state.ellipsoid_center[e] = frame.origin + frame.rotation * table.ellipsoid_center[e];

@@ -28,7 +28,6 @@ void SizeContactState(const Model& model, ContactState& state) {
   state.plane_edge_u.assign(table.nplane(), Vec3::Zero());
   state.plane_edge_v.assign(table.nplane(), Vec3::Zero());
   state.plane_normal.assign(table.nplane(), Vec3::UnitZ());
-  state.vehicles.assign(n > 0 ? model.nvehicle() : 0, VehicleState{});
   state.response.assign(n > 0 ? static_cast<std::size_t>(model.nv) : 0, 0.0);
   state.saved_v.assign(n > 0 ? static_cast<std::size_t>(model.nv) : 0, 0.0);
 }

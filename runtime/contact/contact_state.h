@@ -43,9 +43,6 @@ struct ContactState {
   std::vector<Vec3> plane_edge_v;
   std::vector<Vec3> plane_normal;
 
-  // --- Per vehicle, recomputed each evaluation when a surface is fixed in a vehicle.
-  std::vector<VehicleState> vehicles;
-
   // --- Impulse workspace: the velocity response to a unit contact impulse and a saved velocity.
   std::vector<double> response;
   std::vector<double> saved_v;

@@ -20,12 +20,12 @@ constexpr double kWrapTolerance = 1e-12;  // [m] change of a tangent point betwe
 
 std::size_t Index(std::int32_t value) { return static_cast<std::size_t>(value); }
 
-Mat3 FrameRotation(const Model& model, const Data& data, const FrameRef& frame) {
+Mat3 FrameRotation(const Data& data, const FrameRef& frame) {
   switch (frame.kind) {
     case FrameRef::Kind::kSegment:
       return data.rotation[Index(frame.index)];
     case FrameRef::Kind::kVehicle:
-      return VehicleAt(model, Index(frame.index), data.time).rotation;
+      return data.vehicle[Index(frame.index)].rotation;
     case FrameRef::Kind::kGround:
       break;
   }
@@ -60,7 +60,7 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
       state.contact[k] = 0;
     } else {
       const Vec3 anchor =
-          PointInFrame(model, data, table.point_frame[k], table.point_position[k]).position;
+          PointInFrame(data, table.point_frame[k], table.point_position[k]).position;
       state.entry[k] = state.exit[k] = state.middle[k] = anchor;
     }
   }
@@ -249,8 +249,7 @@ void SetUpBelts(const Model& model, Data& data) {
     auto reference = [&](std::size_t k) {
       return table.point_wraps[k]
                  ? SurfaceOf(table, data, k).centre
-                 : PointInFrame(model, data, table.point_frame[k], table.point_position[k])
-                       .position;
+                 : PointInFrame(data, table.point_frame[k], table.point_position[k]).position;
     };
     for (std::size_t k = first + 1; k + 1 < first + Index(table.point_count[b]); ++k) {
       if (!table.point_wraps[k]) continue;
@@ -311,11 +310,10 @@ void ComputeBeltForces(const Model& model, Data& data) {
       if (i == 0) state.start_anchor_force[b] = force;
       if (i + 1 == spans) state.end_anchor_force[b] = -force;
     }
-    state.start_anchor_force[b] = FrameRotation(model, data, table.point_frame[first]).transpose() *
-                                  state.start_anchor_force[b];
-    state.end_anchor_force[b] =
-        FrameRotation(model, data, table.point_frame[first + spans]).transpose() *
-        state.end_anchor_force[b];
+    state.start_anchor_force[b] =
+        FrameRotation(data, table.point_frame[first]).transpose() * state.start_anchor_force[b];
+    state.end_anchor_force[b] = FrameRotation(data, table.point_frame[first + spans]).transpose() *
+                                state.end_anchor_force[b];
   }
 }
 

@@ -230,8 +230,8 @@ Model MakeScene() {
 }
 
 // World and frame coordinates of a point at data's state.
-Vec3 World(const Model& model, const Data& data, FrameRef frame, const Vec3& local) {
-  return PointInFrame(model, data, frame, local).position;
+Vec3 World(const Data& data, FrameRef frame, const Vec3& local) {
+  return PointInFrame(data, frame, local).position;
 }
 
 Vec3 Local(const Model& model, const Data& data, FrameRef frame, const Vec3& world) {
@@ -262,21 +262,21 @@ const Vec3 kOffset(0.02, -0.01, 0.015);
 
 void AddGrip(Model& m, const Data& at) {
   const Vec3 hand(0.01, 0.02, -0.05);
-  const Vec3 p = World(m, at, SegmentFrame(3), hand);
+  const Vec3 p = World(at, SegmentFrame(3), hand);
   AddConstraint(m, "grip", Model::ConstraintKind::kFixedPoint, SegmentFrame(3), hand,
                 SegmentFrame(4), Local(m, at, SegmentFrame(4), p + kOffset));
 }
 
 void AddRope(Model& m, const Data& at) {
   const Vec3 anchor(0.5, 0.5, 2.0), elbow(0, 0, -0.1);
-  const double length = (World(m, at, SegmentFrame(1), elbow) - anchor).norm();
+  const double length = (World(at, SegmentFrame(1), elbow) - anchor).norm();
   AddConstraint(m, "rope", Model::ConstraintKind::kFixedDistance, kGround, anchor, SegmentFrame(1),
                 elbow, length - 0.02);
 }
 
 void AddSeatRail(Model& m, const Data& at) {
   const Vec3 seat(0, 0, -0.3);
-  const Vec3 p = World(m, at, SegmentFrame(0), seat);
+  const Vec3 p = World(at, SegmentFrame(0), seat);
   AddConstraint(m, "seat_rail", Model::ConstraintKind::kSliding, SegmentFrame(0), seat, kVehicle,
                 Local(m, at, kVehicle, p + kOffset), 0.0, Vec3(1, 0, 0.2));
 }
@@ -286,14 +286,14 @@ const KindCase kKindCases[] = {
     {"FixedPointInOneTree",
      [](Model& m, const Data& at) {
        const Vec3 hand(0, 0, -0.05);
-       const Vec3 p = World(m, at, SegmentFrame(3), hand);
+       const Vec3 p = World(at, SegmentFrame(3), hand);
        AddConstraint(m, "touch", Model::ConstraintKind::kFixedPoint, SegmentFrame(3), hand,
                      SegmentFrame(0), Local(m, at, SegmentFrame(0), p + kOffset));
      }},
     {"FixedPointToVehicle",
      [](Model& m, const Data& at) {
        const Vec3 hand(0, 0, -0.05);
-       const Vec3 p = World(m, at, SegmentFrame(3), hand);
+       const Vec3 p = World(at, SegmentFrame(3), hand);
        AddConstraint(m, "hold", Model::ConstraintKind::kFixedPoint, SegmentFrame(3), hand, kVehicle,
                      Local(m, at, kVehicle, p + kOffset));
      }},
@@ -301,7 +301,7 @@ const KindCase kKindCases[] = {
      [](Model& m, const Data& at) {
        const Vec3 hand(0, 0, -0.05), box(0, 0.05, 0);
        const double length =
-           (World(m, at, SegmentFrame(3), hand) - World(m, at, SegmentFrame(4), box)).norm();
+           (World(at, SegmentFrame(3), hand) - World(at, SegmentFrame(4), box)).norm();
        AddConstraint(m, "tether", Model::ConstraintKind::kFixedDistance, SegmentFrame(3), hand,
                      SegmentFrame(4), box, length + 0.03);
      }},
@@ -309,7 +309,7 @@ const KindCase kKindCases[] = {
     {"Sliding",
      [](Model& m, const Data& at) {
        const Vec3 hand(0, 0, -0.05), axis(1, 1, 0);
-       const Vec3 p = World(m, at, SegmentFrame(3), hand);
+       const Vec3 p = World(at, SegmentFrame(3), hand);
        const Vec3 along = at.rotation[4] * axis.normalized();
        AddConstraint(m, "rail", Model::ConstraintKind::kSliding, SegmentFrame(3), hand,
                      SegmentFrame(4), Local(m, at, SegmentFrame(4), p + kOffset + 0.3 * along), 0.0,

@@ -128,9 +128,8 @@ double PositionAtLength(const Scene& s, double length) {
   return 0.5 * (low + high);
 }
 
-Vec3 BallVelocity(const Model& model, const Data& data) {
-  return runtime::PointInFrame(model, data, {runtime::FrameRef::Kind::kSegment, 0}, Vec3::Zero())
-      .velocity;
+Vec3 BallVelocity(const Data& data) {
+  return runtime::PointInFrame(data, {runtime::FrameRef::Kind::kSegment, 0}, Vec3::Zero()).velocity;
 }
 
 // Elastic energy of the webbing for a linear function K strain, from the spans' state.
@@ -188,7 +187,7 @@ TEST(BeltUnloading, ReboundKeepsWhatTheUnloadingReturns) {
     // The largest strain is taken at the end of accepted steps, so a peak inside a step is
     // missed by O(h^2): a tight tolerance keeps that below the comparison.
     ASSERT_TRUE(Simulate(model, data, "dopri5", 1e-12, Linspace(0, 0.2, 200),
-                         [&](const Data& d) { last = BallVelocity(model, d); }));
+                         [&](const Data& d) { last = BallVelocity(d); }));
     EXPECT_NEAR(last.x(), -scene.speed * std::sqrt(c.kept), 1e-6)
         << "energy_loss " << c.loss << " permanent_set " << c.set;
     EXPECT_NEAR(last.y(), 0.0, 1e-9);
@@ -242,7 +241,7 @@ TEST(BeltPretension, StartsAtItsPretensionAndKeepsEnergy) {
     const double x = d.position[0].x();
     const double stretch = x > 0 ? std::max(WrappedLength(scene, x) - rest, 0.0) : 0.0;
     const Vec3 w = d.rotation[0] * d.velocity[0].head<3>();
-    return 0.5 * scene.mass * BallVelocity(model, d).squaredNorm() +
+    return 0.5 * scene.mass * BallVelocity(d).squaredNorm() +
            0.5 * scene.inertia * w.squaredNorm() + scene.stiffness * stretch * stretch / (2 * rest);
   };
   const double initial = energy(data);
@@ -342,9 +341,8 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
     double kinetic = 0.0;
     for (std::size_t s = 0; s < 2; ++s) {
       const Vec3 v =
-          runtime::PointInFrame(model, d,
-                                {runtime::FrameRef::Kind::kSegment, static_cast<std::int32_t>(s)},
-                                Vec3::Zero())
+          runtime::PointInFrame(
+              d, {runtime::FrameRef::Kind::kSegment, static_cast<std::int32_t>(s)}, Vec3::Zero())
               .velocity;
       kinetic += 0.5 * v.squaredNorm() + 0.5 * 1e-4 * d.velocity[s].head<3>().squaredNorm();
     }
@@ -357,8 +355,7 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
     EXPECT_NEAR(d.belts.tension[1], d.belts.tension[2], 1e-8 * d.belts.tension[1] + 1e-9);
     largest = std::max(largest, d.belts.tension[2]);
     const Vec3 second =
-        runtime::PointInFrame(model, d, {runtime::FrameRef::Kind::kSegment, 1}, Vec3::Zero())
-            .velocity;
+        runtime::PointInFrame(d, {runtime::FrameRef::Kind::kSegment, 1}, Vec3::Zero()).velocity;
     pulled = std::min(pulled, second.x());
     worst = std::max(worst, std::abs(energy(d) - initial));
   }));

@@ -115,12 +115,12 @@ Model MakeLinkage(Closure closure) {
 double LoopError(const Model& model, const runtime::Data& data) {
   double error = 0.0;
   for (std::size_t c = 0; c < model.nconstraint(); ++c) {
-    const Vec3 p1 = runtime::PointInFrame(model, data, model.constraint_first[c],
-                                          model.constraint_point_first[c])
-                        .position;
-    const Vec3 p2 = runtime::PointInFrame(model, data, model.constraint_second[c],
-                                          model.constraint_point_second[c])
-                        .position;
+    const Vec3 p1 =
+        runtime::PointInFrame(data, model.constraint_first[c], model.constraint_point_first[c])
+            .position;
+    const Vec3 p2 =
+        runtime::PointInFrame(data, model.constraint_second[c], model.constraint_point_second[c])
+            .position;
     double e = 0.0;
     switch (model.constraint_kind[c]) {
       case Model::ConstraintKind::kFixedPoint:
