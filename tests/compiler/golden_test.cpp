@@ -36,11 +36,13 @@
 #include "lang/diagnostics/render.h"
 #include "lang/source/source_manager.h"
 #include "lang/syntax/parser.h"
+#include "tests/compiler/sled_process.h"
 
 namespace sled::compiler {
 namespace {
 
 namespace fs = std::filesystem;
+using sled::testing::WorkingDirectory;
 
 const fs::path kRoot = SLED_SOURCE_ROOT;
 constexpr std::string_view kGoldenFolder = "tests/golden";
@@ -88,23 +90,6 @@ std::vector<std::string> GoldenFiles() {
   std::sort(names.begin(), names.end());
   return names;
 }
-
-// Moves to the repository root for the lifetime of the guard, so relative paths work.
-class WorkingDirectory {
- public:
-  explicit WorkingDirectory(const fs::path& path) : saved_(fs::current_path()) {
-    fs::current_path(path);
-  }
-  ~WorkingDirectory() {
-    std::error_code error;
-    fs::current_path(saved_, error);
-  }
-  WorkingDirectory(const WorkingDirectory&) = delete;
-  WorkingDirectory& operator=(const WorkingDirectory&) = delete;
-
- private:
-  fs::path saved_;
-};
 
 // `// sled-test: --set NAME=VALUE` lines at the top of a golden file.
 std::vector<std::pair<std::string, std::string>> OverridesIn(const std::string& text) {

@@ -26,12 +26,14 @@
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
 #include "runtime/model.h"
+#include "tests/compiler/sled_process.h"
 
 namespace sled::compiler {
 namespace {
 
 namespace fs = std::filesystem;
 using runtime::JointKind;
+using sled::testing::WorkingDirectory;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
@@ -881,22 +883,6 @@ std::string ReadText(const fs::path& path) {
   text << in.rdbuf();
   return text.str();
 }
-
-class WorkingDirectory {
- public:
-  explicit WorkingDirectory(const fs::path& path) : saved_(fs::current_path()) {
-    fs::current_path(path);
-  }
-  ~WorkingDirectory() {
-    std::error_code error;
-    fs::current_path(saved_, error);
-  }
-  WorkingDirectory(const WorkingDirectory&) = delete;
-  WorkingDirectory& operator=(const WorkingDirectory&) = delete;
-
- private:
-  fs::path saved_;
-};
 
 TEST(LowerGolden, DumpModelMatchesTheExpectedFiles) {
   // Paths relative to the repository root, so the side table's file names are stable.

@@ -54,6 +54,23 @@ inline std::string Quote(const std::string& word) {
   return out + "'";
 }
 
+// Moves to `path` for the lifetime of the guard, so relative paths resolve there.
+class WorkingDirectory {
+ public:
+  explicit WorkingDirectory(const fs::path& path) : saved_(fs::current_path()) {
+    fs::current_path(path);
+  }
+  ~WorkingDirectory() {
+    std::error_code error;
+    fs::current_path(saved_, error);
+  }
+  WorkingDirectory(const WorkingDirectory&) = delete;
+  WorkingDirectory& operator=(const WorkingDirectory&) = delete;
+
+ private:
+  fs::path saved_;
+};
+
 // A folder of its own under the system's temporary folder, removed at the end of the test.
 class TempFolder {
  public:

@@ -1,5 +1,5 @@
 // Compiles a scenario for the verification tests as `sled run` does (parse, check against the
-// standard library, lower), so a test can run a scene written in the language.
+// standard library, lower), and runs it, so a test can use a scene written in the language.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
+#include "runtime/run.h"
 
 namespace sled::verification {
 
@@ -38,6 +39,27 @@ inline Compiled CompileFile(lang::SourceManager& sources, lang::FileId file) {
 inline Compiled CompileText(const std::string& text) {
   lang::SourceManager sources;
   return CompileFile(sources, sources.Add("scene.sled", text));
+}
+
+// A scene compiled and run as `sled run` runs it: its outputs, and what the run and the model
+// were (errors is empty when the scene checked).
+struct SceneRun {
+  std::string errors;
+  std::size_t nv = 0;
+  runtime::TimeSeries series;
+  runtime::RunSummary summary;
+};
+
+inline SceneRun RunText(const std::string& text) {
+  SceneRun run;
+  const Compiled compiled = CompileText(text);
+  run.errors = compiled.errors;
+  if (!run.errors.empty()) return run;
+  const runtime::Model& model = compiled.lowered.model;
+  run.nv = static_cast<std::size_t>(model.nv);
+  runtime::Data data = runtime::MakeData(model);
+  run.summary = runtime::Run(model, data, run.series, {});
+  return run;
 }
 
 }  // namespace sled::verification

@@ -63,15 +63,12 @@ std::string Scene(const std::string& symmetry) {
 }
 
 runtime::TimeSeries RunScene(const std::string& text, std::size_t* nv) {
-  const Compiled compiled = CompileText(text);
-  EXPECT_EQ(compiled.errors, "");
-  const runtime::Model& model = compiled.lowered.model;
-  *nv = static_cast<std::size_t>(model.nv);
-  runtime::Data data = runtime::MakeData(model);
-  runtime::TimeSeries series;
-  const runtime::RunSummary summary = runtime::Run(model, data, series, {});
-  EXPECT_FALSE(summary.failed) << summary.failure.where << ": " << summary.failure.cause;
-  return series;
+  SceneRun run = RunText(text);
+  EXPECT_EQ(run.errors, "");
+  EXPECT_FALSE(run.summary.failed)
+      << run.summary.failure.where << ": " << run.summary.failure.cause;
+  *nv = run.nv;
+  return std::move(run.series);
 }
 
 TEST(MirrorSymmetry, AgreesWithTheFullModelOnBothSides) {

@@ -55,13 +55,11 @@ std::string Scene(const std::string& method) {
 class SymmetricScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SymmetricScene, GivesMirrorImageResults) {
-  const Compiled compiled = CompileText(Scene(GetParam()));
-  ASSERT_EQ(compiled.errors, "");
-  const runtime::Model& model = compiled.lowered.model;
-  runtime::Data data = runtime::MakeData(model);
-  runtime::TimeSeries series;
-  const runtime::RunSummary summary = runtime::Run(model, data, series, {});
-  ASSERT_FALSE(summary.failed) << summary.failure.where << ": " << summary.failure.cause;
+  const SceneRun run = RunText(Scene(GetParam()));
+  ASSERT_EQ(run.errors, "");
+  ASSERT_FALSE(run.summary.failed)
+      << run.summary.failure.where << ": " << run.summary.failure.cause;
+  const runtime::TimeSeries& series = run.series;
   auto column = [&](const std::string& name) {
     for (std::size_t c = 0; c < series.names.size(); ++c) {
       if (series.names[c] == name) return c + 1;
