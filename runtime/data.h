@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "runtime/contact/contact_state.h"
+#include "runtime/energy_balance.h"
 #include "runtime/model.h"
 #include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
@@ -82,6 +83,11 @@ struct Data {
   // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
   // null when the Model has none.
   std::unique_ptr<ConstraintWorkspace, ConstraintWorkspaceDeleter> constraints;
+
+  // The energy balance (runtime/energy.h): the power the force elements delivered to vehicles
+  // at the last evaluation, and the accumulated terms.
+  double vehicle_power = 0.0;
+  EnergyBalance energy;
 
   std::int64_t evaluations = 0;
 };

@@ -76,6 +76,24 @@ void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
   data.external[segment].tail<3>() += force;
 }
 
+void AddFrameForce(Data& data, const FrameRef& frame, const Vec3& point_world,
+                   const Vec3& force_world, double weight) {
+  switch (frame.kind) {
+    case FrameRef::Kind::kSegment:
+      AddPointForce(data, static_cast<std::size_t>(frame.index), point_world, force_world);
+      return;
+    case FrameRef::Kind::kVehicle: {
+      const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(frame.index)];
+      const Vec3 velocity =
+          vehicle.velocity + vehicle.angular_velocity.cross(point_world - vehicle.position);
+      data.vehicle_power += weight * force_world.dot(velocity);
+      return;
+    }
+    case FrameRef::Kind::kGround:
+      return;
+  }
+}
+
 SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation) {
   Eigen::Quaterniond q = rotation;
   if (q.w() < 0) q.coeffs() = -q.coeffs();
@@ -118,6 +136,7 @@ void ComputeForces(const Model& model, Data& data) {
         model.segment_mass[s] * (data.rotation[s].transpose() * model.gravity);
   }
   std::fill(data.generalized_force.begin(), data.generalized_force.end(), 0.0);
+  data.vehicle_power = 0.0;
   for (std::size_t s = 0; s < model.nsegment(); ++s) JointTorques(model, data, s);
 
   if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
@@ -136,14 +155,8 @@ void ComputeForces(const Model& model, Data& data) {
     if (model.spring_tension_only[k] && (elongation <= 0 || force < 0)) force = 0.0;
     data.spring_force[k] = force;
     // Tension pulls the first point toward the second and the second toward the first.
-    if (model.spring_first[k].kind == FrameRef::Kind::kSegment) {
-      AddPointForce(data, static_cast<std::size_t>(model.spring_first[k].index), a.position,
-                    force * direction);
-    }
-    if (model.spring_second[k].kind == FrameRef::Kind::kSegment) {
-      AddPointForce(data, static_cast<std::size_t>(model.spring_second[k].index), b.position,
-                    -force * direction);
-    }
+    AddFrameForce(data, model.spring_first[k], a.position, force * direction);
+    AddFrameForce(data, model.spring_second[k], b.position, -force * direction);
   }
   ComputeBeltForces(model, data);
 }

@@ -19,20 +19,23 @@ struct SwingTwist {
 };
 SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation);
 
-// Adds a force (world frame) acting at a world point of a segment to the segment's wrench in
-// data.external (at its centre of mass, in its frame).
-void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
-                   const Vec3& force_world);
-
 // World position and velocity of a point fixed in a frame.
 struct PointState {
   Vec3 position;
   Vec3 velocity;
 };
 
-// Adds a force (world) applied at a point (world) to a segment's wrench at its centre of mass.
+// Adds a force (world) applied at a point (world) to a segment's wrench at its centre of mass
+// (data.external, segment frame).
 void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
                    const Vec3& force_world);
+
+// A force element's force on one of the frames it connects: on a segment, AddPointForce; on a
+// vehicle, its power (force . velocity of the vehicle point) goes into data.vehicle_power, times
+// `weight` (2 for an element of a left twin that stands for its mirror image too), for the
+// energy balance; the ground does no work.
+void AddFrameForce(Data& data, const FrameRef& frame, const Vec3& point_world,
+                   const Vec3& force_world, double weight = 1.0);
 
 PointState PointInFrame(const Data& data, const FrameRef& frame, const Vec3& point);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "runtime/dynamics.h"
+#include "runtime/energy.h"
 #include "runtime/force_deflection.h"
 #include "runtime/forces.h"
 
@@ -183,12 +184,13 @@ void AccumulateContactForces(const Model& model, Data& data) {
     state.normal[k] = g.normal;
     const FrameRef first = SurfaceFrame(table, k, 0);
     const FrameRef second = SurfaceFrame(table, k, 1);
-    if (first.kind == FrameRef::Kind::kSegment) {
-      AddPointForce(data, static_cast<std::size_t>(first.index), g.point, force);
-    }
-    if (second.kind == FrameRef::Kind::kSegment) {
-      AddPointForce(data, static_cast<std::size_t>(second.index), g.point, -force);
-    }
+    // A left twin's contact stands for its right twin's too (for the vehicle's work).
+    const FrameRef& body = first.kind == FrameRef::Kind::kSegment ? first : second;
+    const double weight = body.kind == FrameRef::Kind::kSegment
+                              ? MirrorWeight(model, static_cast<std::size_t>(body.index))
+                              : 1.0;
+    AddFrameForce(data, first, g.point, force, weight);
+    AddFrameForce(data, second, g.point, -force, weight);
   }
 }
 

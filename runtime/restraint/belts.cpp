@@ -303,9 +303,7 @@ void ComputeBeltForces(const Model& model, Data& data) {
                                      std::tuple(first + i + 1, Vec3(-force), state.end[span])}) {
         const FrameRef& frame = table.point_frame[k];
         const bool pressed = !table.point_wraps[k] || state.contact[k];
-        if (frame.kind == FrameRef::Kind::kSegment && pressed) {
-          AddPointForce(data, Index(frame.index), at, f);
-        }
+        if (pressed) AddFrameForce(data, frame, at, f);
       }
       if (i == 0) state.start_anchor_force[b] = force;
       if (i + 1 == spans) state.end_anchor_force[b] = -force;

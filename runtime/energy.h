@@ -1,0 +1,31 @@
+// The energy balance of a run: kinetic + potential energy of the segments, the work the force
+// elements absorb (stored elastically or dissipated), the work the prescribed vehicle motion does
+// on the occupant, and the kinetic energy impulses change. With every term computed
+// independently, KE + PE + absorbed - prescribed - impulses stays at its initial value up to the
+// integration error; the residual measures it.
+#pragma once
+
+#include "runtime/data.h"
+#include "runtime/energy_balance.h"
+
+namespace sled::runtime {
+
+// 2 for a left twin of a mirror-symmetric scene (it stands for its right twin too), else 1.
+double MirrorWeight(const Model& model, std::size_t segment);
+
+// Kinetic energy (absolute velocities) and gravitational potential energy (zero at the ground
+// origin) of every segment; a left twin of a mirror-symmetric scene counts for itself and its
+// right twin.
+double KineticEnergy(const Model& model, const Data& data);
+double PotentialEnergy(const Model& model, const Data& data);
+
+// The power the non-gravity forces deliver to the segments at data's last evaluation: applied
+// wrenches (data.external less gravity), joint torques (data.generalized_force), constraint
+// wrenches and the reactions of joints to moving vehicles. Its integral is the change of KE + PE.
+struct SegmentPower {
+  double elements = 0.0;     // force elements and joint characteristics
+  double constraints = 0.0;  // constraints, and root joints on vehicles (ideal: they absorb none)
+};
+SegmentPower PowerIntoSegments(const Model& model, const Data& data);
+
+}  // namespace sled::runtime

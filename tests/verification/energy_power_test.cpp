@@ -1,0 +1,135 @@
+// The energy balance's power bookkeeping at single instants: the rate of change of kinetic and
+// potential energy, computed from the accelerations the dynamics produced, equals the power the
+// force elements, joint characteristics and constraints deliver to the segments
+// (runtime/energy.h). No integration is involved, so the identity holds to rounding: it fails
+// if a force is applied at the wrong point, a torque is counted twice, gravity is left in, or a
+// mirror twin is weighted wrongly.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "runtime/energy.h"
+#include "tests/verification/compile.h"
+#include "tests/verification/verification.h"
+
+namespace sled::verification {
+namespace {
+
+using runtime::Vec3;
+using runtime::Vec6;
+
+// d/dt (KE + PE) from the state and the accelerations: in each segment's frame at its centre of
+// mass, d/dt (1/2 V.I V) = V.I A with A the spatial acceleration.
+double EnergyRate(const runtime::Model& model, const runtime::Data& data) {
+  double rate = 0.0;
+  for (std::size_t s = 0; s < model.nsegment(); ++s) {
+    const Vec6& v = data.velocity[s];
+    const Vec6& a = data.acceleration[s];
+    const Vec3 w = v.head<3>(), linear = v.tail<3>();
+    const double kinetic = w.dot(model.segment_inertia[s] * a.head<3>()) +
+                           model.segment_mass[s] * linear.dot(a.tail<3>());
+    const double potential = -model.segment_mass[s] * model.gravity.dot(data.rotation[s] * linear);
+    rate += runtime::MirrorWeight(model, s) * (kinetic + potential);
+  }
+  return rate;
+}
+
+// Runs the scene to each time and compares the two sides there.
+void ExpectPowerMatches(const std::string& text, const std::vector<double>& times) {
+  const Compiled compiled = CompileText(text);
+  ASSERT_EQ(compiled.errors, "");
+  const runtime::Model& model = compiled.lowered.model;
+  runtime::Data data = runtime::MakeData(model);
+  int samples = 0;
+  const bool ok = Simulate(model, data, "exponential", 1e-6, times, [&](const runtime::Data& d) {
+    const runtime::SegmentPower power = runtime::PowerIntoSegments(model, d);
+    const double rate = EnergyRate(model, d);
+    const double total = power.elements + power.constraints;
+    // Rounding of sums of terms of the size of the largest single power.
+    double scale = 1.0;
+    for (std::size_t s = 0; s < model.nsegment(); ++s) {
+      scale = std::max(scale, std::abs(d.external[s].dot(d.velocity[s])));
+    }
+    EXPECT_NEAR(rate, total, 1e-9 * scale) << "at t = " << d.time;
+    EXPECT_GT(std::abs(total), 1e-3) << "nothing acts at t = " << d.time;
+    ++samples;
+  });
+  ASSERT_TRUE(ok);
+  EXPECT_EQ(samples, static_cast<int>(times.size()));
+}
+
+std::string ReadExample(const std::string& name) {
+  std::ifstream in(std::filesystem::path(SLED_SOURCE_ROOT) / "examples" / name);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(EnergyPower, FlagshipContactsAndBeltsOnAMovingSled) {
+  ExpectPowerMatches(ReadExample("frontal_sled.sled"), {0.02, 0.06, 0.09, 0.15});
+}
+
+TEST(EnergyPower, SpringsToAMovingVehicle) {
+  ExpectPowerMatches(R"(scenario "springs" {
+  import std.humans.male50 as occupant
+  time { end = 100 ms  output_every = 1 ms }
+  vehicle sled { motion = half_sine(delta_v = 30 km/h, duration = 80 ms, axis = -x) }
+  spring tether : occupant.lower_leg_l -> sled {
+    at occupant.lower_leg_l = (0, 0, 150) mm
+    at sled = (600, 85, 0) mm
+    stiffness = 20 kN/m
+    damping = 100 N*s/m
+    free_length = 400 mm
+  }
+  tension strap : occupant.pelvis -> sled {
+    at occupant.pelvis = (-100, 0, 0) mm
+    at sled = (-300, 0, 150) mm
+    stiffness = table(elongation -> force) { 0 mm -> 0 N  10 mm -> 5 kN }
+  }
+  initial occupant { position = (0, 0, 150) mm }
+})",
+                     {0.01, 0.04, 0.07});
+}
+
+TEST(EnergyPower, ConstraintToAMovingVehicle) {
+  ExpectPowerMatches(R"(scenario "hung bar" {
+  time { end = 100 ms  output_every = 1 ms }
+  vehicle sled { motion = half_sine(delta_v = 30 km/h, duration = 80 ms, axis = -x) }
+  body bar {
+    segment rod { mass = 1 kg  inertia = (0.02, 0.02, 0.0001) kg*m^2 }
+  }
+  constraint pivot : fixed_point(sled -> bar.rod) {
+    at sled = (0, 0, 2) m
+    at bar.rod = (0, 0, 250) mm
+  }
+  initial bar { position = (0, 0, 1.75) m }
+})",
+                     {0.01, 0.04, 0.07});
+}
+
+TEST(EnergyPower, MirrorTwinsCountTwice) {
+  ExpectPowerMatches(R"(scenario "two arms" {
+  time { end = 300 ms  output_every = 5 ms }
+  symmetry mirror { pair = b.arm_l, b.arm_r }
+  function shoulder = table(angle -> torque) { -3 rad -> -60 N*m  0 rad -> 0 N*m  3 rad -> 60 N*m }
+  body b {
+    segment trunk { mass = 30 kg  inertia = (1.2, 1.0, 0.4) kg*m^2 }
+    segment arm_l { mass = 2 kg  inertia = (0.012, 0.012, 0.003) kg*m^2 }
+    segment arm_r { mass = 2 kg  inertia = (0.012, 0.012, 0.003) kg*m^2 }
+    joint shoulder_l : ball(trunk -> arm_l) { at trunk = (0.05, 0.2, 0.3) m  at arm_l = (0, 0, 0.15) m
+                                              flexure = shoulder  viscous = 0.3 N*m*s/rad }
+    joint shoulder_r : ball(trunk -> arm_r) { at trunk = (0.05, -0.2, 0.3) m  at arm_r = (0, 0, 0.15) m
+                                              flexure = shoulder  viscous = 0.3 N*m*s/rad }
+  }
+  initial b { position = (0, 0, 1) m  orientation = (0, 10, 0) deg  velocity = (2, 0, 1) m/s
+              angular_velocity = (0, 1.5, 0) rad/s }
+  initial b.shoulder_l { angles = (25, -40, 30) deg }
+  initial b.shoulder_r { angles = (-25, -40, -30) deg }
+})",
+                     {0.05, 0.15, 0.25});
+}
+
+}  // namespace
+}  // namespace sled::verification
