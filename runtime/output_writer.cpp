@@ -120,6 +120,15 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
                      s.max_local_error, s.accumulated_error);
   out << "  },\n";
   out << fmt::format("  \"wall_time_seconds\": {},\n", summary.wall_seconds);
+  const EnergySummary& e = summary.energy;
+  out << "  \"energy_balance\": {\n";
+  out << fmt::format(
+      "    \"kinetic\": {},\n    \"potential\": {},\n    \"absorbed\": {},\n"
+      "    \"prescribed_work\": {},\n    \"impulses\": {},\n    \"residual\": {},\n"
+      "    \"largest_residual\": {},\n    \"scale\": {},\n    \"relative_residual\": {}\n",
+      e.kinetic, e.potential, e.absorbed, e.prescribed_work, e.impulses, e.residual,
+      e.largest_residual, e.scale, e.relative());
+  out << "  },\n";
   if (summary.failed) {
     const Failure& f = summary.failure;
     out << "  \"failure\": {\n";

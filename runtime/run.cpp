@@ -6,12 +6,30 @@
 #include <fmt/format.h>
 
 #include "runtime/dynamics.h"
+#include "runtime/energy.h"
 #include "runtime/integrate/make_integrator.h"
 #include "runtime/outputs.h"
 #include "runtime/system.h"
 
 namespace sled::runtime {
 namespace {
+
+// The balance at data's state (after Forward): the terms, the residual, and the largest of each.
+void UpdateEnergy(const Model& model, const Data& data, double initial_potential,
+                  EnergySummary& energy) {
+  const EnergyBalance& balance = data.energy;
+  energy.kinetic = KineticEnergy(model, data);
+  energy.potential = PotentialEnergy(model, data);
+  energy.absorbed = balance.Absorbed();
+  energy.prescribed_work = balance.PrescribedWork();
+  energy.impulses = balance.impulses;
+  energy.residual = balance.Residual(energy.kinetic, energy.potential);
+  energy.largest_residual = std::max(energy.largest_residual, std::abs(energy.residual));
+  for (double term : {energy.kinetic, energy.potential - initial_potential, energy.absorbed,
+                      energy.prescribed_work, energy.impulses}) {
+    energy.scale = std::max(energy.scale, std::abs(term));
+  }
+}
 
 void AppendRow(const Model& model, Data& data, TimeSeries& series) {
   const std::size_t start = series.values.size();
@@ -43,6 +61,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     return summary;
   }
   MultibodySystem system(model, data);
+  data.energy = EnergyBalance{};
   std::vector<double> y(system.size());
   system.Store(y);
   IntegratorOptions integrator_options;
@@ -55,11 +74,15 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
 
   // The first row: the initial state.
   Failure failure;
+  double initial_potential = 0.0;
   if (!Forward(model, data, &failure)) {
     summary.failed = true;
     summary.failure = failure;
     summary.failure.time = data.time;
   } else {
+    initial_potential = PotentialEnergy(model, data);
+    data.energy.initial = KineticEnergy(model, data) + initial_potential;
+    UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
   }
   for (std::size_t k = 1; k < outputs && !summary.failed; ++k) {
@@ -79,6 +102,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       summary.failure.time = data.time;
       break;
     }
+    UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
     if (options.progress)
       options.progress(static_cast<double>(k) / static_cast<double>(outputs - 1),

@@ -18,6 +18,20 @@ struct TimeSeries {
   std::size_t rows() const { return columns == 0 ? 0 : values.size() / columns; }
 };
 
+// The energy balance of a run (runtime/energy.h) at its last row, and the largest residual of
+// any row against the largest term of the balance at any row.
+struct EnergySummary {
+  double kinetic = 0.0;
+  double potential = 0.0;
+  double absorbed = 0.0;         // by the force elements: stored + dissipated
+  double prescribed_work = 0.0;  // done by the prescribed vehicle motion
+  double impulses = 0.0;         // kinetic energy changed by impulsive events
+  double residual = 0.0;         // KE + PE + absorbed - prescribed - impulses - initial
+  double largest_residual = 0.0;
+  double scale = 0.0;  // the largest |term| of the balance (KE, PE change, absorbed, ...)
+  double relative() const { return scale > 0 ? largest_residual / scale : 0.0; }
+};
+
 struct RunSummary {
   std::string integrator;
   IntegratorStats stats;
@@ -25,6 +39,7 @@ struct RunSummary {
   bool failed = false;
   Failure failure;
   double end_time = 0.0;  // where the run stopped
+  EnergySummary energy;
 };
 
 struct RunOptions {

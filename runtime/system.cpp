@@ -9,6 +9,7 @@
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_impulse.h"
 #include "runtime/dynamics.h"
+#include "runtime/energy.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/restraint/belts.h"
@@ -38,20 +39,30 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model)
   responses_.assign(6, std::vector<double>(static_cast<std::size_t>(model.nv), 0.0));
 }
 
-std::size_t MultibodySystem::size() const {
+std::size_t MultibodySystem::ControlledSize() const {
   return static_cast<std::size_t>(model_.nq + model_.nv);
 }
 
+std::size_t MultibodySystem::size() const { return ControlledSize() + kEnergyQuadratures; }
+
 void MultibodySystem::Load(double t, std::span<const double> y) {
-  const auto nq = static_cast<std::size_t>(model_.nq);
+  const auto nq = static_cast<std::size_t>(model_.nq), nv = static_cast<std::size_t>(model_.nv);
   data_.time = t;
-  std::copy(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(nq), data_.q.begin());
-  std::copy(y.begin() + static_cast<std::ptrdiff_t>(nq), y.end(), data_.v.begin());
+  std::copy_n(y.begin(), nq, data_.q.begin());
+  std::copy_n(y.begin() + static_cast<std::ptrdiff_t>(nq), nv, data_.v.begin());
+  const std::size_t e = nq + nv;
+  data_.energy.element_work = y[e];
+  data_.energy.constraint_work = y[e + 1];
+  data_.energy.vehicle_work = y[e + 2];
 }
 
 void MultibodySystem::Store(std::span<double> y) const {
   std::copy(data_.q.begin(), data_.q.end(), y.begin());
   std::copy(data_.v.begin(), data_.v.end(), y.begin() + model_.nq);
+  const std::size_t e = ControlledSize();
+  y[e] = data_.energy.element_work;
+  y[e + 1] = data_.energy.constraint_work;
+  y[e + 2] = data_.energy.vehicle_work;
 }
 
 bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<double> dy) {
@@ -64,6 +75,11 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
   const auto nq = static_cast<std::size_t>(model_.nq);
   PositionDerivative(model_, data_.q, data_.v, data_.locked, dy.first(nq));
   std::copy(data_.vdot.begin(), data_.vdot.end(), dy.begin() + static_cast<std::ptrdiff_t>(nq));
+  const SegmentPower power = PowerIntoSegments(model_, data_);
+  const std::size_t e = ControlledSize();
+  dy[e] = power.elements;
+  dy[e + 1] = power.constraints;
+  dy[e + 2] = data_.vehicle_power;
   for (double value : dy) {
     if (!std::isfinite(value)) {
       failure_.time = t;
@@ -107,9 +123,10 @@ void MultibodySystem::Project(double t, std::span<double> y) {
   }
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
   if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
-  CommitContactHistory(model_, data_, t, y);
+  Load(t, y);
+  CommitContactHistory(model_, data_);
   // Belts: the webbing distribution and loading histories of the accepted step.
-  CommitBelts(model_, data_, t, y);
+  CommitBelts(model_, data_);
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {
@@ -240,9 +257,18 @@ void MultibodySystem::ApplyJointImpulse(std::size_t s, const SmallMatrix& direct
 
 void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
   Load(t, y);
+  // The kinetic energy the impulse adds (or, mostly, takes), for the energy balance.
+  ComputeKinematics(model_, data_);
+  const double before = KineticEnergy(model_, data_);
+  ApplyEvent(k, direction);
+  ComputeKinematics(model_, data_);
+  data_.energy.impulses += KineticEnergy(model_, data_) - before;
+  Store(y);
+}
+
+void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
   if (events_[k].kind == EventKind::kContactImpulse) {
     if (direction < 0) ApplyContactImpulse(model_, data_, events_[k].segment);  // touching
-    Store(y);
     return;
   }
   const std::size_t s = events_[k].segment;
@@ -296,7 +322,6 @@ void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::s
     case EventKind::kContactImpulse:
       break;
   }
-  Store(y);
 }
 
 std::string MultibodySystem::FailureReason() const {

@@ -1,4 +1,6 @@
-// The multibody equations as an OdeSystem for the integrators: state y = [q; v]. Joint stops
+// The multibody equations as an OdeSystem for the integrators: state y = [q; v; W], where W are
+// the energy balance's work integrals (runtime/energy.h: elements, constraints, vehicles),
+// quadratures outside the error control. Joint stops
 // with the impulse option, joint locking and first contacts with the impulse option are events:
 // the integrator locates them inside the step, and HandleEvent applies the impulse or switches
 // the joint's lock state.
@@ -14,6 +16,7 @@ class MultibodySystem : public OdeSystem {
   MultibodySystem(const Model& model, Data& data);
 
   std::size_t size() const override;
+  std::size_t ControlledSize() const override;
   bool Derivative(double t, std::span<const double> y, std::span<double> dy) override;
   std::vector<std::size_t> VectorGroups() const override;
   void Project(double t, std::span<double> y) override;
@@ -23,19 +26,22 @@ class MultibodySystem : public OdeSystem {
   void Events(double t, std::span<const double> y, std::span<double> g) override;
   void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
 
-  // Copies a state vector into data (q, v, time) and back.
+  // Copies a state vector into data (q, v, the work integrals, time) and back.
   void Load(double t, std::span<const double> y);
   void Store(std::span<double> y) const;
 
   const Failure& failure() const { return failure_; }
 
  private:
+  static constexpr std::size_t kEnergyQuadratures = 3;
   enum class EventKind { kStop, kTwistStop, kLock, kContactImpulse };
   struct Event {
     EventKind kind;
     std::size_t segment;  // the joint's (child) segment; for kContactImpulse the contact pair
   };
 
+  // The impulse or lock switch of event k, on data_'s state.
+  void ApplyEvent(std::size_t k, int direction);
   // Sets v so that, for each direction d_i (a vector over the joint's velocity coordinates),
   // d_i . v_joint takes the value target_i, by a generalized impulse on the joint: the impulse
   // passes through the whole system, so momentum is kept.

@@ -146,6 +146,12 @@ int RunCommand(const RunCommandOptions& options) {
       "evaluations)\n",
       series.rows(), directory, summary.wall_seconds, summary.stats.steps, summary.stats.rejected,
       summary.stats.evaluations);
+  const runtime::EnergySummary& energy = summary.energy;
+  std::cerr << fmt::format(
+      "sled: energy balance closes to {:.2g} % (largest residual {:.3g} J of {:.4g} J; at the "
+      "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J)\n",
+      100 * energy.relative(), energy.largest_residual, energy.scale, energy.kinetic,
+      energy.absorbed, energy.prescribed_work);
   return kExitOk;
 }
 

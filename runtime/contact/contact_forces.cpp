@@ -194,13 +194,9 @@ void AccumulateContactForces(const Model& model, Data& data) {
   }
 }
 
-void CommitContactHistory(const Model& model, Data& data, double t, std::span<const double> y) {
+void CommitContactHistory(const Model& model, Data& data) {
   ContactState& state = data.contacts;
   if (!state.any_commit) return;
-  const auto nq = static_cast<std::ptrdiff_t>(model.nq);
-  data.time = t;
-  std::copy(y.begin(), y.begin() + nq, data.q.begin());
-  std::copy(y.begin() + nq, y.end(), data.v.begin());
   ComputeKinematics(model, data);
   PlaceContactSurfaces(model, data);
   const ContactTable& table = model.contacts;

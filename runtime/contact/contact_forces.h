@@ -15,11 +15,11 @@ namespace sled::runtime {
 // force and point in data.contacts. Needs current kinematics (positions and velocities).
 void AccumulateContactForces(const Model& model, Data& data);
 
-// After an accepted step ending at (t, y = [q; v]): records each contact's largest deflection,
-// which fixes its unloading curve, and whether pairs with the impulse option touch. Nothing to
-// do (and no work) when no contact function loses energy or sets and no pair has the impulse.
-// Leaves data's state at (t, y) with current kinematics.
-void CommitContactHistory(const Model& model, Data& data, double t, std::span<const double> y);
+// After an accepted step, with data's time and state at its end: records each contact's largest
+// deflection, which fixes its unloading curve, and whether pairs with the impulse option touch.
+// Nothing to do (and no work) when no contact function loses energy or sets and no pair has
+// the impulse.
+void CommitContactHistory(const Model& model, Data& data);
 
 // World poses of the contact surfaces from the current kinematics (into data.contacts).
 void PlaceContactSurfaces(const Model& model, Data& data);

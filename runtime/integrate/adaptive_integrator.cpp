@@ -30,6 +30,12 @@ constexpr double kLookAheadTolerances = 10.0;
 
 }  // namespace
 
+double AdaptiveIntegrator::ErrorNorm(std::span<const double> error) const {
+  return WeightedRmsNorm(error.first(controlled_), std::span<const double>(y_).first(controlled_),
+                         std::span<const double>(y1_).first(controlled_),
+                         options_.relative_tolerance, options_.absolute_tolerance);
+}
+
 void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const double> y0,
                                const IntegratorOptions& options) {
   const std::size_t n = system.size();
@@ -49,6 +55,7 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
                                 ": need 0 <= min_step <= max_step (max_step 0: no limit)");
   }
   system_ = &system;
+  controlled_ = std::min(system.ControlledSize(), n);
   options_ = options;
   stats_ = {};
   t_ = t0;
@@ -254,7 +261,8 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
     ++stats_.steps;
     stats_.max_local_error = std::max(stats_.max_local_error, error);
     stats_.accumulated_error +=
-        error * ToleranceScale(y1_, options_.relative_tolerance, options_.absolute_tolerance);
+        error * ToleranceScale(std::span<const double>(y1_).first(controlled_),
+                               options_.relative_tolerance, options_.absolute_tolerance);
 
     if (events_.active() && events_.Check(t1, y1_)) {
       const double t_event = events_.Locate(*this, t_, t1, EventTolerance(), y_event_);

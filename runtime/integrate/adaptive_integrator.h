@@ -64,6 +64,10 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // (y_, f0_, y1_, f1_).
   void Interpolate(double t, std::span<double> y) const override;
 
+  // The weighted RMS norm (error_norm.h) of a local error estimate for the step from y_ to
+  // y1_, over the components the system's error control measures (ControlledSize).
+  double ErrorNorm(std::span<const double> error) const;
+
   // Calls Derivative and counts it.
   bool Evaluate(double t, std::span<const double> y, std::span<double> dy);
 
@@ -99,7 +103,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   IntegratorStats stats_;
   StepSizeController controller_;
   EventLocator events_;
-  double h_ = 0.0;  // next step to try
+  double h_ = 0.0;              // next step to try
+  std::size_t controlled_ = 0;  // system().ControlledSize()
   bool restart_pending_ = true;
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state

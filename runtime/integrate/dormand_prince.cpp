@@ -62,8 +62,7 @@ bool DormandPrince::TryStep(double h, double* error) {
     error_[i] =
         h * (kE1 * k1[i] + kE3 * k3_[i] + kE4 * k4_[i] + kE5 * k5_[i] + kE6 * k6_[i] + kE7 * k7[i]);
   }
-  *error =
-      WeightedRmsNorm(error_, y_, y1_, options().relative_tolerance, options().absolute_tolerance);
+  *error = ErrorNorm(error_);
   return true;
 }
 

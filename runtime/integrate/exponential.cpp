@@ -169,9 +169,7 @@ bool ExponentialIntegrator::TryStep(double h, double* error) {
                           4.0 * p.phi3 * second_difference);
     error_[i] = h * (4.0 * p.phi3 - 2.0 * p.phi2) * second_difference;
   }
-  const double rtol = options().relative_tolerance;
-  const double atol = options().absolute_tolerance;
-  const double model_error = WeightedRmsNorm(error_, y_, y1_, rtol, atol);
+  const double model_error = ErrorNorm(error_);
   if (!AllFinite(y1_)) {
     *error = std::numeric_limits<double>::quiet_NaN();  // reported as not finite
     return true;
@@ -190,7 +188,7 @@ bool ExponentialIntegrator::TryStep(double h, double* error) {
     const double residual = f1_[i] - lambda_step_[g] * (y1_[i] - y_[i]) - nb_[i];
     error_[i] = h * (1.0 - 5.0 / 6.0 * phi_[g].phi1) * residual;
   }
-  const double residual_error = WeightedRmsNorm(error_, y_, y1_, rtol, atol);
+  const double residual_error = ErrorNorm(error_);
   *error = std::max(model_error, residual_error);
   if (std::isnan(model_error) || std::isnan(residual_error)) {
     *error = std::numeric_limits<double>::quiet_NaN();

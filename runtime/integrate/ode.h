@@ -29,6 +29,11 @@ class OdeSystem {
     return false;
   }
 
+  // How many leading components the error control measures. The rest are quadratures:
+  // integrals of quantities of the state (the energy balance's work terms) that feed nothing
+  // back, carried along with the state but never the reason a step is rejected or shortened.
+  virtual std::size_t ControlledSize() const { return size(); }
+
   // State components that form 3-vectors (a segment's angular velocity, say), as the starting
   // index of each group; the CVS exponential integrator estimates one decay rate per group.
   // Components outside every group are integrated with a decay rate of zero.

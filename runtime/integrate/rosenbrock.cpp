@@ -206,8 +206,7 @@ bool Rosenbrock::TryStep(double h, double* error) {
     y1 += kTableau.m[j] * u_[j];
     error_ += kTableau.e[j] * u_[j];
   }
-  *error = WeightedRmsNorm(std::span<const double>(error_.data(), n), y_, y1_,
-                           options().relative_tolerance, options().absolute_tolerance);
+  *error = ErrorNorm(std::span<const double>(error_.data(), n));
   return true;
 }
 

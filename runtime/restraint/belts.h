@@ -22,9 +22,9 @@ void SetUpBelts(const Model& model, Data& data);
 // Adds the belt forces to data.external (after the kinematics of data's state).
 void ComputeBeltForces(const Model& model, Data& data);
 
-// After an accepted step at the state y = [q; v] and time t: commits the webbing distribution,
-// the loading histories and the contact sides. For OdeSystem::Project; leaves y unchanged.
-void CommitBelts(const Model& model, Data& data, double t, std::span<const double> y);
+// After an accepted step, with data's time and state at its end: commits the webbing
+// distribution, the loading histories and the contact sides (for OdeSystem::Project).
+void CommitBelts(const Model& model, Data& data);
 
 // The strain at which the belt's webbing function first reaches `tension`; -1 when it does not
 // within a strain of 1.

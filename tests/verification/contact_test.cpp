@@ -115,6 +115,8 @@ TEST_P(ContactVerification, FirstContactImpulseReboundsWithTheRestitution) {
   EXPECT_LT(worst_z, 1e-8);
   EXPECT_LT(worst_v, 1e-8);
   EXPECT_EQ(stats.events, 2);
+  // The energy balance books each impulse's loss, (1 - e^2) of the kinetic energy it met.
+  EXPECT_NEAR(data.energy.impulses, -0.5 * (1 - e * e) * (v1 * v1 + e * e * v1 * v1), 1e-8);
 }
 
 TEST_P(ContactVerification, EnergyLossGivesTheSquareRootRestitution) {
@@ -133,6 +135,9 @@ TEST_P(ContactVerification, EnergyLossGivesTheSquareRootRestitution) {
     ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, {0.05},
                          [&](const runtime::Data& d) { speed = Velocity(d).z(); }));
     EXPECT_NEAR(speed, 0.8 * 2.0, 1e-4) << set;
+    // The work the contact absorbed (its power integrated with the state) is the kinetic energy
+    // the sphere lost.
+    EXPECT_NEAR(data.energy.Absorbed(), 0.5 * (2.0 * 2.0 - speed * speed), 1e-7) << set;
     // The deflection left behind: set * the largest, which k delta^2 / 2 = m v^2 / 2 gives.
     EXPECT_NEAR(data.contacts.history[0].max_deflection, 2.0 / std::sqrt(1e5), 1e-4 * 0.0063)
         << set;
@@ -208,6 +213,9 @@ TEST_P(ContactVerification, SlidingBlockStopsAfterTheCoulombDistance) {
   EXPECT_NEAR(x_end, distance, 1e-4);
   // What is left is the spin the friction torque gave it, r w = 5e-6 m/s, rolling on.
   EXPECT_NEAR(v_end, 0.0, 1e-5);
+  // Friction took the kinetic energy (the spin keeps 1e-3 * (5e-6 / 0.05)^2 / 2 of it, and the
+  // contact's spring holds the same m g / k deflection at the end as at the start).
+  EXPECT_NEAR(data.energy.Absorbed(), 0.5 * m * v * v, 1e-5);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryIntegrator, ContactVerification,

@@ -1,9 +1,11 @@
-// The energy balance's power bookkeeping at single instants: the rate of change of kinetic and
+// The energy balance (runtime/energy.h). At single instants: the rate of change of kinetic and
 // potential energy, computed from the accelerations the dynamics produced, equals the power the
-// force elements, joint characteristics and constraints deliver to the segments
-// (runtime/energy.h). No integration is involved, so the identity holds to rounding: it fails
-// if a force is applied at the wrong point, a torque is counted twice, gravity is left in, or a
-// mirror twin is weighted wrongly.
+// force elements, joint characteristics and constraints deliver to the segments; no integration
+// is involved, so the identity holds to rounding, and it fails if a force is applied at the
+// wrong point, a torque is counted twice, gravity is left in, or a mirror twin is weighted
+// wrongly. Over whole runs: the balance closes to the integration error, and its terms match
+// closed forms (a lossless spring's stored energy). contact_test.cpp checks the impulse losses
+// and the work contacts absorb against the rebound speeds.
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -129,6 +131,47 @@ TEST(EnergyPower, MirrorTwinsCountTwice) {
   initial b.shoulder_r { angles = (-25, -40, -30) deg }
 })",
                      {0.05, 0.15, 0.25});
+}
+
+TEST(EnergyBalance, FlagshipClosesWithinATenthOfAPercent) {
+  const SceneRun run = RunText(ReadExample("frontal_sled.sled"));
+  ASSERT_EQ(run.errors, "");
+  ASSERT_FALSE(run.summary.failed) << run.summary.failure.cause;
+  const runtime::EnergySummary& energy = run.summary.energy;
+  EXPECT_LT(energy.relative(), 1e-3) << energy.largest_residual << " J of " << energy.scale;
+  // The sled brings the occupant to 56 km/h: the prescribed motion does work, and the belts,
+  // contacts and joints absorb part of it.
+  EXPECT_GT(energy.prescribed_work, 0.5 * 77 * 15.5 * 15.5);
+  EXPECT_GT(energy.absorbed, 0.0);
+}
+
+TEST(EnergyBalance, ALosslessSpringStoresWhatItAbsorbs) {
+  // A bob hangs from a sled on a linear spring; the sled is pulsed sideways. Nothing dissipates,
+  // so the absorbed work is the spring's energy F^2 / (2 k) at every row, while the sled's work
+  // goes into the bob's motion.
+  for (const std::string& method : AllIntegrators()) {
+    const SceneRun run = RunText(R"(scenario "bob on a spring" {
+  time { end = 150 ms  output_every = 1 ms }
+  integrator )" + method + R"( { tolerance = 1e-8 }
+  vehicle sled { motion = half_sine(delta_v = 30 km/h, duration = 80 ms, axis = -x) }
+  body bob { segment mass { mass = 2 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 } }
+  spring hanger : sled -> bob.mass {
+    at sled = (0, 0, 1) m
+    at bob.mass = (0, 0, 0) m
+    stiffness = 2 kN/m
+    free_length = 500 mm
+  }
+  initial bob { position = (0, 0, 0.5) m }
+  output { spring_force hanger }
+})");
+    ASSERT_EQ(run.errors, "");
+    ASSERT_FALSE(run.summary.failed) << run.summary.failure.cause;
+    const runtime::EnergySummary& energy = run.summary.energy;
+    const double force = run.series.values.back();  // the last row's spring force
+    EXPECT_NEAR(energy.absorbed, force * force / (2 * 2000.0), 1e-6 * energy.scale) << method;
+    EXPECT_LT(energy.relative(), 1e-6) << method;
+    EXPECT_GT(energy.prescribed_work, 1.0) << method;
+  }
 }
 
 }  // namespace
