@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <klu.h>
 
+#include "runtime/archive.h"
 #include "runtime/dynamics.h"
 #include "runtime/joint.h"
 #include "runtime/mass_matrix.h"
@@ -19,6 +20,9 @@ struct KluSolver {
   klu_symbolic* symbolic = nullptr;
   klu_numeric* numeric = nullptr;
   double factored_rcond = 0.0;  // klu_rcond just after the last fresh factorization
+  // The KKT values of the last fresh factorization: its pivots are what every refactorization
+  // reuses, so a checkpoint keeps them to make the same factorization again.
+  std::vector<double> factored_values;
 };
 
 void KluSolverDeleter::operator()(KluSolver* solver) const {
@@ -326,6 +330,7 @@ bool Factor(const Model& model, ConstraintWorkspace& w, Failure* failure) {
                   "that fight each other)");
     }
     klu.factored_rcond = klu.common.rcond;
+    klu.factored_values = w.kkt_value;  // same size: no allocation
   }
   return true;
 }
@@ -684,6 +689,7 @@ void SetUpConstraints(const Model& model, Data& data) {
     w.kkt_pointer[j + 1] = static_cast<std::int32_t>(w.kkt_index.size());
   }
   w.kkt_value.assign(w.kkt_index.size(), 0.0);
+  w.solver->factored_values.assign(w.kkt_index.size(), 0.0);
 
   w.mass = Eigen::MatrixXd::Zero(model.nv, model.nv);
   w.jacobian = Eigen::MatrixXd::Zero(rows, model.nv);
@@ -814,6 +820,21 @@ bool ProjectConstraints(const Model& model, Data& data, double t, std::span<doub
     std::copy(data.v.begin(), data.v.end(), y.begin() + static_cast<std::ptrdiff_t>(nq));
   }
   return true;
+}
+
+void SerializeConstraints(Archive& archive, ConstraintWorkspace& w) {
+  KluSolver& klu = *w.solver;
+  archive.Field(w.setup_failed);
+  archive.Field(klu.factored_rcond);
+  archive.Field(klu.factored_values);
+  bool factored = klu.numeric != nullptr;
+  archive.Field(factored);
+  if (!archive.reading() || !archive.ok() || klu.symbolic == nullptr) return;
+  if (klu.numeric != nullptr) klu_free_numeric(&klu.numeric, &klu.common);
+  if (factored) {
+    klu.numeric = klu_factor(w.kkt_pointer.data(), w.kkt_index.data(), klu.factored_values.data(),
+                             klu.symbolic, &klu.common);
+  }
 }
 
 }  // namespace sled::runtime

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/checkpoint.h"
 #include "runtime/dynamics.h"
 #include "runtime/energy.h"
 #include "runtime/integrate/make_integrator.h"
@@ -39,7 +40,19 @@ void AppendRow(const Model& model, Data& data, TimeSeries& series) {
                    std::span<double>(series.values).subspan(start + 1, series.columns - 1));
 }
 
+// Everything of a run that a checkpoint carries besides the rows, in one listing for both
+// directions.
+void SerializeRunState(Archive& archive, Integrator& integrator, Data& data,
+                       double& initial_potential, EnergySummary& energy) {
+  integrator.Serialize(archive);
+  SerializeData(archive, data);
+  archive.Field(initial_potential);
+  archive.Field(energy);
+}
+
 }  // namespace
+
+std::string CheckpointFileName(double time) { return fmt::format("checkpoint_{:.6f}s.bin", time); }
 
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
@@ -53,6 +66,9 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       static_cast<std::size_t>(std::floor((model.end_time - model.start_time) / step + 1e-9)) + 1;
   series.values.clear();
   series.values.reserve(outputs * series.columns);
+  // Checkpoints fall on output rows: every `checkpoint_rows` rows.
+  const auto checkpoint_rows = static_cast<std::size_t>(
+      options.checkpoint_every > 0 ? std::llround(options.checkpoint_every / step) : 0);
 
   auto integrator = MakeIntegrator(model.integrator);
   if (!integrator) {
@@ -72,20 +88,42 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   integrator_options.initial_step = model.initial_step;
   integrator->Reset(system, data.time, y, integrator_options);
 
-  // The first row: the initial state.
   Failure failure;
   double initial_potential = 0.0;
-  if (!Forward(model, data, &failure)) {
-    summary.failed = true;
-    summary.failure = failure;
-    summary.failure.time = data.time;
-  } else {
+  std::size_t first_row = 1;
+  if (options.resume != nullptr) {
+    // Continue where the checkpoint stopped: its integrator and Data, and its rows when the
+    // channels are the same (otherwise the rows start again at the checkpoint).
+    const Checkpoint& checkpoint = *options.resume;
+    Archive archive = Archive::ForReading(checkpoint.state);
+    SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
+    if (!archive.ok() || !archive.at_end()) {
+      summary.failed = true;
+      summary.failure.cause = "the checkpoint's state does not fit this model";
+      return summary;
+    }
+    first_row = static_cast<std::size_t>(checkpoint.next_row);
+    if (checkpoint.series.names == series.names) {
+      series.values.assign(checkpoint.series.values.begin(), checkpoint.series.values.end());
+    } else if (Forward(model, data, &failure)) {
+      summary.notes.push_back(fmt::format(
+          "the output requests differ from the checkpoint's: the rows start at {} s", data.time));
+      AppendRow(model, data, series);
+    }
+  } else if (Forward(model, data, &failure)) {
+    // The first row: the initial state.
     initial_potential = PotentialEnergy(model, data);
     data.energy.initial = KineticEnergy(model, data) + initial_potential;
     UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
   }
-  for (std::size_t k = 1; k < outputs && !summary.failed; ++k) {
+  if (!failure.cause.empty()) {
+    summary.failed = true;
+    summary.failure = failure;
+    summary.failure.time = data.time;
+  }
+
+  for (std::size_t k = first_row; k < outputs && !summary.failed; ++k) {
     const double target = model.start_time + static_cast<double>(k) * step;
     const AdvanceResult result = integrator->Advance(std::min(target, model.end_time));
     system.Load(integrator->time(), integrator->state());
@@ -104,6 +142,25 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     }
     UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
+    if (checkpoint_rows > 0 && k % checkpoint_rows == 0 && k + 1 < outputs) {
+      Checkpoint checkpoint;
+      checkpoint.model = FingerprintOf(model);
+      checkpoint.time = data.time;
+      checkpoint.next_row = static_cast<std::int64_t>(k + 1);
+      checkpoint.series = series;
+      Archive archive = Archive::ForWriting();
+      SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
+      checkpoint.state = archive.bytes();
+      const std::string path = options.checkpoint_directory + "/" + CheckpointFileName(data.time);
+      std::string error;
+      if (!WriteCheckpoint(path, checkpoint, &error)) {
+        summary.failed = true;
+        summary.failure.cause = error;
+        summary.failure.time = data.time;
+        break;
+      }
+      summary.checkpoints.push_back(path);
+    }
     if (options.progress)
       options.progress(static_cast<double>(k) / static_cast<double>(outputs - 1),
                        options.progress_context);

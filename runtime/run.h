@@ -40,13 +40,26 @@ struct RunSummary {
   Failure failure;
   double end_time = 0.0;  // where the run stopped
   EnergySummary energy;
+  std::vector<std::string> checkpoints;  // files written
+  std::vector<std::string> notes;        // what the user should know (a resume's changes)
 };
+
+struct Checkpoint;  // runtime/checkpoint.h
 
 struct RunOptions {
   // Called after each output row, e.g. to show progress; may be empty.
   void (*progress)(double fraction, void* context) = nullptr;
   void* progress_context = nullptr;
+  // A checkpoint every this many seconds of simulated time (a multiple of the output step; the
+  // caller checks), into checkpoint_directory, named by CheckpointFileName; 0: none.
+  double checkpoint_every = 0.0;
+  std::string checkpoint_directory = ".";
+  // Continue from this checkpoint (its fingerprint already checked against the Model).
+  const Checkpoint* resume = nullptr;
 };
+
+// `checkpoint_<time>s.bin`, with the time to the microsecond.
+std::string CheckpointFileName(double time);
 
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options = {});
 

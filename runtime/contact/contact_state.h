@@ -46,6 +46,21 @@ struct ContactState {
   // --- Impulse workspace: the velocity response to a unit contact impulse and a saved velocity.
   std::vector<double> response;
   std::vector<double> saved_v;
+
+  // What carries from one evaluation to the next, for checkpoints (runtime/archive.h): the
+  // committed histories, and the last evaluation's values (warm starts, outputs).
+  template <class Archive>
+  void Serialize(Archive& a) {
+    a.Field(deflection);
+    a.Field(gap);
+    a.Field(normal_force);
+    a.Field(force);
+    a.Field(point);
+    a.Field(normal);
+    a.Field(search_direction);
+    a.Field(history);
+    a.Field(engaged);
+  }
 };
 
 void SizeContactState(const Model& model, ContactState& state);

@@ -1,5 +1,7 @@
 #include "runtime/integrate/adaptive_integrator.h"
 
+#include "runtime/archive.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -29,6 +31,18 @@ constexpr double kLandingStretch = 1.01;
 constexpr double kLookAheadTolerances = 10.0;
 
 }  // namespace
+
+void AdaptiveIntegrator::Serialize(Archive& archive) {
+  archive.Field(t_);
+  archive.Field(y_);
+  archive.Field(f0_);
+  archive.Field(h_);
+  archive.Field(restart_pending_);
+  archive.Field(stats_);
+  controller_.Serialize(archive);
+  events_.Serialize(archive);
+  SerializeHistory(archive);
+}
 
 double AdaptiveIntegrator::ErrorNorm(std::span<const double> error) const {
   return WeightedRmsNorm(error.first(controlled_), std::span<const double>(y_).first(controlled_),
@@ -119,7 +133,8 @@ double AdaptiveIntegrator::EventTolerance() const {
 double AdaptiveIntegrator::InitialStep() {
   // dopri5.f HINIT: a step whose Euler increment is 1% of the state, then refined by a second
   // derivative estimate so that h^order * max(|f|, |f'|) is about 0.01 in the weighted norm.
-  const std::size_t n = y_.size();
+  // Measured on the controlled components only, as the error test is.
+  const std::size_t n = controlled_;
   const double rtol = options_.relative_tolerance;
   const double atol = options_.absolute_tolerance;
   // With atol = 0 a zero component would have weight 0; the smallest normal double stands in.
@@ -137,7 +152,7 @@ double AdaptiveIntegrator::InitialStep() {
   if (!(h > 0.0) || !std::isfinite(h)) h = 1e-6;
   h = std::min(h, MaxStep());
   // y1_ and f1_ are free between steps: use them for the trial Euler step.
-  for (std::size_t i = 0; i < n; ++i) y1_[i] = y_[i] + h * f0_[i];
+  for (std::size_t i = 0; i < y_.size(); ++i) y1_[i] = y_[i] + h * f0_[i];
   if (!Evaluate(t_ + h, y1_, f1_) || !AllFinite(f1_)) return h;
   double der2 = 0.0;
   for (std::size_t i = 0; i < n; ++i) {

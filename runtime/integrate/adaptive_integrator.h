@@ -30,6 +30,7 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::span<const double> state() const final { return y_; }
   std::span<double> mutable_state() final;
   const IntegratorStats& stats() const final { return stats_; }
+  void Serialize(Archive& archive) final;
 
   // The step size the next step will try (after Reset: 0 until the first Advance chooses one).
   double step_size() const { return h_; }
@@ -51,6 +52,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // True when TryStep also leaves f(t_ + h, y1_) in f1_ (FSAL); otherwise the loop evaluates it
   // after the error test passes, and it becomes the next step's f0_.
   virtual bool HasEndDerivative() const { return false; }
+  // What the method itself carries between steps (decay rates, a Jacobian), for Serialize.
+  virtual void SerializeHistory(Archive& archive) { (void)archive; }
   // Told after each accepted or rejected attempt.
   virtual void StepAccepted() {}
   virtual void StepRejected() {}

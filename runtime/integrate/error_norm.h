@@ -36,6 +36,13 @@ class StepSizeController {
   // Forgets the error history (after an event or an external state change).
   void Restart();
 
+  // Its memory of the last error, for checkpoints (runtime/archive.h).
+  template <class Archive>
+  void Serialize(Archive& archive) {
+    archive.Field(previous_error_);
+    archive.Field(last_rejected_);
+  }
+
   // The next step after an accepted step of size h with weighted error `error` (<= 1).
   double Accepted(double h, double error);
   // A smaller step after a rejected step of size h with weighted error `error` (> 1, or NaN).

@@ -57,6 +57,15 @@ class EventLocator {
   // No event in the step: the end values become the next step's start values.
   void Advance();
 
+  // What it carries between steps, for checkpoints (runtime/archive.h).
+  template <class Archive>
+  void Serialize(Archive& archive) {
+    archive.Field(g_start_);
+    archive.Field(g_end_);
+    archive.Field(crossing_);
+    archive.Field(settle_);
+  }
+
  private:
   // Index of the component whose secant root on [lo, hi] comes first, or -1 if none changes sign.
   long EarliestCrossing(std::span<const double> g_low, std::span<const double> g_high) const;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
 
 namespace sled::runtime {
@@ -194,6 +195,15 @@ bool ExponentialIntegrator::TryStep(double h, double* error) {
     *error = std::numeric_limits<double>::quiet_NaN();
   }
   return true;
+}
+
+void ExponentialIntegrator::SerializeHistory(Archive& archive) {
+  archive.Field(lambda_place_);
+  archive.Field(lambda_step_);
+  archive.Field(phi_half_);
+  archive.Field(phi_);
+  archive.Field(rates_known_);
+  archive.Field(step_rates_valid_);
 }
 
 void ExponentialIntegrator::StepAccepted() {

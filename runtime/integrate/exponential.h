@@ -75,6 +75,7 @@ class ExponentialIntegrator final : public AdaptiveIntegrator {
   bool HasEndDerivative() const override { return true; }  // the residual test needs it
   void StepAccepted() override;
   void StepRejected() override;
+  void SerializeHistory(Archive& archive) override;
 
  private:
   // The secant decay rate of every group from state and derivative differences, and whether

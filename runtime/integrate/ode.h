@@ -11,6 +11,8 @@
 
 namespace sled::runtime {
 
+class Archive;  // runtime/archive.h
+
 // y' = f(t, y), with events g_k(t, y) whose sign changes the integrator must locate.
 class OdeSystem {
  public:
@@ -113,6 +115,10 @@ class Integrator {
   // Lets the caller change the state between calls (an external event); restarts history.
   virtual std::span<double> mutable_state() = 0;
   virtual const IntegratorStats& stats() const = 0;
+  // Writes or reads (archive.reading()) everything the method carries from one step to the
+  // next, after Reset with the same system and options: a run restored from it continues bit
+  // for bit as the saved one would have.
+  virtual void Serialize(Archive& archive) = 0;
 };
 
 }  // namespace sled::runtime

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
 
 namespace sled::runtime {
@@ -161,6 +162,25 @@ bool Rosenbrock::FormJacobian(double h) {
   return true;
 }
 
+void Rosenbrock::Factor(double h) {
+  matrix_ = -jacobian_;
+  matrix_.diagonal().array() += 1.0 / (h * kGamma);
+  lu_.compute(matrix_);
+  factored_step_ = h;
+}
+
+void Rosenbrock::SerializeHistory(Archive& archive) {
+  archive.Field(jacobian_);
+  archive.Field(time_derivative_);
+  archive.Field(jacobian_valid_);
+  archive.Field(jacobian_at_current_point_);
+  archive.Field(jacobian_age_);
+  archive.Field(jacobian_step_);
+  archive.Field(factored_step_);
+  // The factorization follows from the Jacobian and the step: the same one, made again.
+  if (archive.reading() && archive.ok() && factored_step_ != 0.0) Factor(factored_step_);
+}
+
 bool Rosenbrock::TryStep(double h, double* error) {
   const std::size_t n = y_.size();
   const bool step_changed_much =
@@ -171,11 +191,8 @@ bool Rosenbrock::TryStep(double h, double* error) {
     if (!FormJacobian(h)) return false;
   }
   if (factored_step_ != h) {
-    matrix_ = -jacobian_;
-    matrix_.diagonal().array() += 1.0 / (h * kGamma);
-    lu_.compute(matrix_);
+    Factor(h);
     ++mutable_stats().factorizations;
-    factored_step_ = h;
   }
 
   const Eigen::Map<const Eigen::VectorXd> y0(y_.data(), static_cast<Eigen::Index>(n));

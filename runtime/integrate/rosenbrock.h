@@ -64,11 +64,14 @@ class Rosenbrock final : public AdaptiveIntegrator {
   bool TryStep(double h, double* error) override;
   void StepAccepted() override;
   void StepRejected() override;
+  void SerializeHistory(Archive& archive) override;
   double AdjustStep(double proposed, double current) const override;
 
  private:
   // Forms the Jacobian and f_t at (t_, y_) (f0_ is f there). False if Derivative failed.
   bool FormJacobian(double h);
+  // W = 1/(h gamma) I - J, factored.
+  void Factor(double h);
 
   Eigen::MatrixXd jacobian_;
   Eigen::MatrixXd matrix_;  // 1/(h gamma) I - J

@@ -52,6 +52,34 @@ struct BeltState {
   std::vector<Eigen::Vector3d> end_anchor_force;
 
   std::int64_t slip_sweeps = 0;  // Gauss-Seidel sweeps of the slip solver, for tests
+
+  // Every field, for checkpoints (runtime/archive.h): the committed histories matter, and the
+  // last evaluation's values are warm starts.
+  template <class Archive>
+  void Serialize(Archive& a) {
+    a.Field(junction_ratio);
+    a.Field(rest_length);
+    a.Field(committed_rest_length);
+    a.Field(history);
+    a.Field(length);
+    a.Field(tension);
+    a.Field(start);
+    a.Field(end);
+    a.Field(entry);
+    a.Field(exit);
+    a.Field(arc);
+    a.Field(turning);
+    a.Field(contact);
+    a.Field(middle);
+    a.Field(tangent);
+    a.Field(side);
+    a.Field(committed_side);
+    a.Field(committed_middle);
+    a.Field(committed_contact);
+    a.Field(start_anchor_force);
+    a.Field(end_anchor_force);
+    a.Field(slip_sweeps);
+  }
 };
 
 }  // namespace sled::runtime
