@@ -689,7 +689,6 @@ void SetUpConstraints(const Model& model, Data& data) {
     w.kkt_pointer[j + 1] = static_cast<std::int32_t>(w.kkt_index.size());
   }
   w.kkt_value.assign(w.kkt_index.size(), 0.0);
-  w.solver->factored_values.assign(w.kkt_index.size(), 0.0);
 
   w.mass = Eigen::MatrixXd::Zero(model.nv, model.nv);
   w.jacobian = Eigen::MatrixXd::Zero(rows, model.nv);
@@ -714,6 +713,7 @@ void SetUpConstraints(const Model& model, Data& data) {
   // The symbolic analysis, once: BTF, then AMD on each block.
   w.solver.reset(new KluSolver);
   KluSolver& klu = *w.solver;
+  klu.factored_values.assign(w.kkt_value.size(), 0.0);
   klu_defaults(&klu.common);
   klu.symbolic =
       klu_analyze(static_cast<int>(size), w.kkt_pointer.data(), w.kkt_index.data(), &klu.common);
