@@ -88,6 +88,12 @@ std::vector<std::string> ChannelNames(const Model& model) {
 }
 
 std::size_t ChannelCount(const Model& model, std::size_t group) {
+  if (model.output_kind[group] == Model::OutputKind::kBeltForce) {
+    // Each span's tension, then the force on the first and the last anchor (x, y, z each).
+    return static_cast<std::size_t>(
+               model.belts.span_count(static_cast<std::size_t>(model.output_index[group]))) +
+           6;
+  }
   return GroupOf(model, group).components.size();
 }
 

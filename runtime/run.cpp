@@ -52,6 +52,13 @@ void SerializeRunState(Archive& archive, Integrator& integrator, Data& data,
 
 }  // namespace
 
+std::size_t OutputRowCount(const Model& model) {
+  const double step =
+      model.output_every > 0 ? model.output_every : model.end_time - model.start_time;
+  return static_cast<std::size_t>(std::floor((model.end_time - model.start_time) / step + 1e-9)) +
+         1;
+}
+
 std::string CheckpointFileName(double time) { return fmt::format("checkpoint_{:.6f}s.bin", time); }
 
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options) {
@@ -62,8 +69,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   series.columns = 1 + series.names.size();
   const double step =
       model.output_every > 0 ? model.output_every : model.end_time - model.start_time;
-  const auto outputs =
-      static_cast<std::size_t>(std::floor((model.end_time - model.start_time) / step + 1e-9)) + 1;
+  const std::size_t outputs = OutputRowCount(model);
   series.values.clear();
   series.values.reserve(outputs * series.columns);
   // Checkpoints fall on output rows: every `checkpoint_rows` rows.
@@ -88,7 +94,33 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   integrator_options.initial_step = model.initial_step;
   integrator->Reset(system, data.time, y, integrator_options);
 
+  // Integrates to t and evaluates the state there; false (and the summary says why) on failure.
   Failure failure;
+  auto fail = [&](const Failure& why, double t) {
+    summary.failed = true;
+    summary.failure = why;
+    summary.failure.time = t;
+  };
+  auto fail_because = [&](std::string cause, double t) {
+    Failure why;
+    why.cause = std::move(cause);
+    fail(why, t);
+  };
+  auto advance_to = [&](double t) {
+    const AdvanceResult result = integrator->Advance(t);
+    system.Load(integrator->time(), integrator->state());
+    if (result.status != IntegratorStatus::kOk) {
+      fail(system.failure(), result.t);
+      if (summary.failure.cause.empty()) summary.failure.cause = result.reason;
+      return false;
+    }
+    if (!Forward(model, data, &failure)) {
+      fail(failure, data.time);
+      return false;
+    }
+    return true;
+  };
+
   double initial_potential = 0.0;
   std::size_t first_row = 1;
   if (options.resume != nullptr) {
@@ -98,8 +130,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     Archive archive = Archive::ForReading(checkpoint.state);
     SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
     if (!archive.ok() || !archive.at_end()) {
-      summary.failed = true;
-      summary.failure.cause = "the checkpoint's state does not fit this model";
+      fail_because("the checkpoint's state does not fit this model", data.time);
       return summary;
     }
     first_row = static_cast<std::size_t>(checkpoint.next_row);
@@ -109,6 +140,8 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       summary.notes.push_back(fmt::format(
           "the output requests differ from the checkpoint's: the rows start at {} s", data.time));
       AppendRow(model, data, series);
+    } else {
+      fail(failure, data.time);
     }
   } else if (Forward(model, data, &failure)) {
     // The first row: the initial state.
@@ -116,32 +149,44 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     data.energy.initial = KineticEnergy(model, data) + initial_potential;
     UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
-  }
-  if (!failure.cause.empty()) {
-    summary.failed = true;
-    summary.failure = failure;
-    summary.failure.time = data.time;
+    if (options.observer) options.observer->OnRow(model, data);
+  } else {
+    fail(failure, data.time);
   }
 
+  // The stop times at the current time (they coincide with an output row or the start).
+  const std::vector<double>& stops = options.stop_times;
+  auto same_time = [](double a, double b) {
+    return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
+  };
+  std::size_t next_stop = 0;
+  while (next_stop < stops.size() && stops[next_stop] < data.time &&
+         !same_time(stops[next_stop], data.time)) {
+    ++next_stop;  // before the start: never reached
+  }
+  auto at_stop = [&](double t) {
+    return next_stop < stops.size() && same_time(stops[next_stop], t);
+  };
+  auto observe_stops_here = [&] {
+    for (; at_stop(data.time); ++next_stop) {
+      if (options.observer) options.observer->OnStop(model, data);
+    }
+  };
+  if (!summary.failed && options.resume == nullptr) observe_stops_here();
+
   for (std::size_t k = first_row; k < outputs && !summary.failed; ++k) {
-    const double target = model.start_time + static_cast<double>(k) * step;
-    const AdvanceResult result = integrator->Advance(std::min(target, model.end_time));
-    system.Load(integrator->time(), integrator->state());
-    if (result.status != IntegratorStatus::kOk) {
-      summary.failed = true;
-      summary.failure = system.failure();
-      summary.failure.time = result.t;
-      if (summary.failure.cause.empty()) summary.failure.cause = result.reason;
-      break;
+    const double target =
+        std::min(model.start_time + static_cast<double>(k) * step, model.end_time);
+    // Stop times before this row: the integrator lands on each of them.
+    while (next_stop < stops.size() && stops[next_stop] < target && !at_stop(target)) {
+      if (!advance_to(stops[next_stop])) break;
+      observe_stops_here();
     }
-    if (!Forward(model, data, &failure)) {
-      summary.failed = true;
-      summary.failure = failure;
-      summary.failure.time = data.time;
-      break;
-    }
+    if (summary.failed || !advance_to(target)) break;
     UpdateEnergy(model, data, initial_potential, summary.energy);
     AppendRow(model, data, series);
+    if (options.observer) options.observer->OnRow(model, data);
+    observe_stops_here();
     if (checkpoint_rows > 0 && k % checkpoint_rows == 0 && k + 1 < outputs) {
       Checkpoint checkpoint;
       checkpoint.model = FingerprintOf(model);
@@ -154,9 +199,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       const std::string path = options.checkpoint_directory + "/" + CheckpointFileName(data.time);
       std::string error;
       if (!WriteCheckpoint(path, checkpoint, &error)) {
-        summary.failed = true;
-        summary.failure.cause = error;
-        summary.failure.time = data.time;
+        fail_because(error, data.time);
         break;
       }
       summary.checkpoints.push_back(path);

@@ -44,6 +44,15 @@ struct RunSummary {
   std::vector<std::string> notes;        // what the user should know (a resume's changes)
 };
 
+// Sees the state of the run where it stops: at each output row, and at the extra stop times.
+// Both are called after Forward, so accelerations, forces and joint wrenches are current.
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void OnRow(const Model& model, const Data& data) = 0;
+  virtual void OnStop(const Model& model, const Data& data) = 0;
+};
+
 struct Checkpoint;  // runtime/checkpoint.h
 
 struct RunOptions {
@@ -56,10 +65,20 @@ struct RunOptions {
   std::string checkpoint_directory = ".";
   // Continue from this checkpoint (its fingerprint already checked against the Model).
   const Checkpoint* resume = nullptr;
+  // Sees each output row and stop time (the animation, the state dumps); may be null. A resumed
+  // run shows it the rows from the checkpoint on.
+  RunObserver* observer = nullptr;
+  // Increasing times inside [start, end] where the integrator lands exactly, as on output times,
+  // and the observer's OnStop sees the state (they add no output row); times outside the run are
+  // never reached.
+  std::vector<double> stop_times;
 };
 
 // `checkpoint_<time>s.bin`, with the time to the microsecond.
 std::string CheckpointFileName(double time);
+
+// The rows a complete run writes: the start, then one per output step up to the end.
+std::size_t OutputRowCount(const Model& model);
 
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options = {});
 

@@ -34,8 +34,9 @@ commands:
   check FILE...        parse, check and lint scenarios; print diagnostics
   fmt FILE... [--check]
                        rewrite files in canonical form (--check: only report)
-  run FILE [-o DIR]    compile and simulate; write DIR/timeseries.csv and DIR/summary.json
-                       (DIR defaults to FILE's name with `-out`); exit 3 on a numerical
+  run FILE [-o DIR]    compile and simulate; write into DIR timeseries.csv,
+                       timeseries_filtered.csv, summary.json and animation.glb (DIR
+                       defaults to FILE's name with `-out`); exit 3 on a numerical
                        failure, keeping the outputs up to it
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
@@ -48,6 +49,14 @@ options for check and run:
   --dump-checked               print the checked scenario
   --dump-model                 print the compiled runtime model (and, on standard error,
                                what it leaves out)
+
+options for run:
+  -o, --output DIR             the output folder
+  --format csv|iso-mme         iso-mme: also write the ISO-MME data set into DIR/iso-mme
+                               (csv, the default, is always written)
+  --dump-at T[,T...]           write every state variable and force at each time T (seconds,
+                               or with ms: 0.05,80ms) into DIR/dump_<T>.txt; the integrator
+                               stops exactly there
 )";
 
 struct Options {
@@ -62,6 +71,8 @@ struct Options {
   std::string stdlib;
   std::string output_directory;
   std::vector<std::pair<std::string, std::string>> overrides;
+  bool iso_mme = false;
+  std::vector<double> dump_times;
 };
 
 int UsageError(const std::string& message) {
@@ -222,6 +233,13 @@ int main(int argc, char** argv) {
     } else if (arg == "-o" || arg == "--output") {
       if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a folder", arg));
       options.output_directory = args[++i];
+    } else if (arg == "--format" || arg == "--dump-at") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
+      std::string error;
+      const bool parsed =
+          arg == "--format" ? sled::driver::ParseFormats(args[++i], &options.iso_mme, &error)
+                            : sled::driver::ParseDumpTimes(args[++i], &options.dump_times, &error);
+      if (!parsed) return UsageError(error);
     } else if (arg == "--stdlib" || arg == "--set") {
       if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
       const std::string& value = args[++i];
@@ -254,6 +272,8 @@ int main(int argc, char** argv) {
       run.compact_diagnostics = options.compact;
       run.color = ColorWanted();
       run.progress = isatty(STDERR_FILENO) != 0;
+      run.iso_mme = options.iso_mme;
+      run.dump_times = options.dump_times;
       return sled::driver::RunCommand(run);
     }
   } catch (const std::exception& error) {

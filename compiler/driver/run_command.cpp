@@ -1,5 +1,9 @@
 #include "compiler/driver/run_command.h"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +14,10 @@
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
+#include "runtime/export/animation_glb.h"
+#include "runtime/export/animation_recorder.h"
+#include "runtime/export/iso_mme_writer.h"
+#include "runtime/export/state_dump.h"
 #include "runtime/output_writer.h"
 #include "runtime/post/channel_filters.h"
 #include "runtime/post/injury_criteria.h"
@@ -20,7 +28,48 @@ namespace {
 
 constexpr int kExitOk = 0;
 constexpr int kExitInputErrors = 1;
+constexpr int kExitUsage = 2;
 constexpr int kExitNumericalFailure = 3;
+
+// What `sled run` does where the run stops: records an animation frame at each output row and
+// writes the state printout at each dump time.
+class RunRecorder : public runtime::RunObserver {
+ public:
+  RunRecorder(runtime::AnimationRecorder& animation, std::filesystem::path directory)
+      : animation_(animation), directory_(std::move(directory)) {}
+
+  void OnRow(const runtime::Model& model, const runtime::Data& data) override {
+    (void)model;
+    animation_.Record(data);
+  }
+  void OnStop(const runtime::Model& model, const runtime::Data& data) override {
+    const std::filesystem::path path = directory_ / runtime::StateDumpFileName(data.time);
+    std::string error;
+    if (runtime::WriteStateDump(path.string(), model, data, &error)) {
+      written_.push_back(path.string());
+    } else {
+      errors_.push_back(error);
+    }
+  }
+  const std::vector<std::string>& written() const { return written_; }
+  const std::vector<std::string>& errors() const { return errors_; }
+
+ private:
+  runtime::AnimationRecorder& animation_;
+  std::filesystem::path directory_;
+  std::vector<std::string> written_;
+  std::vector<std::string> errors_;
+};
+
+// The ISO-MME test name: the scene file's stem with characters other than letters, digits, `-`
+// and `_` replaced by `_`.
+std::string TestName(const std::string& file) {
+  std::string name = std::filesystem::path(file).stem().string();
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  }
+  return name.empty() ? "sled" : name;
+}
 
 void PrintDiagnostics(const lang::SourceManager& sources, lang::DiagnosticCollector& collector,
                       const RunCommandOptions& options) {
@@ -56,6 +105,48 @@ void PrintCriteria(const std::vector<runtime::post::CriterionValue>& criteria) {
 
 }  // namespace
 
+bool ParseFormats(const std::string& text, bool* iso_mme, std::string* error) {
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string format = text.substr(start, comma - start);
+    if (format == "iso-mme") {
+      *iso_mme = true;
+    } else if (format != "csv") {
+      *error =
+          fmt::format("`--format {}`: unknown format `{}`; write csv or iso-mme", text, format);
+      return false;
+    }
+    start = comma + 1;
+  }
+  return true;
+}
+
+bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error) {
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    double value = 0.0;
+    const auto [end, status] = std::from_chars(item.data(), item.data() + item.size(), value);
+    const std::string unit(end, item.data() + item.size());
+    const double scale = unit.empty() || unit == "s" ? 1.0 : unit == "ms" ? 1e-3 : 0.0;
+    if (item.empty() || status != std::errc() || scale == 0.0 || !std::isfinite(value) ||
+        value < 0) {
+      *error = fmt::format(
+          "`--dump-at {}`: `{}` is not a time; write times in seconds or with ms, separated by "
+          "commas (0.05,80ms)",
+          text, item);
+      return false;
+    }
+    times->push_back(value * scale);
+    start = comma + 1;
+  }
+  std::sort(times->begin(), times->end());
+  times->erase(std::unique(times->begin(), times->end()), times->end());
+  return true;
+}
+
 int RunCommand(const RunCommandOptions& options) {
   lang::SourceManager sources;
   lang::DiagnosticCollector collector;
@@ -77,6 +168,16 @@ int RunCommand(const RunCommandOptions& options) {
   compiler::Lowered lowered = compiler::Lower(scenario, sources, lower_options);
   for (const std::string& note : lowered.notes) std::cerr << note << '\n';
 
+  const runtime::Model& model = lowered.model;
+  for (const double t : options.dump_times) {
+    if (t < model.start_time - 1e-12 || t > model.end_time + 1e-12) {
+      std::cerr << fmt::format(
+          "sled: `--dump-at`: {} s is outside the run, which goes from {} s to {} s\n", t,
+          model.start_time, model.end_time);
+      return kExitUsage;
+    }
+  }
+
   std::string directory = options.output_directory;
   if (directory.empty()) directory = std::filesystem::path(options.file).stem().string() + "-out";
   std::error_code error;
@@ -88,13 +189,16 @@ int RunCommand(const RunCommandOptions& options) {
 
   runtime::Data data = runtime::MakeData(lowered.model);
   runtime::TimeSeries series;
+  runtime::AnimationRecorder animation(model, runtime::OutputRowCount(model));
+  RunRecorder recorder(animation, directory);
   runtime::RunOptions run_options;
   if (options.progress) run_options.progress = ShowProgress;
+  run_options.observer = &recorder;
+  run_options.stop_times = options.dump_times;
   runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
   if (options.progress) std::fprintf(stderr, "\r%30s\r", "");
   // Name the scenario line of the segment or joint that failed.
   if (summary.failed) {
-    const runtime::Model& model = lowered.model;
     for (std::size_t s = 0; s < model.nsegment(); ++s) {
       if (model.segment_name[s] == summary.failure.where) {
         summary.failure.source = model.segment_source[s];
@@ -123,9 +227,19 @@ int RunCommand(const RunCommandOptions& options) {
        runtime::WriteTimeSeriesCsv((out / "timeseries_filtered.csv").string(), filtered.series,
                                    &write_error)) &&
       runtime::WriteSummaryJson((out / "summary.json").string(), lowered.model, series, summary,
-                                warnings, &write_error, criteria);
-  if (!written) {
-    std::cerr << "sled: " << write_error << '\n';
+                                warnings, &write_error, criteria) &&
+      runtime::WriteAnimationGlb((out / "animation.glb").string(), model, animation,
+                                 &write_error) &&
+      (!options.iso_mme ||
+       runtime::WriteIsoMme((out / "iso-mme").string(), TestName(options.file), model, series,
+                            filtered.series, criteria, &write_error));
+  for (const std::string& failed : recorder.errors()) std::cerr << "sled: " << failed << '\n';
+  if (recorder.written().size() + recorder.errors().size() < options.dump_times.size()) {
+    std::cerr << fmt::format(
+        "sled: the run stopped at t = {:.6g} s, before some `--dump-at` times\n", summary.end_time);
+  }
+  if (!written || !recorder.errors().empty()) {
+    if (!written) std::cerr << "sled: " << write_error << '\n';
     return kExitInputErrors;
   }
   PrintCriteria(criteria);

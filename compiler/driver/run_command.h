@@ -1,5 +1,8 @@
-// `sled run FILE [-o DIR] [--set NAME=VALUE]...`: compile and simulate, write timeseries.csv and
-// summary.json into DIR. Exit 0 done, 1 input errors, 3 numerical failure (outputs kept).
+// `sled run FILE [-o DIR] [--set NAME=VALUE]... [--format iso-mme] [--dump-at T[,T...]]`: compile
+// and simulate; write timeseries.csv, timeseries_filtered.csv, summary.json and animation.glb
+// into DIR, with --format iso-mme also the ISO-MME data set in DIR/iso-mme, with --dump-at the
+// complete state at each time T in DIR/dump_<T>.txt. Exit 0 done, 1 input errors, 2 a dump time
+// outside the run, 3 numerical failure (outputs kept).
 #pragma once
 
 #include <string>
@@ -15,8 +18,19 @@ struct RunCommandOptions {
   std::vector<std::pair<std::string, std::string>> overrides;
   bool compact_diagnostics = false;
   bool color = false;
-  bool progress = false;  // show progress (on a terminal)
+  bool progress = false;           // show progress (on a terminal)
+  bool iso_mme = false;            // also write the ISO-MME data set
+  std::vector<double> dump_times;  // [s], increasing, no repeats
 };
+
+// The value of `--format`: a comma-separated list of csv (always written) and iso-mme. False
+// with `error` set for an unknown format.
+bool ParseFormats(const std::string& text, bool* iso_mme, std::string* error);
+
+// The value of `--dump-at`: times separated by commas, in seconds or with a unit `s` or `ms`
+// (0.05, 50ms); sorted, repeats dropped. False with `error` set for a text that is no time or a
+// negative time.
+bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error);
 
 int RunCommand(const RunCommandOptions& options);
 

@@ -1,0 +1,187 @@
+// `sled run --format iso-mme` on the flagship scene (cut to 30 ms) writes an ISO-MME data set; a
+// reader written here, apart from the writer, reads it back and checks it against
+// timeseries.csv, timeseries_filtered.csv and summary.json: the index, the 16-character codes
+// (the documented mapping for known channels), units, sample counts, the sampling interval and
+// every value.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/compiler/csv_table.h"
+#include "tests/compiler/flagship_scene.h"
+#include "tests/compiler/sled_process.h"
+
+namespace sled {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CsvTable;
+using testing::ReadCsv;
+using testing::ReadText;
+using testing::SledResult;
+using testing::WriteText;
+
+using IsoMmeExport = testing::SledProcessTest;
+
+// One ISO-MME file: the `Name(28 characters):value` header lines (a name may repeat), then the
+// lines after the header (a channel's samples).
+struct IsoFile {
+  std::multimap<std::string, std::string> fields;
+  std::vector<std::string> data;
+  std::string Get(const std::string& name) const {
+    const auto at = fields.find(name);
+    return at == fields.end() ? "<missing>" : at->second;
+  }
+};
+
+IsoFile ReadIsoFile(const fs::path& path) {
+  IsoFile file;
+  std::istringstream in(ReadText(path));
+  std::string line;
+  bool header = true;
+  while (std::getline(in, line)) {
+    if (header && line.size() > 28 && line[28] == ':') {
+      std::string name = line.substr(0, 28);
+      name.erase(name.find_last_not_of(' ') + 1);
+      file.fields.emplace(name, line.substr(29));
+      continue;
+    }
+    header = false;
+    file.data.push_back(line);
+  }
+  return file;
+}
+
+// The unit ISO-MME writes for a CSV column's unit.
+std::string IsoUnit(const std::string& csv_name) {
+  const std::string unit =
+      csv_name.substr(csv_name.find('[') + 1, csv_name.find(']') - csv_name.find('[') - 1);
+  if (unit == "m/s^2") return "m/(s*s)";
+  if (unit == "rad/s^2") return "rad/(s*s)";
+  if (unit == "N*m") return "Nm";
+  return unit;
+}
+
+std::string WithoutUnit(const std::string& name) { return name.substr(0, name.find(" [")); }
+
+double SummaryValue(const std::string& summary, const std::string& name) {
+  std::smatch match;
+  const std::regex pattern("\\{\"name\": \"" + name +
+                           "\", \"variant\": \"\"[^\\n]*\"value\": ([-0-9.eE+]+)");
+  return std::regex_search(summary, match, pattern) ? std::stod(match[1]) : std::nan("");
+}
+
+TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
+  const std::string scene = testing::FlagshipScene("30 ms");
+  ASSERT_FALSE(scene.empty());
+  WriteText(temp() / "frontal sled.sled", scene);
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled(
+      {"run", (temp() / "frontal sled.sled").string(), "-o", out.string(), "--format", "iso-mme"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+
+  // The test name is the file's stem, with the space replaced.
+  const fs::path set = out / "iso-mme";
+  const IsoFile mme = ReadIsoFile(set / "frontal_sled.mme");
+  EXPECT_EQ(mme.Get("Data format"), "ISO-MME");
+  EXPECT_EQ(mme.Get("Version"), "1.6");
+  EXPECT_EQ(mme.Get("Test number"), "frontal_sled");
+  EXPECT_TRUE(std::regex_match(mme.Get("Test date"), std::regex("\\d{4}-\\d{2}-\\d{2}")));
+
+  const CsvTable raw = ReadCsv(out / "timeseries.csv");
+  const CsvTable filtered = ReadCsv(out / "timeseries_filtered.csv");
+  const std::string summary = ReadText(out / "summary.json");
+  ASSERT_EQ(raw.rows.size(), 301u);  // 30 ms at 0.1 ms
+  ASSERT_GT(filtered.names.size(), 1u);
+  std::size_t criteria = 0;  // summary.json's criterion values, one `{"name": ` each
+  for (std::size_t at = summary.find("{\"name\": "); at != std::string::npos;
+       at = summary.find("{\"name\": ", at + 1)) {
+    ++criteria;
+  }
+
+  const IsoFile index = ReadIsoFile(set / "Channel" / "frontal_sled.chn");
+  const std::size_t channels = std::stoul(index.Get("Number of channels"));
+  EXPECT_EQ(channels, (raw.names.size() - 1) + (filtered.names.size() - 1) + criteria);
+
+  std::set<std::string> codes;
+  std::map<std::string, std::string> code_of;  // by "name/class"
+  std::size_t raw_seen = 0, filtered_seen = 0, criteria_seen = 0;
+  for (std::size_t n = 1; n <= channels; ++n) {
+    const std::string number = fmt::format("{:03}", n);
+    const std::string entry = index.Get("Name of channel " + number);
+    const IsoFile channel = ReadIsoFile(set / "Channel" / ("frontal_sled." + number));
+    const std::string code = channel.Get("Channel code");
+    SCOPED_TRACE(code + " " + entry);
+    ASSERT_TRUE(std::regex_match(code, std::regex("[0-9A-Z]{16}")));
+    EXPECT_TRUE(codes.insert(code).second) << "a repeated code";
+    const std::string name = channel.Get("Name of the channel");
+    EXPECT_EQ(entry, code + " / " + name);
+    EXPECT_EQ(channel.Get("Data source"), "calculation");
+    EXPECT_EQ(channel.Get("Reference channel"), "implicit");
+    const char filter = code[15];
+    if (filter == 'X') {  // a criterion: one sample
+      ++criteria_seen;
+      EXPECT_EQ(channel.Get("Number of samples"), "1");
+      ASSERT_EQ(channel.data.size(), 1u);
+      code_of[name] = code;
+      if (name == "hic15(occupant.head)") {
+        EXPECT_EQ(std::stod(channel.data[0]), SummaryValue(summary, "hic15"));
+      }
+      continue;
+    }
+    const bool is_raw = filter == '0';
+    const CsvTable& table = is_raw ? raw : filtered;
+    std::size_t column = table.names.size();
+    for (std::size_t c = 1; c < table.names.size(); ++c) {
+      if (WithoutUnit(table.names[c]) == name) column = c;
+    }
+    ASSERT_LT(column, table.names.size()) << "no CSV column for " << name;
+    (is_raw ? raw_seen : filtered_seen) += 1;
+    code_of[name + (is_raw ? "/raw" : "/filtered")] = code;
+    EXPECT_EQ(channel.Get("Unit"), IsoUnit(table.names[column]));
+    EXPECT_EQ(channel.Get("Sampling interval"), "0.0001");
+    EXPECT_EQ(channel.Get("Time of first sample"), "0");
+    EXPECT_EQ(channel.Get("Channel frequency class"), is_raw          ? "NOVALUE"
+                                                      : filter == 'A' ? "1000"
+                                                      : filter == 'B' ? "600"
+                                                      : filter == 'C' ? "180"
+                                                                      : "60");
+    ASSERT_EQ(std::stoul(channel.Get("Number of samples")), table.rows.size());
+    ASSERT_EQ(channel.data.size(), table.rows.size());
+    for (std::size_t row = 0; row < table.rows.size(); ++row) {
+      // Both files hold the shortest text of the same double.
+      ASSERT_EQ(std::strtod(channel.data[row].c_str(), nullptr), table.rows[row][column])
+          << "row " << row;
+    }
+  }
+  EXPECT_EQ(raw_seen, raw.names.size() - 1);
+  EXPECT_EQ(filtered_seen, filtered.names.size() - 1);
+  EXPECT_EQ(criteria_seen, criteria);
+
+  // The documented mapping (docs/outputs.md) for channels a crash engineer looks for first.
+  EXPECT_EQ(code_of["occupant.head.acceleration.x/raw"], "11HEAD000000ACX0");
+  EXPECT_EQ(code_of["occupant.head.acceleration.x/filtered"], "11HEAD000000ACXA");
+  EXPECT_EQ(code_of["occupant.thorax.acceleration.z/filtered"], "11CHST000000AC3A");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_force.z/filtered"], "11NECKUP0000FO3A");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_torque.y/filtered"], "11NECKUP0000MO2B");
+  EXPECT_EQ(code_of["occupant.upper_leg_l.buck.knee_bolster.contact_force.normal/raw"],
+            "11KNBOLE0000FO00");
+  EXPECT_EQ(code_of["three_point.lap.belt_force.span1/raw"], "11SEBE000100FO00");
+  EXPECT_EQ(code_of["hic15(occupant.head)"], "11HICR00150000RX");
+  EXPECT_EQ(code_of["nij(occupant.neck_upper)"], "11NIJC00000000RX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) cumulative"], "11HEAD00XC00ACRX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) continuous"], "11HEAD00XS00ACRX");
+}
+
+}  // namespace
+}  // namespace sled
