@@ -57,6 +57,10 @@ options for run:
   --dump-at T[,T...]           write every state variable and force at each time T (seconds,
                                or with ms: 0.05,80ms) into DIR/dump_<T>.txt; the integrator
                                stops exactly there
+  --checkpoint-every T         write a checkpoint every T (a multiple of the output step)
+                               into DIR/checkpoint_<t>s.bin
+  --resume FILE                continue from a checkpoint, bit for bit as the run that wrote
+                               it; the scene may change only its end time and output requests
 )";
 
 struct Options {
@@ -73,6 +77,8 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> overrides;
   bool iso_mme = false;
   std::vector<double> dump_times;
+  double checkpoint_every = 0.0;
+  std::string resume;
 };
 
 int UsageError(const std::string& message) {
@@ -240,6 +246,17 @@ int main(int argc, char** argv) {
           arg == "--format" ? sled::driver::ParseFormats(args[++i], &options.iso_mme, &error)
                             : sled::driver::ParseDumpTimes(args[++i], &options.dump_times, &error);
       if (!parsed) return UsageError(error);
+    } else if (arg == "--checkpoint-every") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a time", arg));
+      const std::string& value = args[++i];
+      if (!sled::driver::ParseTime(value, &options.checkpoint_every) ||
+          !(options.checkpoint_every > 0)) {
+        return UsageError(fmt::format(
+            "`--checkpoint-every {}`: write a positive time in seconds or with ms (50ms)", value));
+      }
+    } else if (arg == "--resume") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a checkpoint file", arg));
+      options.resume = args[++i];
     } else if (arg == "--stdlib" || arg == "--set") {
       if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
       const std::string& value = args[++i];
@@ -274,6 +291,8 @@ int main(int argc, char** argv) {
       run.progress = isatty(STDERR_FILENO) != 0;
       run.iso_mme = options.iso_mme;
       run.dump_times = options.dump_times;
+      run.checkpoint_every = options.checkpoint_every;
+      run.resume = options.resume;
       return sled::driver::RunCommand(run);
     }
   } catch (const std::exception& error) {

@@ -14,6 +14,7 @@
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
+#include "runtime/checkpoint.h"
 #include "runtime/export/animation_glb.h"
 #include "runtime/export/animation_recorder.h"
 #include "runtime/export/iso_mme_writer.h"
@@ -122,24 +123,32 @@ bool ParseFormats(const std::string& text, bool* iso_mme, std::string* error) {
   return true;
 }
 
+bool ParseTime(const std::string& text, double* seconds) {
+  double value = 0.0;
+  const auto [end, status] = std::from_chars(text.data(), text.data() + text.size(), value);
+  const std::string unit(end, text.data() + text.size());
+  const double scale = unit.empty() || unit == "s" ? 1.0 : unit == "ms" ? 1e-3 : 0.0;
+  if (text.empty() || status != std::errc() || scale == 0.0 || !std::isfinite(value) || value < 0) {
+    return false;
+  }
+  *seconds = value * scale;
+  return true;
+}
+
 bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error) {
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
     const std::string item = text.substr(start, comma - start);
     double value = 0.0;
-    const auto [end, status] = std::from_chars(item.data(), item.data() + item.size(), value);
-    const std::string unit(end, item.data() + item.size());
-    const double scale = unit.empty() || unit == "s" ? 1.0 : unit == "ms" ? 1e-3 : 0.0;
-    if (item.empty() || status != std::errc() || scale == 0.0 || !std::isfinite(value) ||
-        value < 0) {
+    if (!ParseTime(item, &value)) {
       *error = fmt::format(
           "`--dump-at {}`: `{}` is not a time; write times in seconds or with ms, separated by "
           "commas (0.05,80ms)",
           text, item);
       return false;
     }
-    times->push_back(value * scale);
+    times->push_back(value);
     start = comma + 1;
   }
   std::sort(times->begin(), times->end());
@@ -178,6 +187,45 @@ int RunCommand(const RunCommandOptions& options) {
     }
   }
 
+  // The scene's `restart` block, unless the command line says otherwise; a relative checkpoint
+  // file is found from the scene's folder.
+  const double checkpoint_every = options.checkpoint_every > 0
+                                      ? options.checkpoint_every
+                                      : scenario.run.checkpoint_every.value_or(0.0);
+  std::string resume = options.resume;
+  if (resume.empty() && !scenario.run.resume_from.empty()) {
+    const std::filesystem::path from(scenario.run.resume_from);
+    resume = from.is_absolute()
+                 ? from.string()
+                 : (std::filesystem::path(options.file).parent_path() / from).string();
+  }
+  if (checkpoint_every > 0) {
+    const double rows = checkpoint_every / model.output_every;
+    if (!(model.output_every > 0) || std::llround(rows) < 1 ||
+        std::abs(rows - static_cast<double>(std::llround(rows))) > 1e-9 * rows) {
+      std::cerr << fmt::format(
+          "sled: `--checkpoint-every`: {} s is not a multiple of the output step {} s; "
+          "checkpoints are taken at output rows\n",
+          checkpoint_every, model.output_every);
+      return kExitUsage;
+    }
+  }
+  runtime::Checkpoint checkpoint;
+  if (!resume.empty()) {
+    std::string why;
+    if (runtime::ReadCheckpoint(resume, &checkpoint, &why)) {
+      why = runtime::CheckpointMismatch(checkpoint, runtime::FingerprintOf(model));
+    }
+    if (why.empty() && !(checkpoint.time < model.end_time)) {
+      why = fmt::format("it is at t = {} s, not before the scene's end time {} s", checkpoint.time,
+                        model.end_time);
+    }
+    if (!why.empty()) {
+      std::cerr << fmt::format("sled: cannot resume from `{}`: {}\n", resume, why);
+      return kExitInputErrors;
+    }
+  }
+
   std::string directory = options.output_directory;
   if (directory.empty()) directory = std::filesystem::path(options.file).stem().string() + "-out";
   std::error_code error;
@@ -195,6 +243,9 @@ int RunCommand(const RunCommandOptions& options) {
   if (options.progress) run_options.progress = ShowProgress;
   run_options.observer = &recorder;
   run_options.stop_times = options.dump_times;
+  run_options.checkpoint_every = checkpoint_every;
+  run_options.checkpoint_directory = directory;
+  if (!resume.empty()) run_options.resume = &checkpoint;
   runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
   if (options.progress) std::fprintf(stderr, "\r%30s\r", "");
   // Name the scenario line of the segment or joint that failed.
@@ -214,6 +265,10 @@ int RunCommand(const RunCommandOptions& options) {
   const std::vector<runtime::post::CriterionValue> criteria =
       runtime::post::EvaluateCriteria(lowered.model, series);
   std::vector<std::string> warnings = lowered.notes;
+  for (const std::string& note : summary.notes) {
+    std::cerr << "sled: " << note << '\n';
+    warnings.push_back(note);
+  }
   for (std::string& warning : filtered.warnings) {
     std::cerr << "sled: " << warning << '\n';
     warnings.push_back(std::move(warning));

@@ -1,8 +1,10 @@
 // `sled run FILE [-o DIR] [--set NAME=VALUE]... [--format iso-mme] [--dump-at T[,T...]]`: compile
 // and simulate; write timeseries.csv, timeseries_filtered.csv, summary.json and animation.glb
 // into DIR, with --format iso-mme also the ISO-MME data set in DIR/iso-mme, with --dump-at the
-// complete state at each time T in DIR/dump_<T>.txt. Exit 0 done, 1 input errors, 2 a dump time
-// outside the run, 3 numerical failure (outputs kept).
+// complete state at each time T in DIR/dump_<T>.txt, with --checkpoint-every T a checkpoint
+// every T into DIR; --resume FILE continues from a checkpoint. Exit 0 done, 1 input errors (or a
+// checkpoint that does not fit the scene), 2 a dump time outside the run or a checkpoint step
+// that is not a multiple of the output step, 3 numerical failure (outputs kept).
 #pragma once
 
 #include <string>
@@ -21,7 +23,13 @@ struct RunCommandOptions {
   bool progress = false;           // show progress (on a terminal)
   bool iso_mme = false;            // also write the ISO-MME data set
   std::vector<double> dump_times;  // [s], increasing, no repeats
+  double checkpoint_every = 0.0;   // [s]; 0: no checkpoints
+  std::string resume;              // a checkpoint file to continue from
 };
+
+// One time in seconds or with a unit `s` or `ms` (0.05, 50ms). False for anything else or a
+// negative time.
+bool ParseTime(const std::string& text, double* seconds);
 
 // The value of `--format`: a comma-separated list of csv (always written) and iso-mme. False
 // with `error` set for an unknown format.

@@ -22,14 +22,14 @@ struct Lowered {
   runtime::Model model;
   // What the Model leaves out and why, one line each, in source order:
   // `PATH:LINE:COL: note: belt `lap` is not simulated yet; left out`. Notes about the
-  // scenario as a whole (symmetry, settling, restart) have no position: `note: ...`.
+  // scenario as a whole (symmetry, settling) have no position: `note: ...`.
   std::vector<std::string> notes;
 };
 
 // Lowers a checked scenario. The scenario must have checked without errors: a broken tree or an
 // index out of range is a programming error (std::logic_error naming the stage and the object).
 // Features the runtime does not simulate yet (airbags, the viscous criterion, airbag outputs,
-// settling, restart) and contact pairs that can never touch are left out of the Model; `notes`
+// settling) and contact pairs that can never touch are left out of the Model; `notes`
 // lists each with its source position so `sled run` can say so.
 Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
               const LowerOptions& options);

@@ -267,14 +267,6 @@ void NoteLeftOut(Lowering& lowering) {
                      "equilibrium settling is not simulated yet; the run starts from the "
                      "initial conditions as given");
   }
-  if (run.checkpoint_every) {
-    lowering.AddNote({}, "checkpoints are not written yet; left out");
-  }
-  if (!run.resume_from.empty()) {
-    lowering.AddNote({}, fmt::format("restart from `{}` is not supported yet; the run starts "
-                                     "from the initial conditions",
-                                     run.resume_from));
-  }
 }
 
 }  // namespace sled::compiler::lowering
