@@ -121,9 +121,10 @@ void LowerCriteria(Lowering& lowering) {
       target = segment.name;
       if (criterion.kind == Criterion::Kind::kViscousCriterion) {
         lowering.AddNote(criterion.range,
-                         fmt::format("injury criterion `{}({})` needs the chest deflection, the "
-                                     "penetration of the segment's contacts, and contacts are not "
-                                     "simulated yet; left out",
+                         fmt::format("injury criterion `{}({})` needs a chest deflection, which a "
+                                     "rigid thorax segment does not have (its contacts' "
+                                     "penetrations measure the padding, not the ribcage); left "
+                                     "out",
                                      name, target));
         continue;
       }
