@@ -133,7 +133,7 @@ bool ApplyConstraints(const Model& model, Data& data, Failure* failure);
 // constraints leave some motion of a massless segment undetermined (a singular KKT matrix).
 bool ApplyConstraintsToSingularTree(const Model& model, Data& data, Failure* failure);
 
-// Projects the state y = [q; v] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in the
+// Projects the state y = [q; v; w] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in the
 // metric of M; converged when |phi| <= 1e-12 m). Uses data's caches as scratch. For
 // OdeSystem::Project after an accepted step; changes y by the drift only.
 bool ProjectConstraints(const Model& model, Data& data, double t, std::span<double> y,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "runtime/airbag/airbag_forces.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/functions.h"
 #include "runtime/joint.h"
@@ -146,6 +147,7 @@ void ComputeForces(const Model& model, Data& data) {
     }
   }
   ComputeBeltForces(model, data);
+  if (model.airbags.size() > 0) ComputeAirbagForces(model, data);
 }
 
 }  // namespace sled::runtime

@@ -319,10 +319,7 @@ void ComputeBeltForces(const Model& model, Data& data) {
 
 void CommitBelts(const Model& model, Data& data, double t, std::span<const double> y) {
   if (model.belts.size() == 0) return;
-  const auto nq = static_cast<std::ptrdiff_t>(model.nq);
-  data.time = t;
-  std::copy(y.begin(), y.begin() + nq, data.q.begin());
-  std::copy(y.begin() + nq, y.end(), data.v.begin());
+  LoadState(data, t, y);
   ComputeKinematics(model, data);
   EvaluateBelts(model, data);
   CommitEvaluated(model, data);

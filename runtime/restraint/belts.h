@@ -22,7 +22,7 @@ void SetUpBelts(const Model& model, Data& data);
 // Adds the belt forces to data.external (after the kinematics of data's state).
 void ComputeBeltForces(const Model& model, Data& data);
 
-// After an accepted step at the state y = [q; v] and time t: commits the webbing distribution,
+// After an accepted step at the state y = [q; v; w] and time t: commits the webbing distribution,
 // the loading histories and the contact sides. For OdeSystem::Project; leaves y unchanged.
 void CommitBelts(const Model& model, Data& data, double t, std::span<const double> y);
 
