@@ -169,7 +169,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       continue;
     }
     if (events_[k].kind == EventKind::kAirbagFull) {
-      g[k] = AirbagUnfoldedFraction(model_, data_, events_[k].segment) - 1.0;
+      g[k] = AirbagFullnessEvent(model_, data_, events_[k].segment);
       continue;
     }
     if (events_[k].kind == EventKind::kAirbagInflow) {
