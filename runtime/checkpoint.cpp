@@ -139,9 +139,11 @@ void SerializeData(Archive& archive, Data& data) {
   archive.Field(data.time);
   archive.Field(data.q);
   archive.Field(data.v);
+  archive.Field(data.w);
   archive.Field(data.locked);
   data.contacts.Serialize(archive);
   data.belts.Serialize(archive);
+  data.airbags.Serialize(archive);
   archive.Field(data.energy);
   archive.Field(data.vehicle_power);
   archive.Field(data.evaluations);

@@ -803,9 +803,7 @@ bool ProjectConstraints(const Model& model, Data& data, double t, std::span<doub
                         Failure* failure) {
   if (!data.constraints) return true;
   const auto nq = static_cast<std::size_t>(model.nq);
-  data.time = t;
-  std::copy(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(nq), data.q.begin());
-  std::copy_n(y.begin() + static_cast<std::ptrdiff_t>(nq), data.v.size(), data.v.begin());
+  LoadState(data, t, y);
   double position_error = 0.0, velocity_error = 0.0;
   if (!ProjectState(model, data, kProjectionIterations, failure, &position_error,
                     &velocity_error)) {

@@ -138,8 +138,8 @@ bool ApplyConstraintsToSingularTree(const Model& model, Data& data, Failure* fai
 class Archive;
 void SerializeConstraints(Archive& archive, ConstraintWorkspace& workspace);
 
-// Projects the state y = [q; v] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in the
-// metric of M; converged when |phi| <= 1e-12 m). Uses data's caches as scratch. For
+// Projects the state y = [q; v; w; W] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in
+// the metric of M; converged when |phi| <= 1e-12 m). Uses data's caches as scratch. For
 // OdeSystem::Project after an accepted step; changes y by the drift only.
 bool ProjectConstraints(const Model& model, Data& data, double t, std::span<double> y,
                         Failure* failure);

@@ -1,5 +1,7 @@
 #include "runtime/data.h"
 
+#include <algorithm>
+
 #include "runtime/constraints.h"
 #include "runtime/restraint/belts.h"
 
@@ -14,6 +16,9 @@ Data MakeData(const Model& model) {
   data.v = model.v0;
   data.q.resize(static_cast<std::size_t>(model.nq), 0.0);
   data.v.resize(static_cast<std::size_t>(model.nv), 0.0);
+  data.w = model.w0;
+  data.w.resize(static_cast<std::size_t>(model.nw), 0.0);
+  data.wdot.assign(static_cast<std::size_t>(model.nw), 0.0);
   data.locked.assign(model.joint_locked.begin(), model.joint_locked.end());
   data.locked.resize(n, 0);
   data.rotation.assign(n, Mat3::Identity());
@@ -44,9 +49,36 @@ Data MakeData(const Model& model) {
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
   SizeContactState(model, data.contacts);
+  SizeAirbagState(model, data);
   SetUpConstraints(model, data);
   SetUpBelts(model, data);
   return data;
+}
+
+std::size_t StateSize(const Model& model) {
+  return static_cast<std::size_t>(model.nq + model.nv + model.nw) + kEnergyStates;
+}
+
+void LoadState(Data& data, double t, std::span<const double> y) {
+  data.time = t;
+  auto next = y.begin();
+  for (std::vector<double>* part : {&data.q, &data.v, &data.w}) {
+    std::copy(next, next + static_cast<std::ptrdiff_t>(part->size()), part->begin());
+    next += static_cast<std::ptrdiff_t>(part->size());
+  }
+  data.energy.element_work = next[0];
+  data.energy.constraint_work = next[1];
+  data.energy.vehicle_work = next[2];
+}
+
+void StoreState(const Data& data, std::span<double> y) {
+  auto next = y.begin();
+  for (const std::vector<double>* part : {&data.q, &data.v, &data.w}) {
+    next = std::copy(part->begin(), part->end(), next);
+  }
+  next[0] = data.energy.element_work;
+  next[1] = data.energy.constraint_work;
+  next[2] = data.energy.vehicle_work;
 }
 
 }  // namespace sled::runtime

@@ -5,9 +5,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "runtime/airbag/airbag_state.h"
 #include "runtime/contact/contact_state.h"
 #include "runtime/energy_balance.h"
 #include "runtime/model.h"
@@ -35,6 +37,7 @@ struct Data {
   double time = 0.0;
   std::vector<double> q;             // generalized positions (nq)
   std::vector<double> v;             // generalized velocities (nv)
+  std::vector<double> w;             // auxiliary states of force elements (nw)
   std::vector<std::uint8_t> locked;  // per segment: bit k locks axis k of its joint
 
   // Prescribed motion: each vehicle's pose and motion at `time`, set by ComputeKinematics, so
@@ -61,6 +64,7 @@ struct Data {
   std::vector<double> generalized_force;  // joint torques and forces (nv)
   std::vector<Vec6> joint_wrench;  // force the parent transmits to the segment, segment frame
   std::vector<double> vdot;        // generalized accelerations (nv)
+  std::vector<double> wdot;        // rates of the auxiliary states (nw), set by their owners
 
   // Articulated-body workspace. With N active axes, only the first N columns of U, the top-left
   // N x N of D^-1 and the first N entries of u are used: fixed-size storage, so the recursion
@@ -79,6 +83,8 @@ struct Data {
   ContactState contacts;
   // Belts and harnesses (restraint/belts.h).
   BeltState belts;
+  // Airbags: pressure, volume, flows and contact forces of the last evaluation.
+  AirbagState airbags;
 
   // Loop-closing constraints (constraints.h): multipliers, forces and the KLU factorization;
   // null when the Model has none.
@@ -93,5 +99,14 @@ struct Data {
 };
 
 Data MakeData(const Model& model);
+
+// The integrated state y = [q; v; w; W] of a Model: the positions, velocities and auxiliary
+// states (an airbag's gas), then the kEnergyStates work integrals of the energy balance
+// (data.energy: elements, constraints, vehicles), which the error control leaves out. Its size,
+// and copying it into a Data (with the time) and back.
+inline constexpr std::size_t kEnergyStates = 3;
+std::size_t StateSize(const Model& model);
+void LoadState(Data& data, double t, std::span<const double> y);
+void StoreState(const Data& data, std::span<double> y);
 
 }  // namespace sled::runtime

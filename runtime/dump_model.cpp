@@ -92,6 +92,18 @@ const char* Name(Model::OutputKind kind) {
       return "contact_deflection";
     case Model::OutputKind::kBeltForce:
       return "belt_force";
+    case Model::OutputKind::kAirbagPressure:
+      return "airbag_pressure";
+    case Model::OutputKind::kAirbagVolume:
+      return "airbag_volume";
+    case Model::OutputKind::kAirbagGasMass:
+      return "airbag_gas_mass";
+    case Model::OutputKind::kAirbagTemperature:
+      return "airbag_temperature";
+    case Model::OutputKind::kAirbagVentFlow:
+      return "airbag_vent_flow";
+    case Model::OutputKind::kAirbagForce:
+      return "airbag_force";
   }
   return "?";
 }
@@ -155,6 +167,29 @@ std::string FunctionText(const FunctionTable& f, std::size_t i) {
   }
   return out + fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
                            Get(f.permanent_set, i));
+}
+
+// One line per airbag and per contact ellipsoid, and the auxiliary states' initial values.
+template <typename Line>
+void DumpAirbags(const Model& m, Line& line) {
+  const AirbagTable& bags = m.airbags;
+  if (m.nw > 0) line(fmt::format("w0 {}", List(m.w0)));
+  for (std::size_t b = 0; b < bags.size(); ++b) {
+    line(fmt::format(
+        "airbag {} {} on {} deploy_point {} axes {} semi_axes {} deploy_at {} inflow {} "
+        "gas_temperature {} vent_area {} discharge {} ambient {} gamma {} gas_constant {} "
+        "state {}",
+        b, bags.name[b], Text(bags.frame[b]), Text(bags.deploy_point[b]), Text(bags.axes[b]),
+        Text(bags.semi_axes[b]), bags.deploy_time[b], bags.inflow[b], bags.inflow_temperature[b],
+        bags.vent_area[b], bags.discharge_coefficient[b], bags.ambient_pressure[b], bags.gamma[b],
+        bags.gas_constant[b], bags.state_address[b]));
+    const auto first = static_cast<std::size_t>(bags.first_contact[b]);
+    for (std::size_t c = first; c < first + static_cast<std::size_t>(bags.contact_count[b]); ++c) {
+      line(fmt::format("  touches segment {} center {} axes {} semi_axes {}",
+                       bags.contact_segment[c], Text(bags.contact_center[c]),
+                       Text(bags.contact_axes[c]), Text(bags.contact_semi_axes[c])));
+    }
+  }
 }
 
 // One line per belt and per path point, then the harnesses and their tie points.
@@ -307,6 +342,7 @@ std::string DumpModel(const Model& m) {
     line(fmt::format("contact_group {} pairs {}", g, List(pairs)));
   }
   DumpBelts(m, line);
+  DumpAirbags(m, line);
   for (std::size_t o = 0; o < m.output_kind.size(); ++o) {
     const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;
     const int cfc = o < m.output_filter_class.size() ? m.output_filter_class[o] : 0;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "runtime/airbag/airbag_forces.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/functions.h"
 #include "runtime/joint.h"
@@ -159,6 +160,7 @@ void ComputeForces(const Model& model, Data& data) {
     AddFrameForce(data, model.spring_second[k], b.position, -force * direction);
   }
   ComputeBeltForces(model, data);
+  if (model.airbags.size() > 0) ComputeAirbagForces(model, data);
 }
 
 }  // namespace sled::runtime

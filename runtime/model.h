@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "runtime/airbag/airbag_table.h"
 #include "runtime/contact/contact_table.h"
 #include "runtime/model_types.h"
 
@@ -139,10 +140,15 @@ struct Model {
 
   std::int32_t nq = 0;  // position coordinates (quaternions count four)
   std::int32_t nv = 0;  // velocity coordinates (degrees of freedom)
+  // Auxiliary states: the states force elements own and integrate with the motion (an airbag's
+  // gas mass and internal energy). The integrated state is y = [q; v; w]; each owner records
+  // where its states start in w.
+  std::int32_t nw = 0;
 
   // --- Initial state, as lowered: generalized positions and velocities.
   std::vector<double> q0;
   std::vector<double> v0;
+  std::vector<double> w0;  // auxiliary states (nw)
 
   // --- Vehicles (prescribed motion).
   std::vector<std::string> vehicle_name;
@@ -173,6 +179,8 @@ struct Model {
   ContactTable contacts;
   // --- Belts and harnesses.
   BeltTable belts;
+  // --- Airbags: uniform-pressure bags with gas states in w.
+  AirbagTable airbags;
 
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
@@ -212,11 +220,17 @@ struct Model {
     kContactPoint,       // index: a contact output group; world frame
     kContactDeflection,  // index: a contact output group
     kBeltForce,          // index: a belt
+    kAirbagPressure,     // index: an airbag; gauge pressure
+    kAirbagVolume,       // index: an airbag; volume of the gas
+    kAirbagGasMass,      // index: an airbag
+    kAirbagTemperature,  // index: an airbag
+    kAirbagVentFlow,     // index: an airbag; mass flow out of the vent
+    kAirbagForce,        // index: an airbag; on each segment it touches, world frame
   };
   std::vector<OutputKind> output_kind;
   std::vector<std::string> output_label;   // channel prefix, e.g. occupant.head
-  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring, belt or
-                                           // contact output group
+  std::vector<std::int32_t> output_index;  // segment, joint (= child segment), spring, belt,
+                                           // airbag or contact output group
   std::vector<Vec3> output_point;          // in the segment frame
   // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,
   // read from its left twin and mirrored. Empty when there is no mirror symmetry.

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/airbag/airbag_outputs.h"
 #include "runtime/contact/contact_outputs.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -64,6 +65,18 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
       break;
     case Model::OutputKind::kBeltForce:
       return {"belt_force", "N", {}};  // named by AppendBeltChannelNames
+    case Model::OutputKind::kAirbagPressure:
+      return {"airbag_pressure", "Pa", {"gauge"}};
+    case Model::OutputKind::kAirbagVolume:
+      return {"airbag_volume", "m^3", {"gas"}};
+    case Model::OutputKind::kAirbagGasMass:
+      return {"airbag_gas_mass", "kg", {"inside"}};
+    case Model::OutputKind::kAirbagTemperature:
+      return {"airbag_temperature", "K", {"gas"}};
+    case Model::OutputKind::kAirbagVentFlow:
+      return {"airbag_vent_flow", "kg/s", {"out"}};
+    case Model::OutputKind::kAirbagForce:
+      return {"airbag_force", "N", {}};  // named by AppendAirbagForceChannelNames
   }
   return {"value", "", {"value"}};
 }
@@ -78,6 +91,11 @@ std::vector<std::string> ChannelNames(const Model& model) {
                              model.output_label[k], names);
       continue;
     }
+    if (model.output_kind[k] == Model::OutputKind::kAirbagForce) {
+      AppendAirbagForceChannelNames(model, static_cast<std::size_t>(model.output_index[k]),
+                                    model.output_label[k], names);
+      continue;
+    }
     const ChannelGroup group = GroupOf(model, k);
     for (const char* component : group.components) {
       names.push_back(fmt::format("{}.{}.{} [{}]", model.output_label[k], group.quantity, component,
@@ -88,13 +106,19 @@ std::vector<std::string> ChannelNames(const Model& model) {
 }
 
 std::size_t ChannelCount(const Model& model, std::size_t group) {
-  if (model.output_kind[group] == Model::OutputKind::kBeltForce) {
-    // Each span's tension, then the force on the first and the last anchor (x, y, z each).
-    return static_cast<std::size_t>(
-               model.belts.span_count(static_cast<std::size_t>(model.output_index[group]))) +
-           6;
+  // Belts and airbag forces name their channels themselves: count those names.
+  std::vector<std::string> names;
+  const auto index = static_cast<std::size_t>(model.output_index[group]);
+  switch (model.output_kind[group]) {
+    case Model::OutputKind::kBeltForce:
+      AppendBeltChannelNames(model, index, model.output_label[group], names);
+      return names.size();
+    case Model::OutputKind::kAirbagForce:
+      AppendAirbagForceChannelNames(model, index, model.output_label[group], names);
+      return names.size();
+    default:
+      return GroupOf(model, group).components.size();
   }
-  return GroupOf(model, group).components.size();
 }
 
 void EvaluateChannels(const Model& model, const Data& data, std::span<double> values) {
@@ -193,6 +217,24 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
         break;
       case Model::OutputKind::kBeltForce:
         column += WriteBeltChannels(model, data, index, values.subspan(column));
+        break;
+      case Model::OutputKind::kAirbagPressure:
+        values[column++] = data.airbags.pressure[index] - model.airbags.ambient_pressure[index];
+        break;
+      case Model::OutputKind::kAirbagVolume:
+        values[column++] = data.airbags.volume[index];
+        break;
+      case Model::OutputKind::kAirbagGasMass:
+        values[column++] = data.w[static_cast<std::size_t>(model.airbags.state_address[index])];
+        break;
+      case Model::OutputKind::kAirbagTemperature:
+        values[column++] = data.airbags.temperature[index];
+        break;
+      case Model::OutputKind::kAirbagVentFlow:
+        values[column++] = data.airbags.vent_flow[index];
+        break;
+      case Model::OutputKind::kAirbagForce:
+        column += WriteAirbagForceChannels(model, data, index, values.subspan(column));
         break;
     }
   }

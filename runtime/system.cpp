@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/airbag/airbag_forces.h"
 #include "runtime/constraints.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_impulse.h"
@@ -34,36 +35,29 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model)
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     if (model.contacts.pair_impulse[k]) events_.push_back({EventKind::kContactImpulse, k});
   }
+  const AirbagTable& bags = model.airbags;
+  for (std::size_t b = 0; b < bags.size(); ++b) {
+    events_.push_back({EventKind::kAirbagFull, b});
+    if (bags.deploy_time[b] > model.start_time) {
+      events_.push_back({EventKind::kAirbagInflow, b, bags.deploy_time[b]});
+    }
+    const double spent = AirbagInflowEnd(model, b);
+    if (std::isfinite(spent) && spent > model.start_time) {
+      events_.push_back({EventKind::kAirbagInflow, b, spent});
+    }
+  }
   // Workspace for impulses, sized once.
   saved_v_.assign(static_cast<std::size_t>(model.nv), 0.0);
   responses_.assign(6, std::vector<double>(static_cast<std::size_t>(model.nv), 0.0));
 }
 
-std::size_t MultibodySystem::ControlledSize() const {
-  return static_cast<std::size_t>(model_.nq + model_.nv);
-}
+std::size_t MultibodySystem::ControlledSize() const { return StateSize(model_) - kEnergyStates; }
 
-std::size_t MultibodySystem::size() const { return ControlledSize() + kEnergyQuadratures; }
+std::size_t MultibodySystem::size() const { return StateSize(model_); }
 
-void MultibodySystem::Load(double t, std::span<const double> y) {
-  const auto nq = static_cast<std::size_t>(model_.nq), nv = static_cast<std::size_t>(model_.nv);
-  data_.time = t;
-  std::copy_n(y.begin(), nq, data_.q.begin());
-  std::copy_n(y.begin() + static_cast<std::ptrdiff_t>(nq), nv, data_.v.begin());
-  const std::size_t e = nq + nv;
-  data_.energy.element_work = y[e];
-  data_.energy.constraint_work = y[e + 1];
-  data_.energy.vehicle_work = y[e + 2];
-}
+void MultibodySystem::Load(double t, std::span<const double> y) { LoadState(data_, t, y); }
 
-void MultibodySystem::Store(std::span<double> y) const {
-  std::copy(data_.q.begin(), data_.q.end(), y.begin());
-  std::copy(data_.v.begin(), data_.v.end(), y.begin() + model_.nq);
-  const std::size_t e = ControlledSize();
-  y[e] = data_.energy.element_work;
-  y[e + 1] = data_.energy.constraint_work;
-  y[e + 2] = data_.energy.vehicle_work;
-}
+void MultibodySystem::Store(std::span<double> y) const { StoreState(data_, y); }
 
 bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<double> dy) {
   Load(t, y);
@@ -72,14 +66,23 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
     failure_.time = t;
     return false;
   }
+  if (data_.airbags.failed_bag >= 0) {
+    const auto b = static_cast<std::size_t>(data_.airbags.failed_bag);
+    failure_.time = t;
+    failure_.where = model_.airbags.name[b];
+    failure_.cause = "the segments inside the airbag leave its gas no volume";
+    failure_.source = model_.airbags.source[b];
+    return false;
+  }
   const auto nq = static_cast<std::size_t>(model_.nq);
   PositionDerivative(model_, data_.q, data_.v, data_.locked, dy.first(nq));
-  std::copy(data_.vdot.begin(), data_.vdot.end(), dy.begin() + static_cast<std::ptrdiff_t>(nq));
+  auto rates =
+      std::copy(data_.vdot.begin(), data_.vdot.end(), dy.begin() + static_cast<std::ptrdiff_t>(nq));
+  rates = std::copy(data_.wdot.begin(), data_.wdot.end(), rates);
   const SegmentPower power = PowerIntoSegments(model_, data_);
-  const std::size_t e = ControlledSize();
-  dy[e] = power.elements;
-  dy[e + 1] = power.constraints;
-  dy[e + 2] = data_.vehicle_power;
+  rates[0] = power.elements;
+  rates[1] = power.constraints;
+  rates[2] = data_.vehicle_power;
   for (double value : dy) {
     if (!std::isfinite(value)) {
       failure_.time = t;
@@ -173,6 +176,14 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       g[k] = data_.contacts.gap[events_[k].segment];  // > 0 while the surfaces are apart
       continue;
     }
+    if (events_[k].kind == EventKind::kAirbagFull) {
+      g[k] = AirbagFullnessEvent(model_, data_, events_[k].segment);
+      continue;
+    }
+    if (events_[k].kind == EventKind::kAirbagInflow) {
+      g[k] = t - events_[k].time;
+      continue;
+    }
     const std::size_t s = events_[k].segment;
     const auto qa = static_cast<std::size_t>(model_.q_address[s]);
     switch (events_[k].kind) {
@@ -202,6 +213,8 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
         break;
       }
       case EventKind::kContactImpulse:
+      case EventKind::kAirbagFull:
+      case EventKind::kAirbagInflow:
         break;
     }
   }
@@ -256,6 +269,16 @@ void MultibodySystem::ApplyJointImpulse(std::size_t s, const SmallMatrix& direct
 }
 
 void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
+  if (events_[k].kind == EventKind::kAirbagFull) {
+    data_.airbags.full[events_[k].segment] = direction > 0 ? 1 : 0;
+    return;
+  }
+  if (events_[k].kind == EventKind::kAirbagInflow) {
+    // Just past the event's time (which it may have been located a hair before).
+    data_.airbags.inflow_phase[events_[k].segment] =
+        AirbagInflowPhase(model_, events_[k].segment, std::max(t, events_[k].time));
+    return;
+  }
   Load(t, y);
   // The kinetic energy the impulse adds (or, mostly, takes), for the energy balance.
   ComputeKinematics(model_, data_);
@@ -320,6 +343,8 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
       break;
     }
     case EventKind::kContactImpulse:
+    case EventKind::kAirbagFull:
+    case EventKind::kAirbagInflow:
       break;
   }
 }

@@ -1,9 +1,10 @@
-// The multibody equations as an OdeSystem for the integrators: state y = [q; v; W], where W are
-// the energy balance's work integrals (runtime/energy.h: elements, constraints, vehicles),
-// quadratures outside the error control. Joint stops
+// The multibody equations as an OdeSystem for the integrators: state y = [q; v; w; W] (data.h):
+// w the auxiliary states of force elements (an airbag's gas; Model::nw of them), W the energy
+// balance's work integrals (runtime/energy.h), quadratures outside the error control. Joint stops
 // with the impulse option, joint locking and first contacts with the impulse option are events:
 // the integrator locates them inside the step, and HandleEvent applies the impulse or switches
-// the joint's lock state.
+// the joint's lock state. An airbag's gas equations switch when its envelope becomes full and
+// when its inflator starts and stops: events too, which only stop the step there.
 #pragma once
 
 #include "runtime/data.h"
@@ -26,18 +27,22 @@ class MultibodySystem : public OdeSystem {
   void Events(double t, std::span<const double> y, std::span<double> g) override;
   void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
 
-  // Copies a state vector into data (q, v, the work integrals, time) and back.
+  // Copies a state vector into data (q, v, w, the work integrals, time) and back.
   void Load(double t, std::span<const double> y);
   void Store(std::span<double> y) const;
 
   const Failure& failure() const { return failure_; }
 
  private:
-  static constexpr std::size_t kEnergyQuadratures = 3;
-  enum class EventKind { kStop, kTwistStop, kLock, kContactImpulse };
+  // kAirbagFull (an airbag's envelope becomes full, or stops being full) and kAirbagInflow (its
+  // inflator starts or stops at `time`) switch the bag's mode where its gas equations change,
+  // so no step straddles the jump in their rates.
+  enum class EventKind { kStop, kTwistStop, kLock, kContactImpulse, kAirbagFull, kAirbagInflow };
   struct Event {
     EventKind kind;
-    std::size_t segment;  // the joint's (child) segment; for kContactImpulse the contact pair
+    std::size_t segment;  // the joint's (child) segment; for kContactImpulse the contact pair;
+                          // for the airbag events the bag
+    double time = 0.0;    // kAirbagInflow
   };
 
   // The impulse or lock switch of event k, on data_'s state.

@@ -296,6 +296,13 @@ void Checker::CheckRestraints() {
     bag.vent_area = ReadQuantity(scope, bound, BlockKind::kAirbag, "vent_area").value_or(0.0);
     bag.ambient_pressure =
         ReadQuantity(scope, bound, BlockKind::kAirbag, "ambient_pressure").value_or(101325.0);
+    bag.gas_temperature =
+        ReadQuantity(scope, bound, BlockKind::kAirbag, "gas_temperature").value_or(300.0);
+    bag.gamma = ReadQuantity(scope, bound, BlockKind::kAirbag, "gamma").value_or(1.4);
+    bag.gas_constant =
+        ReadQuantity(scope, bound, BlockKind::kAirbag, "gas_constant").value_or(287.0);
+    bag.discharge_coefficient =
+        ReadQuantity(scope, bound, BlockKind::kAirbag, "discharge_coefficient").value_or(0.6);
     if (const ast::Statement* contacts = One(bound, "contacts")) {
       for (const ast::Expr& value : contacts->values) {
         if (Entity* segment = Resolve(scope, value, {EntityKind::kSegment})) {

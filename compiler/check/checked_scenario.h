@@ -202,6 +202,10 @@ struct Airbag {
   FunctionId inflow = -1;  // time -> mass flow
   double vent_area = 0.0;
   double ambient_pressure = 101325.0;
+  double gas_temperature = 300.0;  // of the inflator's gas [K]
+  double gamma = 1.4;
+  double gas_constant = 287.0;  // [J/(kg K)]
+  double discharge_coefficient = 0.6;
   std::vector<int> contact_segments;
   SourceRange range;
 };
@@ -260,6 +264,11 @@ struct OutputRequest {
     kBeltForce,
     kAirbagPressure,
     kSpringForce,
+    kAirbagVolume,
+    kAirbagGasMass,
+    kAirbagTemperature,
+    kAirbagVentFlow,
+    kAirbagForce,
   };
   Kind kind = Kind::kAcceleration;
   std::string label;          // channel prefix: `as` name or the target's name

@@ -147,9 +147,11 @@ std::string Dump(const CheckedScenario& s) {
   for (const Airbag& a : s.airbags) {
     line(
         fmt::format("airbag {} on {} position {} orientation {} semi_axes {} deploy_at {} inflow "
-                    "{} vent_area {} ambient {} contacts {}",
+                    "{} vent_area {} ambient {} gas_temperature {} gamma {} gas_constant {} "
+                    "discharge {} contacts {}",
                     a.name, FrameText(s, a.frame), V(a.position), V(a.orientation), V(a.semi_axes),
                     a.deploy_time, FunctionText(s, a.inflow), a.vent_area, a.ambient_pressure,
+                    a.gas_temperature, a.gamma, a.gas_constant, a.discharge_coefficient,
                     a.contact_segments.size()));
   }
   for (const SpringDamper& k : s.springs) {

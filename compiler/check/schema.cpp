@@ -216,6 +216,15 @@ std::vector<BlockSpec> MakeSpecs() {
                  true),
         NonNegative("vent_area", d::kArea, "vent area"),
         Positive("ambient_pressure", d::kPressure, "ambient pressure; default 101325 Pa"),
+        Positive("gas_temperature", d::kTemperature,
+                 "temperature of the inflator's gas; default 300 K"),
+        Quantity("gamma", d::kDimensionless,
+                 "ratio of specific heats of the gas, above 1 and at most 5/3; default 1.4", false,
+                 1.0, 5.0 / 3.0, true),
+        Positive("gas_constant", d::kSpecificGasConstant,
+                 "specific gas constant of the gas; default 287 J/kg/K (air)"),
+        Quantity("discharge_coefficient", d::kDimensionless,
+                 "discharge coefficient of the vent; default 0.6", false, 0.0, 1.0, true),
         References("contacts", "segment", "segments the bag can touch")},
        {}});
   specs.push_back(
@@ -391,8 +400,13 @@ const std::vector<OutputSpec>& AllOutputSpecs() {
       {"joint_force", "joint", false, "joint constraint force"},
       {"contact_force", "contact", false, "contact force of `A with B`"},
       {"belt_force", "belt", false, "belt force"},
-      {"airbag_pressure", "airbag", false, "airbag gas pressure"},
+      {"airbag_pressure", "airbag", false, "airbag gauge pressure"},
       {"spring_force", "spring", false, "spring-damper or tension element force"},
+      {"airbag_volume", "airbag", false, "volume of the airbag's gas"},
+      {"airbag_gas_mass", "airbag", false, "mass of gas in the airbag"},
+      {"airbag_temperature", "airbag", false, "temperature of the airbag's gas"},
+      {"airbag_vent_flow", "airbag", false, "mass flow out of the airbag's vent"},
+      {"airbag_force", "airbag", false, "force of the airbag on each segment it touches"},
   };
   return kOutputs;
 }

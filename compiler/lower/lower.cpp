@@ -148,6 +148,7 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
   lowering::LowerContacts(lowering);
+  lowering::LowerAirbags(lowering);
   lowering::LowerScene(lowering);
   lowering::LowerBelts(lowering);
   lowering::LowerCriteria(lowering);

@@ -28,9 +28,9 @@ struct Lowered {
 
 // Lowers a checked scenario. The scenario must have checked without errors: a broken tree or an
 // index out of range is a programming error (std::logic_error naming the stage and the object).
-// Features the runtime does not simulate yet (airbags, the viscous criterion, airbag outputs,
-// settling) and contact pairs that can never touch are left out of the Model; `notes`
-// lists each with its source position so `sled run` can say so.
+// Features the runtime does not simulate yet (the viscous criterion, settling) and contact pairs
+// that can never touch are left out of the Model; `notes` lists each with its source position so
+// `sled run` can say so.
 Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
               const LowerOptions& options);
 

@@ -27,6 +27,14 @@ int DefaultFilterClass(Model::OutputKind kind) {
     case Model::OutputKind::kSpringForce:
     case Model::OutputKind::kBeltForce:
       return 60;
+    case Model::OutputKind::kAirbagForce:
+      return 600;  // as a contact force
+    case Model::OutputKind::kAirbagPressure:
+    case Model::OutputKind::kAirbagVolume:
+    case Model::OutputKind::kAirbagGasMass:
+    case Model::OutputKind::kAirbagTemperature:
+    case Model::OutputKind::kAirbagVentFlow:
+      return 0;  // states of the simulated gas, not measured signals
     case Model::OutputKind::kContactForce:
       return 600;  // as a femur or knee load cell
     case Model::OutputKind::kContactDeflection:

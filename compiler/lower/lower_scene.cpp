@@ -232,10 +232,25 @@ void LowerOutputs(Lowering& lowering) {
         }
         break;
       case Kind::kAirbagPressure:
-        lowering.AddNote(output.range,
-                         fmt::format("output `{} {}` is left out: airbags are not simulated yet",
-                                     OutputKeyword(output.kind), output.label));
-        continue;
+      case Kind::kAirbagVolume:
+      case Kind::kAirbagGasMass:
+      case Kind::kAirbagTemperature:
+      case Kind::kAirbagVentFlow:
+      case Kind::kAirbagForce: {
+        index = lowering.airbag_index.at(static_cast<std::size_t>(output.index));
+        if (index < 0) {
+          lowering.AddNote(output.range, fmt::format("output `{} {}` is left out with its airbag",
+                                                     OutputKeyword(output.kind), output.label));
+          continue;
+        }
+        kind = output.kind == Kind::kAirbagPressure      ? Model::OutputKind::kAirbagPressure
+               : output.kind == Kind::kAirbagVolume      ? Model::OutputKind::kAirbagVolume
+               : output.kind == Kind::kAirbagGasMass     ? Model::OutputKind::kAirbagGasMass
+               : output.kind == Kind::kAirbagTemperature ? Model::OutputKind::kAirbagTemperature
+               : output.kind == Kind::kAirbagVentFlow    ? Model::OutputKind::kAirbagVentFlow
+                                                         : Model::OutputKind::kAirbagForce;
+        break;
+      }
     }
     // A point of the right twin lies in the left one's frame with y reversed.
     lowering.AddOutput(
@@ -257,10 +272,6 @@ void LowerScene(Lowering& lowering) {
 
 void NoteLeftOut(Lowering& lowering) {
   const CheckedScenario& scenario = lowering.scenario();
-  for (const Airbag& airbag : scenario.airbags) {
-    lowering.AddNote(airbag.range,
-                     fmt::format("airbag `{}` is not simulated yet; left out", airbag.name));
-  }
   const RunSettings& run = scenario.run;
   if (run.settle_duration) {
     lowering.AddNote({},

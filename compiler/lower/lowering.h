@@ -68,6 +68,8 @@ class Lowering {
   }
   // By checked contact: its pair in Model::contacts, -1 when it was left out (never touches).
   std::vector<int> contact_pair;
+  // By checked airbag: its bag in Model::airbags, -1 when it was left out.
+  std::vector<int> airbag_index;
 
   // The Model's id of a checked function, copying it into the table on first use; -1 for -1.
   std::int32_t Function(FunctionId id);
@@ -128,6 +130,9 @@ void LowerContacts(Lowering& lowering);
 void LowerContactOutput(Lowering& lowering, const OutputRequest& output);
 // Belts and harnesses, in the checked scenario's order (after LowerTree).
 void LowerBelts(Lowering& lowering);
+// Airbags, their gas states and the contact ellipsoids they may touch (after LowerTree, before
+// LowerScene, whose outputs refer to them).
+void LowerAirbags(Lowering& lowering);
 // The SAE J211 class of an output request's channels: its `filter`, else its kind's default.
 std::int16_t FilterClassOf(const OutputRequest& request, runtime::Model::OutputKind kind);
 // The injury criteria and the output groups they read, added when the scene lacks them (after

@@ -21,6 +21,7 @@ constexpr std::array kNamedDimensions = {
     NamedDimension{dim::kMass, "mass", "kg"},
     NamedDimension{dim::kTime, "time", "s"},
     NamedDimension{dim::kAngle, "angle", "rad"},
+    NamedDimension{dim::kTemperature, "temperature", "K"},
     NamedDimension{dim::kArea, "area", "m^2"},
     NamedDimension{dim::kVolume, "volume", "m^3"},
     NamedDimension{dim::kVelocity, "velocity", "m/s"},
@@ -38,6 +39,7 @@ constexpr std::array kNamedDimensions = {
     NamedDimension{dim::kFrequency, "frequency", "Hz"},
     NamedDimension{dim::kDensity, "density", "kg/m^3"},
     NamedDimension{dim::kImpulse, "impulse", "N*s"},
+    NamedDimension{dim::kSpecificGasConstant, "specific gas constant", "J/kg/K"},
 };
 
 const NamedDimension* FindNamed(Dimension dimension) {
@@ -54,11 +56,12 @@ struct BaseFactor {
 };
 
 // The base dimensions in the order a formula lists them: mass*length^2/time.
-std::array<BaseFactor, 4> BaseFactors(Dimension dimension) {
+std::array<BaseFactor, 5> BaseFactors(Dimension dimension) {
   return {{{dimension.mass, "mass", "kg"},
            {dimension.length, "length", "m"},
            {dimension.time, "time", "s"},
-           {dimension.angle, "angle", "rad"}}};
+           {dimension.angle, "angle", "rad"},
+           {dimension.temperature, "temperature", "K"}}};
 }
 
 // Writes positive exponents joined by `*` and then each negative one after its own `/`:

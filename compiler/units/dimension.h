@@ -1,4 +1,5 @@
-// Physical dimensions: the exponents of length, mass, time and angle a quantity carries.
+// Physical dimensions: the exponents of length, mass, time, angle and temperature a quantity
+// carries.
 //
 // Angle is a base dimension on purpose, although SI treats it as dimensionless: it lets the
 // checker tell a torque (N*m) from a rotational stiffness (N*m/rad), an angular velocity (rad/s)
@@ -18,20 +19,24 @@ struct Dimension {
   int mass = 0;
   int time = 0;
   int angle = 0;
+  int temperature = 0;  // the inflator gas of an airbag
 
   // This dimension raised to a whole power: (m/s)^2 is m^2/s^2.
   constexpr Dimension Pow(int exponent) const {
-    return {length * exponent, mass * exponent, time * exponent, angle * exponent};
+    return {length * exponent, mass * exponent, time * exponent, angle * exponent,
+            temperature * exponent};
   }
   constexpr bool IsDimensionless() const {
-    return length == 0 && mass == 0 && time == 0 && angle == 0;
+    return length == 0 && mass == 0 && time == 0 && angle == 0 && temperature == 0;
   }
 
   friend constexpr Dimension operator*(Dimension a, Dimension b) {
-    return {a.length + b.length, a.mass + b.mass, a.time + b.time, a.angle + b.angle};
+    return {a.length + b.length, a.mass + b.mass, a.time + b.time, a.angle + b.angle,
+            a.temperature + b.temperature};
   }
   friend constexpr Dimension operator/(Dimension a, Dimension b) {
-    return {a.length - b.length, a.mass - b.mass, a.time - b.time, a.angle - b.angle};
+    return {a.length - b.length, a.mass - b.mass, a.time - b.time, a.angle - b.angle,
+            a.temperature - b.temperature};
   }
   friend constexpr bool operator==(Dimension a, Dimension b) = default;
 };
@@ -44,6 +49,7 @@ inline constexpr Dimension kLength{.length = 1};
 inline constexpr Dimension kMass{.mass = 1};
 inline constexpr Dimension kTime{.time = 1};
 inline constexpr Dimension kAngle{.angle = 1};
+inline constexpr Dimension kTemperature{.temperature = 1};
 
 inline constexpr Dimension kArea = kLength.Pow(2);
 inline constexpr Dimension kVolume = kLength.Pow(3);
@@ -64,6 +70,8 @@ inline constexpr Dimension kFrequency = kDimensionless / kTime;
 inline constexpr Dimension kMassFlow = kMass / kTime;  // the same dimension as kDamping
 inline constexpr Dimension kDensity = kMass / kVolume;
 inline constexpr Dimension kImpulse = kForce * kTime;
+// The specific gas constant R of an ideal gas: p = rho R T.
+inline constexpr Dimension kSpecificGasConstant = kEnergy / kMass / kTemperature;
 
 }  // namespace dim
 

@@ -57,7 +57,8 @@ ArithmeticResult Power(Quantity base, Quantity exponent) {
   const int whole = static_cast<int>(e);
   const Dimension& d = base.dimension;
   if (!WithinDimensionLimit(d.length, whole) || !WithinDimensionLimit(d.mass, whole) ||
-      !WithinDimensionLimit(d.time, whole) || !WithinDimensionLimit(d.angle, whole)) {
+      !WithinDimensionLimit(d.time, whole) || !WithinDimensionLimit(d.angle, whole) ||
+      !WithinDimensionLimit(d.temperature, whole)) {
     return Failure(ArithmeticStatus::kInvalidExponent);
   }
   return {ArithmeticStatus::kOk, {std::pow(base.value, e), d.Pow(whole)}};

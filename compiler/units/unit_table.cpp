@@ -117,6 +117,8 @@ const std::vector<UnitInfo>& AllUnits() {
       {"kJ", 1e3, dim::kEnergy, "kilojoule"},
       // Volume.
       {"L", 1e-3, dim::kVolume, "litre"},
+      // Temperature (absolute only: degrees Celsius are an offset scale, not a unit factor).
+      {"K", 1.0, dim::kTemperature, "kelvin"},
   };
   return kUnits;
 }

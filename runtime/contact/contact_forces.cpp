@@ -16,38 +16,6 @@ namespace {
 // torque). A static tangential load below full friction creeps at v0 atanh(load / (mu N)).
 constexpr double kFrictionSpeed = 1e-2;
 
-// World pose and motion of a frame at the current kinematics (vehicles from data.vehicle).
-struct FrameMotion {
-  Vec3 origin = Vec3::Zero();
-  Mat3 rotation = Mat3::Identity();
-  Vec3 velocity = Vec3::Zero();
-  Vec3 angular_velocity = Vec3::Zero();
-};
-
-FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
-  FrameMotion out;
-  const auto i = static_cast<std::size_t>(frame.index);
-  switch (frame.kind) {
-    case FrameRef::Kind::kSegment:
-      out.origin = data.position[i];
-      out.rotation = data.rotation[i];
-      out.velocity = out.rotation * data.velocity[i].tail<3>();
-      out.angular_velocity = out.rotation * data.velocity[i].head<3>();
-      break;
-    case FrameRef::Kind::kVehicle: {
-      const VehicleState& v = data.vehicle[i];
-      out.origin = v.position;
-      out.rotation = v.rotation;
-      out.velocity = v.velocity;
-      out.angular_velocity = v.angular_velocity;
-      break;
-    }
-    case FrameRef::Kind::kGround:
-      break;
-  }
-  return out;
-}
-
 FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side) {
   if (side == 0) return table.ellipsoid_frame[static_cast<std::size_t>(table.pair_first[k])];
   const auto second = static_cast<std::size_t>(table.pair_second[k]);
@@ -103,6 +71,30 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
 }
 
 }  // namespace
+
+FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
+  FrameMotion out;
+  const auto i = static_cast<std::size_t>(frame.index);
+  switch (frame.kind) {
+    case FrameRef::Kind::kSegment:
+      out.origin = data.position[i];
+      out.rotation = data.rotation[i];
+      out.velocity = out.rotation * data.velocity[i].tail<3>();
+      out.angular_velocity = out.rotation * data.velocity[i].head<3>();
+      break;
+    case FrameRef::Kind::kVehicle: {
+      const VehicleState& v = data.vehicle[i];
+      out.origin = v.position;
+      out.rotation = v.rotation;
+      out.velocity = v.velocity;
+      out.angular_velocity = v.angular_velocity;
+      break;
+    }
+    case FrameRef::Kind::kGround:
+      break;
+  }
+  return out;
+}
 
 void PlaceContactSurfaces(const Model& model, Data& data) {
   const ContactTable& table = model.contacts;

@@ -165,6 +165,19 @@ Quantity QuantityOf(Model::OutputKind kind, std::size_t mechanism) {
     case Model::OutputKind::kContactPoint:
     case Model::OutputKind::kContactDeflection:
       return {"DS", "m", true};
+    case Model::OutputKind::kAirbagPressure:
+      return {"PR", "Pa", false};
+    case Model::OutputKind::kAirbagForce:
+      return {"FO", "N", true};
+    // No ISO-MME dimension of their own: `00` (other), with the SI unit.
+    case Model::OutputKind::kAirbagVolume:
+      return {"00", "m^3", false};
+    case Model::OutputKind::kAirbagGasMass:
+      return {"00", "kg", false};
+    case Model::OutputKind::kAirbagTemperature:
+      return {"00", "K", false};
+    case Model::OutputKind::kAirbagVentFlow:
+      return {"00", "kg/s", false};
   }
   return {"00", "", false};
 }

@@ -37,16 +37,19 @@ TEST_F(RunCommand, ThePendulumExampleRunsAndWritesItsOutputs) {
 }
 
 TEST_F(RunCommand, TheFlagshipRunsWithFiniteOutputs) {
-  // Whatever the runtime simulates yet (it notes what it leaves out), the flagship runs its
-  // 200 ms and every value it writes is a number.
-  const fs::path out = temp() / "out";
-  const SledResult result = Sled({"run", "examples/frontal_sled.sled", "-o", out.string()});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const std::string csv = ReadText(out / "timeseries.csv");
-  EXPECT_THAT(csv, HasSubstr("occupant.head.acceleration.x [m/s^2]"));
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2002);  // 200 ms at 0.1 ms
-  for (const char* bad : {"nan", "inf"}) EXPECT_THAT(csv, ::testing::Not(HasSubstr(bad)));
-  EXPECT_THAT(ReadText(out / "summary.json"), HasSubstr("\"status\": \"ok\""));
+  // Whatever the runtime simulates yet (it notes what it leaves out), the flagship, with and
+  // without its driver airbag, runs its 200 ms and every value it writes is a number.
+  for (const char* example : {"examples/frontal_sled.sled", "examples/frontal_sled_airbag.sled"}) {
+    SCOPED_TRACE(example);
+    const fs::path out = temp() / "out";
+    const SledResult result = Sled({"run", example, "-o", out.string()});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    const std::string csv = ReadText(out / "timeseries.csv");
+    EXPECT_THAT(csv, HasSubstr("occupant.head.acceleration.x [m/s^2]"));
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2002);  // 200 ms at 0.1 ms
+    for (const char* bad : {"nan", "inf"}) EXPECT_THAT(csv, ::testing::Not(HasSubstr(bad)));
+    EXPECT_THAT(ReadText(out / "summary.json"), HasSubstr("\"status\": \"ok\""));
+  }
 }
 
 TEST_F(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {

@@ -70,6 +70,7 @@ TEST(Dimension, NamedDimensionsHaveTheirBaseExponents) {
   EXPECT_EQ(dim::kFrequency, (Dimension{.time = -1}));
   EXPECT_EQ(dim::kAngularAcceleration, (Dimension{.time = -2, .angle = 1}));
   EXPECT_EQ(dim::kInertia, (Dimension{.length = 2, .mass = 1}));
+  EXPECT_EQ(dim::kSpecificGasConstant, (Dimension{.length = 2, .time = -2, .temperature = -1}));
 }
 
 TEST(Dimension, AngleSeparatesTorqueFromRotationalStiffnessAndFrequencyFromAngularVelocity) {
@@ -113,6 +114,8 @@ TEST(Dimension, DescribesNamedDimensionsWithTheirSiUnit) {
       {dim::kFrequency, "frequency [Hz]"},
       {dim::kDensity, "density [kg/m^3]"},
       {dim::kImpulse, "impulse [N*s]"},
+      {dim::kTemperature, "temperature [K]"},
+      {dim::kSpecificGasConstant, "specific gas constant [J/kg/K]"},
   };
   for (const auto& [dimension, description] : expected) {
     EXPECT_EQ(DescribeDimension(dimension), description);
@@ -204,6 +207,7 @@ const std::vector<ExpectedUnit>& ExpectedUnits() {
       {"kJ", 1000.0, dim::kEnergy},
       {"L", 0.1 * 0.1 * 0.1, dim::kVolume},  // a cubic decimetre
       {"mph", kMileInMetres / 3600.0, dim::kVelocity},
+      {"K", 1.0, dim::kTemperature},
   };
   return kExpected;
 }

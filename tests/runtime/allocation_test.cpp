@@ -198,5 +198,62 @@ TEST(NoAllocation, ContactsAllocateNothing) {
   }
 }
 
+TEST(NoAllocation, AirbagsAllocateNothing) {
+  // A ball falling into a ground-fixed bag that deploys, unfolds around it (the envelope's scale
+  // solved by iteration), becomes full, pushes it back and vents until it is slack again: every
+  // airbag event included.
+  Model model;
+  testing::AddSegment(model, "ball", -1, JointKind::kFree, 5.0, Vec3(0.05, 0.05, 0.05));
+  model.q0[2] = 0.5;
+  model.v0[5] = -3.0;  // the linear velocity of a free root follows its angular velocity
+  FunctionTable& f = model.functions;
+  f.kind = {FunctionTable::Kind::kTable};
+  f.constant = {0};
+  f.first = {0};
+  f.count = {3};
+  f.energy_loss = {0};
+  f.permanent_set = {0};
+  f.points_x = {0.0, 0.002, 0.01};
+  f.points_y = {0.0, 5.0, 0.0};  // 25 g: more than fills it
+  AirbagTable& bag = model.airbags;
+  bag.name = {"bag"};
+  bag.frame = {{FrameRef::Kind::kGround, -1}};
+  bag.deploy_point = {Vec3::Zero()};
+  bag.axes = {(Mat3() << 0, 0, -1, 0, 1, 0, 1, 0, 0).finished()};  // x up
+  bag.semi_axes = {Vec3(0.2, 0.2, 0.2)};
+  bag.deploy_time = {0.002};
+  bag.inflow = {0};
+  bag.inflow_temperature = {600};
+  bag.vent_area = {1e-3};
+  bag.discharge_coefficient = {0.6};
+  bag.ambient_pressure = {101325};
+  bag.gamma = {1.4};
+  bag.gas_constant = {287};
+  bag.state_address = {0};
+  bag.first_contact = {0};
+  bag.contact_count = {1};
+  bag.source = {{}};
+  bag.contact_segment = {0};
+  bag.contact_center = {Vec3::Zero()};
+  bag.contact_axes = {Mat3::Identity()};
+  bag.contact_semi_axes = {Vec3(0.1, 0.1, 0.1)};
+  bag.contact_radius = {0.1};
+  model.nw = 2;
+  model.w0 = {0.0, 0.0};
+  for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
+    Data data = MakeData(model);
+    double peak_force = 0.0;
+    bool was_full = false;
+    const Counted counted = AdvanceCounting(model, data, method, 0.002, 50, [&] {
+      peak_force = std::max(peak_force, data.airbags.force[0].norm());
+      was_full = was_full || data.airbags.full[0] != 0;
+    });
+    EXPECT_EQ(counted.allocations, 0) << method;
+    EXPECT_GT(peak_force, 0.0) << method;
+    EXPECT_TRUE(was_full) << method;
+    EXPECT_EQ(data.airbags.full[0], 0) << method;  // vented down to the ambient pressure again
+  }
+}
+
 }  // namespace
 }  // namespace sled::runtime
