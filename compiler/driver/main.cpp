@@ -13,6 +13,7 @@
 
 #include "compiler/check/check.h"
 #include "compiler/driver/explain_pages.h"
+#include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
@@ -38,6 +39,9 @@ commands:
                        timeseries_filtered.csv, summary.json and animation.glb (DIR
                        defaults to FILE's name with `-out`); exit 3 on a numerical
                        failure, keeping the outputs up to it
+  report DIR [-o FILE] one HTML page of the run in DIR (the folder `run` wrote): summary,
+                       criteria against limits, plots of the channels, the animation;
+                       FILE defaults to DIR/report.html
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -262,6 +266,10 @@ int main(int argc, char** argv) {
     if (options.command == "check") return RunCheck(options);
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
+    if (options.command == "report") {
+      if (options.files.size() != 1) return UsageError("`report` takes one run folder");
+      return sled::driver::ReportCommand(options.files[0], options.output_directory);
+    }
     if (options.command == "run") {
       if (options.files.size() != 1) return UsageError("`run` takes one scenario file");
       sled::driver::RunCommandOptions run;
