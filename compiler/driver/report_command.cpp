@@ -10,8 +10,9 @@
 namespace sled::driver {
 
 int ReportCommand(const std::string& directory, const std::string& output) {
-  const std::filesystem::path page =
-      output.empty() ? std::filesystem::path(directory) / "report.html" : output;
+  const std::filesystem::path page = output.empty()
+                                         ? std::filesystem::path(directory) / "report.html"
+                                         : std::filesystem::path(output);
   const report::ReportResult result = report::WriteReport(directory, page);
   if (!result.written) {
     std::cerr << fmt::format("sled: {}\n", result.error);
