@@ -20,6 +20,8 @@ packages=(
   libgmock-dev
   libbenchmark-dev
   libmujoco-dev       # test- and benchmark-only peer (tests/verification, tests/bench)
+  nlohmann-json3-dev  # sled report reads summary.json
+  chromium            # test-only: loads the report page headless (tests/report)
 )
 
 missing=()

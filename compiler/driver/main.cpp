@@ -13,6 +13,7 @@
 
 #include "compiler/check/check.h"
 #include "compiler/driver/explain_pages.h"
+#include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
@@ -38,6 +39,9 @@ commands:
                        timeseries_filtered.csv, summary.json and animation.glb (DIR
                        defaults to FILE's name with `-out`); exit 3 on a numerical
                        failure, keeping the outputs up to it
+  report DIR [-o FILE] one HTML page of the run in DIR (the folder `run` wrote): summary,
+                       criteria against limits, plots of the channels, the animation;
+                       FILE defaults to DIR/report.html
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -61,6 +65,7 @@ options for run:
                                into DIR/checkpoint_<t>s.bin
   --resume FILE                continue from a checkpoint, bit for bit as the run that wrote
                                it; the scene may change only its end time and output requests
+  --report                     also write DIR/report.html, as `sled report DIR` does
 )";
 
 struct Options {
@@ -79,6 +84,7 @@ struct Options {
   std::vector<double> dump_times;
   double checkpoint_every = 0.0;
   std::string resume;
+  bool report = false;
 };
 
 int UsageError(const std::string& message) {
@@ -254,6 +260,8 @@ int main(int argc, char** argv) {
         return UsageError(fmt::format(
             "`--checkpoint-every {}`: write a positive time in seconds or with ms (50ms)", value));
       }
+    } else if (arg == "--report") {
+      options.report = true;
     } else if (arg == "--resume") {
       if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a checkpoint file", arg));
       options.resume = args[++i];
@@ -279,6 +287,10 @@ int main(int argc, char** argv) {
     if (options.command == "check") return RunCheck(options);
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
+    if (options.command == "report") {
+      if (options.files.size() != 1) return UsageError("`report` takes one run folder");
+      return sled::driver::ReportCommand(options.files[0], options.output_directory);
+    }
     if (options.command == "run") {
       if (options.files.size() != 1) return UsageError("`run` takes one scenario file");
       sled::driver::RunCommandOptions run;
@@ -293,6 +305,7 @@ int main(int argc, char** argv) {
       run.dump_times = options.dump_times;
       run.checkpoint_every = options.checkpoint_every;
       run.resume = options.resume;
+      run.report = options.report;
       return sled::driver::RunCommand(run);
     }
   } catch (const std::exception& error) {

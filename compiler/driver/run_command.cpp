@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/check.h"
+#include "compiler/driver/report_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
@@ -297,6 +298,8 @@ int RunCommand(const RunCommandOptions& options) {
     if (!written) std::cerr << "sled: " << write_error << '\n';
     return kExitInputErrors;
   }
+  // The page reads the files just written; a run that failed numerically has its page too.
+  if (options.report && ReportCommand(directory, "") != kExitOk) return kExitInputErrors;
   PrintCriteria(criteria);
   if (summary.failed) {
     const runtime::Failure& f = summary.failure;

@@ -25,6 +25,7 @@ struct RunCommandOptions {
   std::vector<double> dump_times;  // [s], increasing, no repeats
   double checkpoint_every = 0.0;   // [s]; 0: no checkpoints
   std::string resume;              // a checkpoint file to continue from
+  bool report = false;             // also write DIR/report.html (sled report)
 };
 
 // One time in seconds or with a unit `s` or `ms` (0.05, 50ms). False for anything else or a

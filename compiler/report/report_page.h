@@ -1,0 +1,25 @@
+// The report page: one self-contained HTML file (style, script and animation inside) built
+// from what a run's folder holds.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/report/channel_table.h"
+#include "compiler/report/run_summary.h"
+
+namespace sled::report {
+
+struct ReportInputs {
+  std::string folder;  // the run folder, as named in the page
+  RunSummaryFile summary;
+  std::optional<ChannelTable> raw;       // timeseries.csv
+  std::optional<ChannelTable> filtered;  // timeseries_filtered.csv
+  std::string glb;                       // animation.glb's bytes; empty when there is none
+  std::vector<std::string> notes;        // what was missing or unreadable, shown on the page
+};
+
+std::string BuildReportPage(const ReportInputs& inputs);
+
+}  // namespace sled::report
