@@ -15,6 +15,7 @@
 #include "compiler/driver/explain_pages.h"
 #include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
+#include "compiler/driver/study_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
@@ -42,6 +43,10 @@ commands:
   report DIR [-o FILE] one HTML page of the run in DIR (the folder `run` wrote): summary,
                        criteria against limits, plots of the channels, the animation;
                        FILE defaults to DIR/report.html
+  study FILE [-o DIR]  the scene with every integrator over a ladder of tolerances against a
+                       tight reference: error against run time as a table, DIR/study.csv
+                       and the work-precision plot DIR/study.svg (DIR defaults to FILE's
+                       name with `-study`); the error of the scene's own settings
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -66,6 +71,9 @@ options for run:
   --resume FILE                continue from a checkpoint, bit for bit as the run that wrote
                                it; the scene may change only its end time and output requests
   --report                     also write DIR/report.html, as `sled report DIR` does
+
+options for study:
+  --tolerances T,T,...         the relative tolerances of the ladder (default 1e-3 to 1e-7)
 )";
 
 struct Options {
@@ -85,6 +93,7 @@ struct Options {
   double checkpoint_every = 0.0;
   std::string resume;
   bool report = false;
+  std::vector<double> tolerances;
 };
 
 int UsageError(const std::string& message) {
@@ -260,6 +269,12 @@ int main(int argc, char** argv) {
         return UsageError(fmt::format(
             "`--checkpoint-every {}`: write a positive time in seconds or with ms (50ms)", value));
       }
+    } else if (arg == "--tolerances") {
+      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a list", arg));
+      std::string error;
+      if (!sled::driver::ParseTolerances(args[++i], &options.tolerances, &error)) {
+        return UsageError(error);
+      }
     } else if (arg == "--report") {
       options.report = true;
     } else if (arg == "--resume") {
@@ -291,8 +306,10 @@ int main(int argc, char** argv) {
       if (options.files.size() != 1) return UsageError("`report` takes one run folder");
       return sled::driver::ReportCommand(options.files[0], options.output_directory);
     }
-    if (options.command == "run") {
-      if (options.files.size() != 1) return UsageError("`run` takes one scenario file");
+    if (options.command == "run" || options.command == "study") {
+      if (options.files.size() != 1) {
+        return UsageError(fmt::format("`{}` takes one scenario file", options.command));
+      }
       sled::driver::RunCommandOptions run;
       run.file = options.files[0];
       run.output_directory = options.output_directory;
@@ -306,6 +323,7 @@ int main(int argc, char** argv) {
       run.checkpoint_every = options.checkpoint_every;
       run.resume = options.resume;
       run.report = options.report;
+      if (options.command == "study") return sled::driver::StudyCommand({run, options.tolerances});
       return sled::driver::RunCommand(run);
     }
   } catch (const std::exception& error) {

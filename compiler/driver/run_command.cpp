@@ -157,27 +157,35 @@ bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::st
   return true;
 }
 
-int RunCommand(const RunCommandOptions& options) {
+std::optional<CompiledScene> CompileScene(const RunCommandOptions& options) {
   lang::SourceManager sources;
   lang::DiagnosticCollector collector;
   const auto file = sources.Load(options.file);
   if (!file) {
     std::cerr << fmt::format("sled: cannot read `{}`\n", options.file);
-    return kExitInputErrors;
+    return std::nullopt;
   }
   compiler::CheckOptions check_options;
   check_options.diagnostics = &collector;
   check_options.stdlib_root = options.stdlib;
   check_options.overrides = options.overrides;
-  const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, *file, check_options);
+  CompiledScene compiled;
+  compiled.scenario = compiler::ParseAndCheck(sources, *file, check_options);
   PrintDiagnostics(sources, collector, options);
-  if (collector.has_errors()) return kExitInputErrors;
+  if (collector.has_errors()) return std::nullopt;
 
   compiler::LowerOptions lower_options;
   lower_options.diagnostics = &collector;
-  compiler::Lowered lowered = compiler::Lower(scenario, sources, lower_options);
-  for (const std::string& note : lowered.notes) std::cerr << note << '\n';
+  compiled.lowered = compiler::Lower(compiled.scenario, sources, lower_options);
+  for (const std::string& note : compiled.lowered.notes) std::cerr << note << '\n';
+  return compiled;
+}
 
+int RunCommand(const RunCommandOptions& options) {
+  std::optional<CompiledScene> compiled = CompileScene(options);
+  if (!compiled) return kExitInputErrors;
+  const compiler::CheckedScenario& scenario = compiled->scenario;
+  compiler::Lowered& lowered = compiled->lowered;
   const runtime::Model& model = lowered.model;
   for (const double t : options.dump_times) {
     if (t < model.start_time - 1e-12 || t > model.end_time + 1e-12) {

@@ -7,9 +7,13 @@
 // that is not a multiple of the output step, 3 numerical failure (outputs kept).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "compiler/check/checked_scenario.h"
+#include "compiler/lower/lower.h"
 
 namespace sled::driver {
 
@@ -40,6 +44,14 @@ bool ParseFormats(const std::string& text, bool* iso_mme, std::string* error);
 // (0.05, 50ms); sorted, repeats dropped. False with `error` set for a text that is no time or a
 // negative time.
 bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error);
+
+// The scene of `options.file` checked and lowered, its diagnostics and the lowering's notes
+// printed; nullopt (after saying why) when it cannot be read or has errors.
+struct CompiledScene {
+  compiler::CheckedScenario scenario;
+  compiler::Lowered lowered;
+};
+std::optional<CompiledScene> CompileScene(const RunCommandOptions& options);
 
 int RunCommand(const RunCommandOptions& options);
 

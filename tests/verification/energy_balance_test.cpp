@@ -145,6 +145,16 @@ TEST(EnergyBalance, FlagshipClosesWithinATenthOfAPercent) {
   EXPECT_GT(energy.absorbed, 0.0);
 }
 
+TEST(EnergyBalance, TheAirbagFlagshipClosesToo) {
+  // The gas's work on the head and thorax, and the wheel's reaction on the moving sled, are
+  // element work like any other: the balance closes with the bag as without.
+  const SceneRun run = RunText(ReadExample("frontal_sled_airbag.sled"));
+  ASSERT_EQ(run.errors, "");
+  ASSERT_FALSE(run.summary.failed) << run.summary.failure.cause;
+  EXPECT_LT(run.summary.energy.relative(), 1e-3)
+      << run.summary.energy.largest_residual << " J of " << run.summary.energy.scale;
+}
+
 TEST(EnergyBalance, ALosslessSpringStoresWhatItAbsorbs) {
   // A bob hangs from a sled on a linear spring; the sled is pulsed sideways. Nothing dissipates,
   // so the absorbed work is the spring's energy F^2 / (2 k) at every row, while the sled's work

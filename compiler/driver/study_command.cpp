@@ -1,0 +1,207 @@
+#include "compiler/driver/study_command.h"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "compiler/report/svg_plot.h"
+#include "runtime/post/injury_criteria.h"
+#include "runtime/post/series_error.h"
+#include "runtime/run.h"
+
+namespace sled::driver {
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitInputErrors = 1;
+
+// One run of the scene with a method and a relative tolerance (the absolute tolerance keeps
+// the scene's ratio to it).
+struct Sample {
+  std::string method;
+  double tolerance = 0.0;
+  double wall_seconds = 0.0;  // the fastest of the repeats
+  runtime::RunSummary summary;
+  runtime::TimeSeries series;
+  std::vector<runtime::post::CriterionValue> criteria;
+  runtime::post::SeriesError error;
+};
+
+Sample RunSample(const runtime::Model& scene, const std::string& method, double tolerance) {
+  runtime::Model model = scene;
+  model.integrator = method;
+  model.absolute_tolerance = scene.absolute_tolerance / scene.relative_tolerance * tolerance;
+  model.relative_tolerance = tolerance;
+  Sample sample;
+  sample.method = method;
+  sample.tolerance = tolerance;
+  // Short runs are repeated (up to three times, while under 0.2 s in all) and the fastest
+  // counts: a shared machine's noise only ever adds time.
+  double total = 0.0;
+  for (int repeat = 0; repeat < 3 && (repeat == 0 || total < 0.2); ++repeat) {
+    runtime::Data data = runtime::MakeData(model);
+    runtime::TimeSeries series;
+    runtime::RunSummary summary = runtime::Run(model, data, series);
+    total += summary.wall_seconds;
+    if (repeat == 0 || summary.wall_seconds < sample.wall_seconds) {
+      sample.wall_seconds = summary.wall_seconds;
+    }
+    sample.summary = std::move(summary);
+    sample.series = std::move(series);
+  }
+  sample.criteria = runtime::post::EvaluateCriteria(model, sample.series);
+  return sample;
+}
+
+void Compare(const runtime::Model& model, Sample& sample, const Sample& reference) {
+  sample.error = runtime::post::CompareSeries(model, sample.series, sample.criteria,
+                                              reference.series, reference.criteria);
+}
+
+// A measure for the table: `-` when the scene has nothing to measure, `<R` below the
+// reference's own uncertainty R.
+std::string Measure(double value, double floor = 0.0) {
+  if (value < 0) return "-";
+  if (value < floor) return fmt::format("<{:.1e}", floor);
+  return fmt::format("{:.2e}", value);
+}
+
+std::string Row(const Sample& s, double floor) {
+  return fmt::format("{:<12} {:>8.0e} {:>9.4f} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}{}",
+                     s.method, s.tolerance, s.wall_seconds, s.summary.stats.steps,
+                     s.summary.stats.rejected, s.summary.stats.evaluations,
+                     Measure(s.error.overall, floor), Measure(s.error.position, floor),
+                     Measure(s.error.peak_acceleration), Measure(s.error.criteria),
+                     s.summary.failed ? fmt::format("  failed at {:.4g} s: {}",
+                                                    s.summary.failure.time, s.summary.failure.cause)
+                                      : "");
+}
+
+// The work-precision plot: log10 of the error against log10 of the run time, one line per
+// method.
+std::string WorkPrecisionSvg(const std::vector<std::string>& methods,
+                             const std::vector<Sample>& samples) {
+  static const char* const kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd"};
+  report::PlotSpec spec;
+  spec.title = "error against run time";
+  spec.x_label = "log10 run time [s]";
+  spec.y_label = "log10 error (of the channels' ranges)";
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    report::PlotSeries series;
+    series.style.color = kColors[m % 4];
+    for (const Sample& s : samples) {
+      if (s.method != methods[m] || s.summary.failed || !(s.error.overall > 0)) continue;
+      series.x.push_back(std::log10(std::max(s.wall_seconds, 1e-6)));
+      series.y.push_back(std::log10(s.error.overall));
+    }
+    spec.legend.push_back({methods[m], series.style});
+    spec.series.push_back(std::move(series));
+  }
+  return report::RenderSvgPlot(spec);
+}
+
+}  // namespace
+
+bool ParseTolerances(const std::string& text, std::vector<double>* tolerances, std::string* error) {
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    double value = 0.0;
+    const auto [end, status] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || status != std::errc() || end != item.data() + item.size() || !(value > 0) ||
+        !(value < 1)) {
+      *error = fmt::format(
+          "`--tolerances {}`: `{}` is not a relative tolerance; write numbers between 0 and 1 "
+          "separated by commas (1e-3,1e-5)",
+          text, item);
+      return false;
+    }
+    tolerances->push_back(value);
+    start = comma + 1;
+  }
+  std::sort(tolerances->begin(), tolerances->end(), std::greater<>());
+  tolerances->erase(std::unique(tolerances->begin(), tolerances->end()), tolerances->end());
+  return true;
+}
+
+int StudyCommand(const StudyOptions& options) {
+  const std::optional<CompiledScene> compiled = CompileScene(options.scene);
+  if (!compiled) return kExitInputErrors;
+  const runtime::Model& scene = compiled->lowered.model;
+  std::vector<double> ladder = options.tolerances;
+  if (ladder.empty()) ladder = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  const std::vector<std::string> methods = {"exponential", "dopri5", "rosenbrock"};
+
+  // The reference, and a second method at the same tolerance to say how good it is.
+  const double tightest = ladder.back() / 100;
+  std::cerr << fmt::format("sled: reference: dopri5 at {:.0e}\n", tightest);
+  const Sample reference = RunSample(scene, "dopri5", tightest);
+  if (reference.summary.failed) {
+    std::cerr << fmt::format("sled: the reference run failed at t = {:.6g} s: {}\n",
+                             reference.summary.failure.time, reference.summary.failure.cause);
+    return kExitInputErrors;
+  }
+  Sample check = RunSample(scene, "exponential", tightest);
+  Compare(scene, check, reference);
+
+  std::vector<Sample> samples;
+  for (const std::string& method : methods) {
+    for (const double tolerance : ladder) {
+      std::cerr << fmt::format("sled: {} at {:.0e}\n", method, tolerance);
+      samples.push_back(RunSample(scene, method, tolerance));
+      Compare(scene, samples.back(), reference);
+    }
+  }
+  Sample own = RunSample(scene, scene.integrator, scene.relative_tolerance);
+  Compare(scene, own, reference);
+
+  std::cout << fmt::format("{:<12} {:>8} {:>9} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}\n",
+                           "method", "tol", "time [s]", "steps", "rej", "evals", "all", "position",
+                           "peak acc", "criteria");
+  const double floor = check.error.overall;
+  for (const Sample& s : samples) std::cout << Row(s, floor) << '\n';
+  std::cout << fmt::format(
+      "\nerrors are relative: a channel's largest deviation from the reference over its range "
+      "(all channels, positions), a peak's or a criterion's relative error\n"
+      "reference: dopri5 at {:.0e} ({:.4f} s); the exponential method there differs from it by "
+      "{} (errors below that are not resolved)\n",
+      tightest, reference.wall_seconds, Measure(check.error.overall));
+  std::cout << fmt::format(
+      "the scene's own settings ({} at {:.0e}): error {} of the channels' ranges, {} in the "
+      "criteria, in {:.4f} s; the integrator's own estimate of its global error: {:.2e}\n",
+      own.method, own.tolerance, Measure(own.error.overall, floor), Measure(own.error.criteria),
+      own.wall_seconds, own.summary.stats.accumulated_error);
+
+  std::string directory = options.scene.output_directory;
+  if (directory.empty()) {
+    directory = std::filesystem::path(options.scene.file).stem().string() + "-study";
+  }
+  std::error_code code;
+  std::filesystem::create_directories(directory, code);
+  std::ofstream csv(std::filesystem::path(directory) / "study.csv");
+  csv << "method,tolerance,wall_seconds,steps,rejected,evaluations,error_all,error_position,"
+         "error_peak_acceleration,error_criteria,failed\n";
+  for (const Sample& s : samples) {
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", s.method, s.tolerance, s.wall_seconds,
+                       s.summary.stats.steps, s.summary.stats.rejected, s.summary.stats.evaluations,
+                       s.error.overall, s.error.position, s.error.peak_acceleration,
+                       s.error.criteria, s.summary.failed ? 1 : 0);
+  }
+  std::ofstream svg(std::filesystem::path(directory) / "study.svg");
+  svg << WorkPrecisionSvg(methods, samples);
+  if (!csv || !svg) {
+    std::cerr << fmt::format("sled: cannot write into `{}`\n", directory);
+    return kExitInputErrors;
+  }
+  std::cerr << fmt::format("sled: study.csv and study.svg in `{}`\n", directory);
+  return kExitOk;
+}
+
+}  // namespace sled::driver

@@ -1,0 +1,64 @@
+// `sled study`: the tolerance ladder of every integrator against a tight reference. On the double
+// pendulum the errors fall as the tolerance tightens, the files hold one row per run and a plot
+// line per method, and bad ladders are usage errors.
+#include <sstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "tests/compiler/sled_process.h"
+
+namespace sled::testing {
+namespace {
+
+using ::testing::HasSubstr;
+using Study = SledProcessTest;
+
+TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
+  const fs::path out = temp() / "study";
+  const SledResult result =
+      Sled({"study", "examples/pendulum.sled", "--tolerances", "1e-3,1e-6", "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_THAT(result.out, HasSubstr("the scene's own settings"));
+  EXPECT_THAT(result.out, HasSubstr("reference: dopri5 at 1e-08"));
+
+  std::istringstream csv(ReadText(out / "study.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_THAT(line, HasSubstr("method,tolerance,wall_seconds"));
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::istringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  ASSERT_EQ(rows.size(), 6u);  // three methods, two tolerances, loosest first
+  for (std::size_t m = 0; m < 3; ++m) {
+    const auto& loose = rows[2 * m];
+    const auto& tight = rows[2 * m + 1];
+    EXPECT_EQ(loose[0], tight[0]);
+    EXPECT_EQ(loose[10], "0") << loose[0] << " failed";
+    const double loose_error = std::stod(loose[6]), tight_error = std::stod(tight[6]);
+    EXPECT_LE(tight_error, loose_error) << loose[0];
+    EXPECT_LT(loose_error, 1e-3) << loose[0];  // a tolerance of 1e-3 keeps within it
+    EXPECT_GE(std::stoi(tight[3]), std::stoi(loose[3])) << loose[0];  // steps
+  }
+  const std::string svg = ReadText(out / "study.svg");
+  EXPECT_THAT(svg, HasSubstr("<svg"));
+  for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
+    EXPECT_THAT(svg, HasSubstr(method));
+  }
+}
+
+TEST_F(Study, ABadLadderIsAUsageError) {
+  for (const char* ladder : {"1e-3,zero", "2", "-1e-4", ""}) {
+    const SledResult result = Sled({"study", "examples/pendulum.sled", "--tolerances", ladder});
+    EXPECT_EQ(result.exit_code, 2) << ladder;
+    EXPECT_THAT(result.err, HasSubstr("is not a relative tolerance")) << ladder;
+  }
+}
+
+}  // namespace
+}  // namespace sled::testing
