@@ -136,11 +136,19 @@ bool ParseTime(const std::string& text, double* seconds) {
   return true;
 }
 
-bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error) {
+std::vector<std::string> SplitAtCommas(const std::string& text) {
+  std::vector<std::string> items;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, comma - start);
+    items.push_back(text.substr(start, comma - start));
+    start = comma + 1;
+  }
+  return items;
+}
+
+bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error) {
+  for (const std::string& item : SplitAtCommas(text)) {
     double value = 0.0;
     if (!ParseTime(item, &value)) {
       *error = fmt::format(
@@ -150,7 +158,6 @@ bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::st
       return false;
     }
     times->push_back(value);
-    start = comma + 1;
   }
   std::sort(times->begin(), times->end());
   times->erase(std::unique(times->begin(), times->end()), times->end());

@@ -32,6 +32,9 @@ struct RunCommandOptions {
   bool report = false;             // also write DIR/report.html (sled report)
 };
 
+// The items of a comma-separated option value, empty ones included ("a,,b" has three).
+std::vector<std::string> SplitAtCommas(const std::string& text);
+
 // One time in seconds or with a unit `s` or `ms` (0.05, 50ms). False for anything else or a
 // negative time.
 bool ParseTime(const std::string& text, double* seconds);

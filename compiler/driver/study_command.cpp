@@ -109,10 +109,7 @@ std::string WorkPrecisionSvg(const std::vector<std::string>& methods,
 }  // namespace
 
 bool ParseTolerances(const std::string& text, std::vector<double>* tolerances, std::string* error) {
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, comma - start);
+  for (const std::string& item : SplitAtCommas(text)) {
     double value = 0.0;
     const auto [end, status] = std::from_chars(item.data(), item.data() + item.size(), value);
     if (item.empty() || status != std::errc() || end != item.data() + item.size() || !(value > 0) ||
@@ -124,7 +121,6 @@ bool ParseTolerances(const std::string& text, std::vector<double>* tolerances, s
       return false;
     }
     tolerances->push_back(value);
-    start = comma + 1;
   }
   std::sort(tolerances->begin(), tolerances->end(), std::greater<>());
   tolerances->erase(std::unique(tolerances->begin(), tolerances->end()), tolerances->end());
