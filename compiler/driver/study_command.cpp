@@ -164,8 +164,8 @@ int StudyCommand(const StudyOptions& options) {
   const double floor = check.error.overall;
   for (const Sample& s : samples) std::cout << Row(s, floor) << '\n';
   std::cout << fmt::format(
-      "\nerrors are relative: a channel's largest deviation from the reference over its range "
-      "(all channels, positions), a peak's or a criterion's relative error\n"
+      "\nerrors are relative: a channel's largest deviation from the reference over the largest "
+      "range of its kind (all channels, positions), a peak's or a criterion's relative error\n"
       "reference: dopri5 at {:.0e} ({:.4f} s); the exponential method there differs from it by "
       "{} (errors below that are not resolved)\n",
       tightest, reference.wall_seconds, Measure(check.error.overall));

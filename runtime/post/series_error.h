@@ -1,7 +1,8 @@
 // How far a run's outputs are from a reference run of the same scene (the same output times):
 // the measures `sled study` puts against run time (docs/numerics.md). Each is relative, so
-// channels of different units compare: a channel's largest deviation over its reference's
-// range, a peak against the reference's peak, a criterion against the reference's value.
+// channels of different units compare: a channel's largest deviation over the largest range of
+// the reference's channels of its kind, a peak against the reference's peak, a criterion against
+// the reference's value.
 #pragma once
 
 #include <vector>
