@@ -43,8 +43,8 @@ TEST_F(LegacyRoundTrip, SeatedOccupantDeckMatchesItsTwin) {
   const std::string b = ReadText(temp() / "b" / "timeseries.csv");
   ASSERT_FALSE(ValuesOf(a).empty());
   EXPECT_TRUE(ValuesOf(a) == ValuesOf(b)) << "the converted deck and its twin differ";
-  // 75 output steps of 2 ms: 76 rows.
-  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 77);
+  // A.4: 300 output steps of 0.5 ms, so 301 rows after the header.
+  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 302);
 }
 
 TEST_F(LegacyRoundTrip, MangledDeckFailsWithALocatedDiagnostic) {
