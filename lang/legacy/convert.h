@@ -20,7 +20,7 @@ struct ConvertOptions {
 ast::File ConvertAinDeck(const SourceManager& sources, FileId deck, const ConvertOptions& options);
 
 // The mapping alone, for a deck already read: reports unresolved references (E0505, E0509) and
-// unused functions (E0511) at the cards' ranges.
+// unused functions (W0502) at the cards' ranges.
 ast::File DeckToAst(const Deck& deck, DiagnosticConsumer& diagnostics);
 
 }  // namespace sled::lang::legacy

@@ -133,7 +133,7 @@ TEST(LegacyConvert, CorpusDeckConvertsAndFormatsStably) {
             std::string::npos);
   EXPECT_NE(converted.text.find("1 in -> 150 lbf"), std::string::npos);
   // The unverified fields the deck uses are reported as warnings, and only those.
-  EXPECT_TRUE(converted.Has("warning[E0508]")) << converted.diagnostics.size();
+  EXPECT_TRUE(converted.Has("warning[W0501]")) << converted.diagnostics.size();
 }
 
 TEST(LegacyConvert, LettersInANumericFieldNameLineCardAndColumns) {
