@@ -1,4 +1,5 @@
-// The `sled` command: check, fmt and explain (DESIGN.md §6). Libraries report; this prints.
+// The `sled` command: check, fmt, run, convert and explain (DESIGN.md §6). Libraries report; this
+// prints.
 #include <unistd.h>
 
 #include <cstdio>
@@ -19,6 +20,7 @@
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
+#include "lang/legacy/convert.h"
 #include "lang/syntax/parser.h"
 
 namespace {
@@ -47,6 +49,10 @@ commands:
                        tight reference: error against run time as a table, DIR/study.csv
                        and the work-precision plot DIR/study.svg (DIR defaults to FILE's
                        name with `-study`); the error of the scene's own settings
+  convert DECK [-o FILE] [--blank-zero]
+                       translate a CVS-III/ATB fixed-column deck (.ain) into a
+                       .sled scenario (standard output without -o); --blank-zero
+                       reads blank columns as zeros (FORTRAN IV decks)
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -89,6 +95,7 @@ struct Options {
   std::string output_directory;
   std::vector<std::pair<std::string, std::string>> overrides;
   bool iso_mme = false;
+  bool blank_zero = false;
   std::vector<double> dump_times;
   double checkpoint_every = 0.0;
   std::string resume;
@@ -209,6 +216,35 @@ int RunFormat(const Options& options) {
   return changed_or_failed ? kExitInputErrors : kExitOk;
 }
 
+int RunConvert(const Options& options) {
+  if (options.files.size() != 1) return UsageError("`convert` takes one deck");
+  SourceManager sources;
+  DiagnosticCollector collector;
+  const auto file = LoadFile(sources, options.files[0], collector);
+  std::string text;
+  if (file) {
+    sled::lang::legacy::ConvertOptions convert;
+    convert.diagnostics = &collector;
+    convert.blanks = options.blank_zero ? sled::lang::legacy::BlankMode::kZero
+                                        : sled::lang::legacy::BlankMode::kIgnore;
+    const auto ast = sled::lang::legacy::ConvertAinDeck(sources, *file, convert);
+    if (!collector.has_errors()) text = sled::lang::Format(ast);
+  }
+  PrintDiagnostics(sources, collector, options.compact);
+  if (collector.has_errors()) return kExitInputErrors;
+  if (options.output_directory.empty()) {
+    std::cout << text;
+    return kExitOk;
+  }
+  std::ofstream out(options.output_directory, std::ios::binary | std::ios::trunc);
+  out << text;
+  if (!out) {
+    std::cerr << fmt::format("sled: cannot write `{}`\n", options.output_directory);
+    return kExitInputErrors;
+  }
+  return kExitOk;
+}
+
 int RunExplain(const Options& options) {
   if (options.files.size() != 1) return UsageError("`explain` takes one diagnostic code");
   std::string code = options.files[0];
@@ -249,6 +285,8 @@ int main(int argc, char** argv) {
       options.dump_checked = true;
     } else if (arg == "--dump-model") {
       options.dump_model = true;
+    } else if (arg == "--blank-zero") {
+      options.blank_zero = true;
     } else if (arg == "--no-lints") {
       options.lints = false;
     } else if (arg == "-o" || arg == "--output") {
@@ -302,6 +340,7 @@ int main(int argc, char** argv) {
     if (options.command == "check") return RunCheck(options);
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
+    if (options.command == "convert") return RunConvert(options);
     if (options.command == "report") {
       if (options.files.size() != 1) return UsageError("`report` takes one run folder");
       return sled::driver::ReportCommand(options.files[0], options.output_directory);

@@ -1,0 +1,933 @@
+#include "lang/legacy/ain_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace sled::lang::legacy {
+namespace {
+
+constexpr int kMaxSegments = 60;
+constexpr int kMaxPlanes = 50;
+constexpr int kMaxBelts = 20;
+constexpr int kMaxEllipsoids = 20;
+constexpr int kMaxSprings = 20;
+constexpr int kMaxFunction = 98;
+constexpr int kMaxVehicles = 6;
+constexpr int kMaxOutputs = 20;
+constexpr int kMaxContacts = 200;
+
+std::string Upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+class AinReader {
+ public:
+  explicit AinReader(CardReader& reader) : r_(reader) {}
+
+  Deck Read() {
+    ReadA();
+    ReadB();
+    if (!r_.truncated()) ReadC();
+    if (!r_.truncated()) ReadD();
+    if (!r_.truncated()) ReadE();
+    if (!r_.truncated()) ReadF();
+    if (!r_.truncated()) ReadG();
+    if (!r_.truncated()) ReadH();
+    if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
+      const Card card = r_.Next("after H.3");
+      r_.Report(DiagnosticKind::kDeckExtraCards, card, 1, static_cast<int>(card.text.size()),
+                fmt::format("line {} follows the last card sled reads (H.3)", card.line),
+                "the layouts of cards H.4 to H.11 are not documented; remove these output "
+                "requests and add them to the scenario's `output` block by hand");
+    }
+    return std::move(deck_);
+  }
+
+ private:
+  Vec3 Triple(const Card& card, int first, int width, std::string_view what) {
+    Vec3 v{};
+    for (int i = 0; i < 3; ++i) {
+      v[static_cast<std::size_t>(i)] =
+          r_.Real(card, first + i * width, first + (i + 1) * width - 1, what);
+    }
+    return v;
+  }
+
+  // A count checked against its limit; out of range is reported and read as zero.
+  int Count(const Card& card, int first, int last, std::string_view what, int limit) {
+    const int value = r_.Integer(card, first, last, what);
+    if (value < 0 || value > limit) {
+      r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, first, last,
+                fmt::format("card {}, columns {}-{} ({}): {} is outside 0 to {}", card.label, first,
+                            last, what, value, limit),
+                "the ATB V.3 limits (MODULE_STANDARD) bound every count");
+      return 0;
+    }
+    return value;
+  }
+
+  Ref Reference(const Card& card, int first, int last, std::string_view what) {
+    return Ref{r_.Integer(card, first, last, what), r_.Range(card, first, last), card.label};
+  }
+
+  void Refuse(const Card& card, int first, int last, std::string what, std::string help) {
+    r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
+              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              std::move(help));
+  }
+  void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,
+                     std::string help) {
+    if (value != 0) {
+      Refuse(card, first, last, fmt::format("{} is {}; sled has no such attribute", what, value),
+             std::move(help));
+    }
+  }
+  void Unverified(const Card& card, int first, int last, std::string what) {
+    r_.Report(DiagnosticKind::kDeckUnverifiedField, card, first, last,
+              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              "the format reference marks this unverified: compare the converted scenario with "
+              "the deck's documentation before trusting it");
+  }
+  void Invalid(const Card& card, int first, int last, std::string what, std::string help) {
+    r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
+              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              std::move(help));
+  }
+
+  // --- A: control --------------------------------------------------------------------------
+  void ReadA() {
+    const Card date = r_.Next("A.1 (date)");
+    deck_.date = r_.Text(date, 1, 12);
+    deck_.title = r_.Text(r_.Next("A.1 (title, line 1)"), 1, 80);
+    deck_.subtitle = r_.Text(r_.Next("A.1 (title, line 2)"), 1, 80);
+
+    const Card units = r_.Next("A.3");
+    deck_.units_line = units.line;
+    deck_.units.length =
+        Unit(units, 1, 4, "UNITL, the length unit",
+             {{"IN", "in"}, {"INCH", "in"}, {"FT", "ft"}, {"M", "m"}, {"CM", "cm"}, {"MM", "mm"}});
+    deck_.units.force =
+        Unit(units, 5, 8, "UNITM, the weight (force) unit",
+             {{"LB", "lbf"}, {"LBS", "lbf"}, {"LBF", "lbf"}, {"N", "N"}, {"KN", "kN"}});
+    deck_.units.time =
+        Unit(units, 9, 12, "UNITT, the time unit",
+             {{"SEC", "s"}, {"S", "s"}, {"SECS", "s"}, {"MSEC", "ms"}, {"MS", "ms"}});
+    deck_.gravity = Triple(units, 13, 12, "GRAVTY, the gravity vector");
+    deck_.g = r_.Real(units, 49, 60, "G, the magnitude of gravity");
+    if (deck_.g == 0) {
+      deck_.g =
+          std::sqrt(deck_.gravity[0] * deck_.gravity[0] + deck_.gravity[1] * deck_.gravity[1] +
+                    deck_.gravity[2] * deck_.gravity[2]);
+    }
+    if (deck_.g <= 0) {
+      Invalid(units, 13, 60, "both G and the gravity vector are zero",
+              "segment masses are weights divided by G: give G in columns 49-60");
+    }
+
+    const Card control = r_.Next("A.4");
+    deck_.control_line = control.line;
+    const int ndint = r_.Integer(control, 1, 4, "NDINT");
+    if (ndint != 0) Unverified(control, 1, 4, "the meaning of NDINT is not documented; ignored");
+    deck_.steps = r_.Integer(control, 5, 8, "NSTEPS, the number of output steps");
+    deck_.dt = r_.Real(control, 9, 16, "DT, the output step");
+    deck_.first_step = r_.Real(control, 17, 24, "H0, the first integration step");
+    deck_.max_step = r_.Real(control, 25, 32, "HMAX, the largest integration step");
+    deck_.min_step = r_.Real(control, 33, 40, "HMIN, the smallest integration step");
+    if (deck_.steps <= 0) {
+      Invalid(control, 5, 8, fmt::format("NSTEPS is {}", deck_.steps),
+              "the run lasts NSTEPS output steps of DT: give a positive count");
+    }
+    if (deck_.dt <= 0) {
+      Invalid(control, 9, 16, fmt::format("DT is {}", deck_.dt),
+              "the output step must be positive");
+    }
+
+    const Card print = r_.Next("A.5");
+    for (int i = 0; i < 36; ++i) {
+      deck_.print_controls.push_back(r_.Integer(print, 2 * i + 1, 2 * i + 2, "NPRT"));
+    }
+    const int windows = deck_.print_controls[33];
+    if (windows < 0 || windows > 3) {
+      r_.Report(DiagnosticKind::kDeckCountOutOfRange, print, 67, 68,
+                fmt::format("card A.5, columns 67-68 (NPRT(34), the number of A.6 time windows): "
+                            "{} is outside 0 to 3",
+                            windows));
+    } else {
+      for (int i = 0; i < windows; ++i) r_.Next(fmt::format("A.6 (window {})", i + 1));
+    }
+  }
+
+  std::string Unit(const Card& card, int first, int last, std::string_view what,
+                   std::initializer_list<std::pair<std::string_view, std::string_view>> known) {
+    const std::string label = Upper(r_.Text(card, first, last));
+    for (const auto& [name, symbol] : known) {
+      if (label == name) return std::string(symbol);
+    }
+    std::string names;
+    for (const auto& entry : known)
+      names += fmt::format("{}`{}`", names.empty() ? "" : ", ", entry.first);
+    r_.Report(DiagnosticKind::kDeckUnknownUnit, card, first, last,
+              fmt::format("card A.3, columns {}-{} ({}): `{}` is not a unit label sled knows",
+                          first, last, what, label),
+              fmt::format("write one of {}", names));
+    return std::string(known.begin()->second);
+  }
+
+  // --- B: the body -------------------------------------------------------------------------
+  void ReadB() {
+    const Card b1 = r_.Next("B.1");
+    deck_.body_line = b1.line;
+    const int segments = Count(b1, 1, 6, "NSEG, the number of segments", kMaxSegments);
+    const int joints = Count(b1, 7, 12, "NJNT, the number of joints", kMaxSegments);
+    deck_.body_title = r_.Text(b1, 21, 40);
+    const int deformable = r_.Integer(b1, 41, 45, "NFBOD, the number of deformable bodies");
+    if (deformable != 0) {
+      Refuse(b1, 41, 45, fmt::format("NFBOD is {}: deformable bodies", deformable),
+             "sled's segments are rigid; remove the deformable bodies (and their B.3.c cards)");
+    }
+    if (segments > 0 && joints != segments - 1) {
+      Invalid(b1, 7, 12, fmt::format("NJNT is {} for {} segments", joints, segments),
+              "segment J+1 hangs from joint J, so a deck has NSEG - 1 joints");
+    }
+    for (int i = 0; i < segments; ++i) ReadSegment(i + 1);
+    for (int j = 0; j < joints && j + 1 < segments; ++j) ReadJoint(j + 1, segments);
+    for (auto& joint : deck_.joints) ReadJointSprings(joint);
+    for (auto& joint : deck_.joints) ReadJointDamping(joint);
+    for (int i = 0; i < segments; ++i) {
+      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1));
+      for (int f = 0; f < 12; ++f) {
+        const int first = 6 * f + 1;
+        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
+        if (value != 0) {
+          Refuse(b6, first, first + 5,
+                 fmt::format("a per-segment convergence test of the integrator is {}", value),
+                 "sled's integrators take one `tolerance` for the whole scene; leave B.6 blank "
+                 "and set `integrator { tolerance = ... }` in the scenario");
+          break;
+        }
+      }
+    }
+  }
+
+  void ReadSegment(int number) {
+    const Card card = r_.Next(fmt::format("B.2.a (segment {})", number));
+    SegmentCard segment;
+    segment.line = card.line;
+    segment.name = r_.Text(card, 1, 4);
+    if (segment.name.empty() && card.line != 0) {
+      Invalid(card, 1, 4, "the segment has no name", "give each segment a name in columns 1-4");
+    }
+    segment.weight = r_.Real(card, 7, 12, "WEIGHT, the segment's weight");
+    segment.inertia = Triple(card, 13, 6, "PHI, the principal moments of inertia");
+    segment.semi_axes = Triple(card, 31, 6, "the contact ellipsoid's semi-axes");
+    segment.center = Triple(card, 49, 6, "the contact ellipsoid's centre");
+    const int lpmi = r_.Integer(card, 67, 70, "LPMI, principal axes given");
+    if (segment.weight < 0) {
+      Invalid(card, 7, 12, fmt::format("WEIGHT is {}", segment.weight),
+              "a weight is zero (a singular segment) or positive");
+    }
+    if (lpmi == 1) {
+      const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number));
+      segment.has_principal_axes = true;
+      segment.principal_axes = Triple(axes, 13, 6, "yaw, pitch and roll of the principal axes");
+    } else if (lpmi != 0) {
+      Invalid(card, 67, 70, fmt::format("LPMI is {}", lpmi),
+              "LPMI is 1 when a B.2.b card follows, else 0 or blank");
+    }
+    deck_.segments.push_back(std::move(segment));
+  }
+
+  void ReadJoint(int number, int segments) {
+    const Card line1 = r_.Next(fmt::format("B.3.a (joint {})", number));
+    const Card line2 = r_.Next(fmt::format("B.3.b (joint {})", number));
+    JointCard joint;
+    joint.line = line1.line;
+    joint.name = r_.Text(line1, 1, 4);
+    joint.parent = r_.Integer(line1, 7, 10, "JNT, the proximal segment");
+    const int jtype = r_.Integer(line1, 11, 14, "JTYPE, the joint type");
+    joint.at_parent = Triple(line1, 15, 6, "the joint's location in the proximal segment");
+    joint.at_child = Triple(line1, 33, 6, "the joint's location in the distal segment");
+    const int ieuler = r_.Integer(line1, 51, 54, "IEULER");
+    RefuseNonZero(line1, 55, 60, r_.Real(line1, 55, 60, "TENS_MAX"),
+                  "TENS_MAX (joint failure in tension)",
+                  "sled's joints do not fail; remove the limit");
+    RefuseNonZero(line1, 61, 66, r_.Real(line1, 61, 66, "COMP_MAX"),
+                  "COMP_MAX (joint failure in compression)",
+                  "sled's joints do not fail; remove the limit");
+    if (joint.parent < 0) {
+      Refuse(line1, 7, 10, fmt::format("JNT is {}: a flexible chain", joint.parent),
+             "flexible segment chains have no counterpart in sled; use ordinary joints");
+    } else if (joint.parent > segments || joint.parent == number + 1) {
+      r_.Report(DiagnosticKind::kDeckCountOutOfRange, line1, 7, 10,
+                fmt::format("card {}, columns 7-10 (JNT, the proximal segment): segment {} does "
+                            "not exist or is the joint's own distal segment",
+                            line1.label, joint.parent),
+                fmt::format("name a segment from 0 (a new reference body) to {}", segments));
+      joint.parent = 0;
+    }
+    const bool euler = jtype == 4 || (ieuler == 0 && jtype <= -4);
+    if (euler) {
+      joint.type = JointType::kEuler;
+      Unverified(line1, 11, 14,
+                 "an Euler joint: sled maps the B.4.a flexure and torsion springs and the B.4.b "
+                 "spring to its precession, nutation and spin axes in that order");
+    } else if (std::abs(jtype) >= 5) {
+      joint.type = JointType::kSlip;
+      Unverified(line1, 11, 14, "a slip joint: the slip direction is taken as sled's default axis");
+    } else if (jtype == 0) {
+      joint.type = JointType::kBall;
+    } else {
+      Refuse(line1, 11, 14, fmt::format("JTYPE {} is not documented", jtype),
+             "the reference documents JTYPE 0 (ball and socket), 4 (Euler) and |JTYPE| >= 5 "
+             "(slip); convert this joint by hand");
+    }
+    joint.axes_parent = Triple(line2, 15, 6, "YPR1, the joint axes in the proximal segment");
+    joint.axes_child = Triple(line2, 33, 6, "YPR2, the joint axes in the distal segment");
+    const Vec3 ypr3 = Triple(line2, 51, 6, "YPR3");
+    if (ypr3 != Vec3{}) {
+      Refuse(line2, 51, 68, "YPR3, a third set of joint-axis angles, is not zero",
+             "sled orients a joint's axes in its two segments only (`axes SEGMENT = ...`)");
+    }
+    for (int i = 0; i < 6; ++i) {
+      const int first = 69 + 2 * i;
+      const int order = r_.Integer(line2, first, first + 1, "IDYPR, a rotation order");
+      if (order != 0) {
+        Refuse(line2, first, first + 1,
+               fmt::format("IDYPR({}) is {}: a rotation order", i + 1, order),
+               "sled's angles are always yaw, pitch, roll (the default order 3, 2, 1); leave "
+               "IDYPR blank and convert the angles");
+        break;
+      }
+    }
+    deck_.joints.push_back(std::move(joint));
+  }
+
+  JointSpring Spring(const Card& card, int first) {
+    JointSpring spring;
+    const double c1 = r_.Real(card, first, first + 5, "the linear spring coefficient");
+    spring.quadratic = r_.Real(card, first + 6, first + 11, "the quadratic spring coefficient");
+    spring.cubic = r_.Real(card, first + 12, first + 17, "the cubic spring coefficient");
+    spring.energy_loss =
+        r_.Real(card, first + 18, first + 23, "the energy-dissipation coefficient");
+    spring.stop = r_.Real(card, first + 24, first + 35, "the joint-stop angle");
+    if (c1 < 0) {
+      // A negative first coefficient names joint function |n|; the rest of the spring is unused.
+      spring.function =
+          Ref{static_cast<int>(std::fabs(c1)), r_.Range(card, first, first + 5), card.label};
+      spring.quadratic = spring.cubic = spring.energy_loss = spring.stop = 0;
+    } else {
+      spring.linear = c1;
+    }
+    if (spring.energy_loss < 0 || spring.energy_loss > 1) {
+      Invalid(card, first + 18, first + 23,
+              fmt::format("the energy-dissipation coefficient is {}", spring.energy_loss),
+              "it is a fraction from 0 to 1");
+    }
+    if (spring.stop < 0 || spring.stop > 180) {
+      Invalid(card, first + 24, first + 35,
+              fmt::format("the joint-stop angle is {} deg", spring.stop),
+              "a stop angle is from 0 (none) to 180 degrees");
+    }
+    return spring;
+  }
+
+  void ReadJointSprings(JointCard& joint) {
+    const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
+    const Card card = r_.Next(fmt::format("B.4.a (joint {})", j));
+    joint.flexure = Spring(card, 1);
+    joint.twist = Spring(card, 37);
+    if (joint.type != JointType::kEuler && joint.twist.energy_loss != 0 &&
+        joint.twist.energy_loss != joint.flexure.energy_loss) {
+      Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
+             "sled's joints take one `energy_loss`; give both springs the same coefficient");
+    }
+    if (joint.type == JointType::kEuler) {
+      const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j));
+      joint.spin = Spring(spin, 1);
+      joint.initial_angles = Triple(spin, 37, 6, "ANG, the initial joint angles");
+    }
+  }
+
+  void ReadJointDamping(JointCard& joint) {
+    const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
+    const int cards = joint.type == JointType::kEuler ? 3 : 1;
+    for (int k = 0; k < cards; ++k) {
+      const Card card = r_.Next(fmt::format("B.5.{} (joint {})", static_cast<char>('a' + k), j));
+      const double viscous = r_.Real(card, 1, 6, "the viscous coefficient");
+      const double coulomb = r_.Real(card, 7, 12, "the Coulomb friction torque");
+      const double full = r_.Real(card, 13, 18, "the angular velocity of full Coulomb friction");
+      RefuseNonZero(card, 19, 24, r_.Real(card, 19, 24, "the maximum torque"),
+                    "the maximum friction torque", "sled's joint friction has no torque bounds");
+      RefuseNonZero(card, 25, 30, r_.Real(card, 25, 30, "the minimum torque"),
+                    "the minimum friction torque", "sled's joint friction has no torque bounds");
+      RefuseNonZero(card, 49, 54, r_.Real(card, 49, 54, "the minimum angular velocity"),
+                    "the minimum angular velocity", "sled's joint friction has no such threshold");
+      const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
+      if (coulomb != 0 && full != 0) {
+        Refuse(card, 13, 18,
+               fmt::format("the angular velocity of full Coulomb friction is {}", full),
+               "sled's Coulomb joint friction has no ramp velocity; set the Coulomb torque to "
+               "zero or convert the friction by hand");
+      }
+      if (k > 0 && (viscous != 0 || coulomb != 0 || restitution != 0)) {
+        Refuse(card, 1, 60, "per-axis damping of an Euler joint",
+               "sled's `viscous`, `coulomb` and `restitution` apply to the whole joint; leave "
+               "B.5.b and B.5.c blank");
+        continue;
+      }
+      if (k == 0) {
+        joint.viscous = viscous;
+        joint.coulomb = coulomb;
+        joint.restitution = restitution;
+      }
+      if (restitution < 0 || restitution > 1) {
+        Invalid(card, 55, 60, fmt::format("the coefficient of restitution is {}", restitution),
+                "a coefficient of restitution is from 0 to 1");
+      }
+    }
+  }
+
+  // --- C: vehicles -------------------------------------------------------------------------
+  void ReadC() {
+    for (int v = 0; v < kMaxVehicles && !r_.truncated(); ++v) {
+      const Card title = r_.Next(fmt::format("C.1 (vehicle {})", v + 1));
+      const Card card = r_.Next(fmt::format("C.2.a (vehicle {})", v + 1));
+      VehicleCard vehicle;
+      vehicle.line = card.line;
+      vehicle.title = r_.Text(title, 1, 80);
+      vehicle.orientation = Triple(card, 1, 6, "yaw, pitch and roll of the vehicle");
+      vehicle.speed = r_.Real(card, 19, 24, "VIPS, the initial speed");
+      vehicle.duration = r_.Real(card, 25, 30, "VTIME, the pulse duration");
+      vehicle.position = Triple(card, 31, 6, "X0, the initial position");
+      const int points = r_.Integer(card, 49, 54, "NATAB, the number of table points");
+      r_.Real(card, 55, 60, "AT0, the table's start time");
+      r_.Real(card, 61, 66, "ADT, the table's spacing");
+      const int ivflg = r_.Integer(card, 67, 68, "IVFLG, the reference flag");
+      r_.Integer(card, 69, 70, "IVREF, the reference segment");
+      const int mseg = r_.Integer(card, 71, 72, "MSEG, the vehicle segment");
+      if (points != 0) {
+        Refuse(card, 49, 54, fmt::format("NATAB is {}: a tabulated pulse", points),
+               "the layout of the C.3 table cards is not documented; convert the pulse into a "
+               "`motion = table(...)` by hand");
+      } else {
+        Unverified(card, 19, 30,
+                   "a half-sine pulse: AX and its frequency come from VINO12, which the "
+                   "reference does not have; sled assumes a half-sine of duration VTIME that "
+                   "brings VIPS to rest along the vehicle's -x");
+      }
+      if (ivflg != 0) {
+        Refuse(card, 67, 68, fmt::format("IVFLG is {}: motion relative to a segment", ivflg),
+               "sled's vehicles move relative to the ground");
+      }
+      if (vehicle.duration <= 0 && points == 0) {
+        Invalid(card, 25, 30, fmt::format("VTIME is {}", vehicle.duration),
+                "a half-sine pulse needs a positive duration");
+      }
+      deck_.vehicles.push_back(std::move(vehicle));
+      if (mseg == 0) return;
+      Refuse(card, 71, 72, fmt::format("MSEG is {}: a prescribed segment", mseg),
+             "sled prescribes the motion of vehicles, not of body segments");
+    }
+  }
+
+  // --- D: surfaces and restraints ----------------------------------------------------------
+  void ReadD() {
+    const Card d1 = r_.Next("D.1.a");
+    const int planes = Count(d1, 1, 6, "NPL, the number of planes", kMaxPlanes);
+    const int belts = Count(d1, 7, 12, "NBLT, the number of belts", kMaxBelts);
+    const int bags = r_.Integer(d1, 13, 18, "NBAG, the number of airbags");
+    const int ellipsoids =
+        Count(d1, 19, 24, "NELP, the number of extra ellipsoids", kMaxEllipsoids);
+    const int constraints = r_.Integer(d1, 25, 30, "NQ, the number of constraints");
+    const int springs = Count(d1, 31, 36, "NSD, the number of spring-dampers", kMaxSprings);
+    struct Unsupported {
+      int first;
+      const char* what;
+      const char* help;
+    };
+    static constexpr Unsupported kUnsupported[] = {
+        {13, "NBAG (airbags)", "convert the airbags into `airbag` blocks by hand (docs/legacy.md)"},
+        {25, "NQ (constraints)",
+         "the KQTYPE codes of D.6 are not documented; write `constraint` blocks by hand"},
+        {37, "NHRNSS (harnesses)", "convert the harness into a `harness` block by hand"},
+        {43, "NWINDF (wind forces)", "sled has no wind forces"},
+        {49, "NJNTF (obsolete joint functions)",
+         "ATB V.3 requires 0; define joint functions as E functions named by a negative B.4 "
+         "coefficient"},
+        {55, "NFORCE (applied forces)", "sled has no prescribed force functions"},
+        {61, "NWATER (water forces)", "sled has no water forces"},
+        {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
+    };
+    (void)bags;
+    (void)constraints;
+    for (const Unsupported& field : kUnsupported) {
+      const int value = r_.Integer(d1, field.first, field.first + 5, field.what);
+      if (value != 0) {
+        Refuse(d1, field.first, field.first + 5, fmt::format("{} is {}", field.what, value),
+               field.help);
+      }
+    }
+    for (int p = 0; p < planes; ++p) ReadPlane(p + 1);
+    for (int b = 0; b < belts; ++b) ReadBelt(b + 1);
+    for (int e = 0; e < ellipsoids; ++e) ReadEllipsoid(e + 1);
+    ReadSymmetry();
+    for (int s = 0; s < springs; ++s) ReadSpring(s + 1);
+  }
+
+  void ReadPlane(int number) {
+    const Card head = r_.Next(fmt::format("D.2 (plane {})", number));
+    PlaneCard plane;
+    plane.line = head.line;
+    const int j = r_.Integer(head, 1, 4, "J, the plane's number");
+    if (j != number && head.line != 0) {
+      Invalid(head, 1, 4, fmt::format("plane {} is numbered {}", number, j),
+              "planes are numbered in order from 1");
+    }
+    plane.title = r_.Text(head, 9, 28);
+    if (number == 1) {
+      Unverified(head, 1, 28,
+                 "planes are placed in the primary vehicle's frame (the vehicle whose MSEG is 0)");
+    }
+    for (int i = 0; i < 3; ++i) {
+      const Card corner = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1));
+      plane.corners[static_cast<std::size_t>(i)] = Triple(corner, 1, 12, "a corner of the plane");
+    }
+    deck_.planes.push_back(std::move(plane));
+  }
+
+  void ReadBelt(int number) {
+    const Card title = r_.Next(fmt::format("D.3 (belt {}, title)", number));
+    const Card anchors = r_.Next(fmt::format("D.3 (belt {}, anchors)", number));
+    const Card rest = r_.Next(fmt::format("D.3 (belt {}, reference point and slack)", number));
+    BeltCard belt;
+    belt.line = title.line;
+    belt.title = r_.Text(title, 1, 20);
+    belt.anchor_a = Triple(anchors, 1, 12, "anchor A");
+    belt.anchor_b = Triple(anchors, 37, 12, "anchor B");
+    const Vec3 point = Triple(rest, 1, 12, "the belt's reference point on the segment");
+    belt.slack = r_.Real(rest, 49, 60, "the slack (+) or the length (-)");
+    if (point != Vec3{}) {
+      Unverified(rest, 1, 36,
+                 "the belt's reference point on the segment is not converted: sled lays the "
+                 "webbing over the segment's ellipsoid from the anchors' geometry");
+    }
+    if (belt.slack < 0) {
+      Refuse(rest, 49, 60, fmt::format("a belt length ({})", belt.slack),
+             "sled's belts take their length from the initial geometry and a `slack`; give the "
+             "slack instead of the length");
+    }
+    deck_.belts.push_back(std::move(belt));
+  }
+
+  void ReadEllipsoid(int number) {
+    const Card card = r_.Next(fmt::format("D.5 (ellipsoid {})", number));
+    const int m = r_.Integer(card, 1, 6, "M, the ellipsoid's number");
+    const Vec3 semi_axes = Triple(card, 7, 6, "the semi-axes");
+    const Vec3 center = Triple(card, 25, 6, "the centre");
+    const Vec3 orientation = Triple(card, 43, 6, "yaw, pitch and roll");
+    Vec3 exponents{};
+    for (int i = 0; i < 3; ++i) {
+      const int first = 61 + 4 * i;
+      exponents[static_cast<std::size_t>(i)] = r_.Real(card, first, first + 3, "an exponent");
+      if (exponents[static_cast<std::size_t>(i)] == 0) exponents[static_cast<std::size_t>(i)] = 2;
+    }
+    if (exponents[0] != exponents[1] || exponents[1] != exponents[2]) {
+      Refuse(card, 61, 72, "a hyper-ellipsoid with different exponents per axis",
+             "sled's `degree` is one exponent for all three axes");
+    }
+    const int segments = static_cast<int>(deck_.segments.size());
+    const int vehicles = static_cast<int>(deck_.vehicles.size());
+    if (m >= 1 && m <= segments) {
+      SegmentCard& segment = deck_.segments[static_cast<std::size_t>(m - 1)];
+      segment.semi_axes = semi_axes;
+      segment.center = center;
+      segment.ellipsoid_orientation = orientation;
+      segment.degree = exponents[0];
+      segment.ellipsoid_line = card.line;
+    } else if (m > segments && m <= segments + vehicles) {
+      deck_.vehicle_ellipsoids.push_back(
+          {card.line, m - segments, semi_axes, center, orientation, exponents[0]});
+    } else {
+      Refuse(card, 1, 6, fmt::format("ellipsoid number {} (an airbag or ground ellipsoid)", m),
+             fmt::format("numbers 1 to {} replace a segment's ellipsoid and {} to {} are fixed "
+                         "in a vehicle; add ground ellipsoids by hand",
+                         segments, segments + 1, segments + vehicles));
+    }
+  }
+
+  void ReadSymmetry() {
+    const int segments = static_cast<int>(deck_.segments.size());
+    const int lines = std::max(1, (segments + 17) / 18);
+    for (int l = 0; l < lines; ++l) {
+      const Card card = r_.Next(fmt::format("D.7 (symmetry, line {})", l + 1));
+      if (l == 0) deck_.symmetry_line = card.line;
+      for (int i = 0; i < 18 && l * 18 + i < segments; ++i) {
+        Ref ref = Reference(card, 4 * i + 1, 4 * i + 4, "SYMMETRY, the mirror segment");
+        if (ref.number < 0) {
+          Refuse(card, 4 * i + 1, 4 * i + 4, "a negative (mirrored-check) symmetry entry",
+                 "sled's mirror symmetry pairs segments in the xz plane only");
+          ref.number = 0;
+        } else if (ref.number > segments) {
+          r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, 4 * i + 1, 4 * i + 4,
+                    fmt::format("card {}: segment {} does not exist", card.label, ref.number));
+          ref.number = 0;
+        }
+        deck_.symmetry.push_back(std::move(ref));
+      }
+    }
+  }
+
+  void ReadSpring(int number) {
+    const Card card = r_.Next(fmt::format("D.8 (spring {})", number));
+    SpringCard spring;
+    spring.line = card.line;
+    spring.first = Reference(card, 1, 3, "segment M");
+    spring.second = Reference(card, 4, 6, "segment N");
+    spring.at_first = Triple(card, 7, 6, "the attachment on M");
+    spring.at_second = Triple(card, 25, 6, "the attachment on N");
+    spring.free_length = r_.Real(card, 43, 48, "D0, the free length");
+    spring.linear = r_.Real(card, 49, 54, "A1, the linear spring coefficient");
+    spring.quadratic = r_.Real(card, 55, 60, "A2, the second spring coefficient");
+    spring.damping = r_.Real(card, 61, 66, "B1, the damping coefficient");
+    RefuseNonZero(card, 67, 72, r_.Real(card, 67, 72, "B2"), "B2 (a second damping coefficient)",
+                  "sled's springs take one linear `damping`");
+    if (spring.quadratic != 0) {
+      Unverified(card, 55, 60, "A2 is taken as the coefficient of the squared elongation");
+    }
+    deck_.springs.push_back(std::move(spring));
+  }
+
+  // --- E: functions ------------------------------------------------------------------------
+  void ReadE() {
+    for (int guard = 0; guard < 1000 && !r_.truncated(); ++guard) {
+      const Card head = r_.Next("E.1");
+      const int number = r_.Integer(head, 1, 4, "the function's number");
+      if (number > kMaxFunction) return;
+      FunctionCard function;
+      function.line = head.line;
+      function.where = r_.Range(head, 1, 4);
+      function.number = number;
+      function.title = r_.Text(head, 9, 28);
+      const std::string label = fmt::format("function {}", number);
+      if (number <= 0) {
+        Invalid(head, 1, 4, fmt::format("function number {}", number),
+                "functions are numbered 1 to 98; a number above 98 ends the E cards");
+      }
+      const Card e2 = r_.Next(fmt::format("E.2 ({})", label));
+      double d[5];
+      for (int i = 0; i < 5; ++i) d[i] = r_.Real(e2, 12 * i + 1, 12 * i + 12, "D0..D4");
+      if (d[1] == 0) {
+        function.form = FunctionCard::Form::kConstant;
+        function.constant = d[2];
+      } else {
+        function.form = d[1] > 0 ? FunctionCard::Form::kPolynomial : FunctionCard::Form::kTable;
+        ReadFunctionPart(function, d[1] > 0, label);
+        if (d[2] != 0) {
+          Refuse(e2, 25, 36, "a second part of the function (D2 is not zero)",
+                 "the meaning of D0 to D4 is not documented, so a two-part function cannot be "
+                 "converted safely; split it by hand");
+          if (d[2] > 0)
+            r_.Next(fmt::format("E.3 ({}, second part)", label));
+          else
+            SkipTable(label);
+        }
+        if (std::fabs(d[1]) != 1) {
+          Unverified(e2, 13, 24,
+                     fmt::format("D1 is {}: only its sign (polynomial or table) is used", d[1]));
+        }
+      }
+      if (d[0] != 0 || d[3] != 0 || d[4] != 0) {
+        Refuse(e2, 1, 60, "D0, D3 or D4 is not zero",
+               "the meaning of D0, D3 and D4 is not documented; convert this function by hand");
+      }
+      auto same = std::find_if(deck_.functions.begin(), deck_.functions.end(),
+                               [&](const FunctionCard& f) { return f.number == number; });
+      if (same != deck_.functions.end()) {
+        *same = std::move(function);  // a repeated number replaces the earlier function
+      } else {
+        deck_.functions.push_back(std::move(function));
+      }
+    }
+  }
+
+  void ReadFunctionPart(FunctionCard& function, bool polynomial, const std::string& label) {
+    if (polynomial) {
+      const Card e3 = r_.Next(fmt::format("E.3 ({})", label));
+      for (int i = 0; i < 6; ++i) {
+        function.coefficients.push_back(r_.Real(e3, 12 * i + 1, 12 * i + 12, "a coefficient"));
+      }
+      return;
+    }
+    const Card e4a = r_.Next(fmt::format("E.4.a ({})", label));
+    const int points = Count(e4a, 1, 6, "NPI, the number of points", 1000);
+    for (int line = 0; line < (points + 2) / 3; ++line) {
+      const Card e4b = r_.Next(fmt::format("E.4.b ({}, line {})", label, line + 1));
+      for (int k = 0; k < 3 && line * 3 + k < points; ++k) {
+        const int first = 24 * k + 1;
+        const double x = r_.Real(e4b, first, first + 11, "D, the argument");
+        const double y = r_.Real(e4b, first + 12, first + 23, "F(D), the value");
+        if (!function.points.empty() && x <= function.points.back().first) {
+          Invalid(
+              e4b, first, first + 11,
+              fmt::format("the argument {} does not follow {}", x, function.points.back().first),
+              "a table's arguments increase strictly");
+        }
+        function.points.emplace_back(x, y);
+      }
+    }
+    if (points < 2) {
+      Invalid(e4a, 1, 6, fmt::format("a table of {} points", points), "a table needs two points");
+    }
+  }
+
+  void SkipTable(const std::string& label) {
+    FunctionCard scratch;
+    ReadFunctionPart(scratch, false, label + ", second part");
+  }
+
+  // --- F: allowed contacts -----------------------------------------------------------------
+  void ReadF() {
+    const int planes = static_cast<int>(deck_.planes.size());
+    const int belts = static_cast<int>(deck_.belts.size());
+    const int segments = static_cast<int>(deck_.segments.size());
+    if (planes > 0) {
+      std::vector<int> counts = CountsPerItem("F.1.a", planes);
+      bool warned = false;
+      for (int p = 0; p < planes; ++p) {
+        for (int k = 0; k < counts[static_cast<std::size_t>(p)]; ++k) {
+          const Card card = r_.Next(fmt::format("F.1.b (plane {}, contact {})", p + 1, k + 1));
+          if (!warned) {
+            Unverified(card, 1, 44,
+                       "the F.1 plane-contact cards are read like F.3.b (plane, segment, 2 "
+                       "unused, 5 function numbers, NOUT in 41-44)");
+            warned = true;
+          }
+          ReadContact(card, true, p + 1, planes);
+        }
+      }
+    }
+    if (belts > 0) {
+      std::vector<int> counts = CountsPerItem("F.2.a", belts);
+      for (int b = 0; b < belts; ++b) {
+        for (int k = 0; k < counts[static_cast<std::size_t>(b)]; ++k) {
+          const Card card = r_.Next(fmt::format("F.2.b (belt {})", b + 1));
+          if (k > 0) {
+            Refuse(card, 1, 36, "a belt over more than one segment",
+                   "sled reads one F.2.b card per belt; write the belt's path by hand");
+            continue;
+          }
+          ReadBeltContact(card, deck_.belts[static_cast<std::size_t>(b)], b + 1);
+        }
+      }
+    }
+    std::vector<int> counts = CountsPerItem("F.3.a", segments);
+    for (int s = 0; s < segments; ++s) {
+      for (int k = 0; k < counts[static_cast<std::size_t>(s)]; ++k) {
+        const Card card = r_.Next(fmt::format("F.3.b (segment {}, contact {})", s + 1, k + 1));
+        ReadContact(card, false, s + 1, segments);
+      }
+    }
+    const std::vector<int> global = CountsPerItem("F.4.a", std::max(1, segments - 1));
+    for (std::size_t j = 0; j < global.size(); ++j) {
+      if (global[j] != 0) {
+        Refuse(r_.Next("F.4.b"), 1, 4, "a global-graphic joint contact",
+               "sled has no joint-surface contacts; remove the F.4 entries");
+        break;
+      }
+    }
+  }
+
+  std::vector<int> CountsPerItem(const std::string& label, int items) {
+    std::vector<int> counts;
+    for (int line = 0; line < (items + 17) / 18; ++line) {
+      const Card card = r_.Next(fmt::format("{} (line {})", label, line + 1));
+      for (int i = 0; i < 18 && line * 18 + i < items; ++i) {
+        counts.push_back(
+            Count(card, 4 * i + 1, 4 * i + 4, "a number of contacts", kMaxContacts / 10));
+      }
+    }
+    counts.resize(static_cast<std::size_t>(items), 0);
+    return counts;
+  }
+
+  void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction) {
+    *force = Reference(card, first, first + 3, "the force-deflection function");
+    const char* names[] = {"the inertial-spike function", "the R-factor function",
+                           "the G-factor function"};
+    for (int i = 1; i <= 3; ++i) {
+      const int at = first + 4 * i;
+      const int value = r_.Integer(card, at, at + 3, names[i - 1]);
+      if (value != 0) {
+        Refuse(card, at, at + 3, fmt::format("{} is {}", names[i - 1], value),
+               "the meaning of these functions is not documented; sled's contacts take "
+               "`damping`, `impulse` and the unloading attributes of their force function instead");
+      }
+    }
+    *friction = Reference(card, first + 16, first + 19, "the friction function");
+  }
+
+  void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
+    ContactCard contact;
+    contact.line = card.line;
+    contact.with_plane = with_plane;
+    const int j = r_.Integer(card, 1, 4, with_plane ? "J, the plane" : "J, the segment");
+    if (j != owner && card.line != 0) {
+      Invalid(
+          card, 1, 4,
+          fmt::format("J is {} on a card for {} {}", j, with_plane ? "plane" : "segment", owner),
+          "the cards follow the order of the counts on the .a card");
+    }
+    (void)owners;
+    if (with_plane) {
+      contact.other = Ref{owner, r_.Range(card, 1, 4), card.label};
+      contact.segment = Reference(card, 5, 8, "MS_SEG(1), the segment");
+    } else {
+      contact.segment = Ref{owner, r_.Range(card, 1, 4), card.label};
+      contact.other = Reference(card, 9, 12, "MS_SEG(2), the other segment");
+    }
+    ReadFunctionNumbers(card, 17, &contact.force, &contact.friction);
+    contact.output = r_.Integer(card, 41, 44, "NOUT, the output flag") != 0;
+    if (contact.force.number == 0) {
+      Refuse(card, 17, 20, "no force function (a rolling constraint)",
+             "write a `constraint ... : rolling(...)` by hand");
+      return;
+    }
+    deck_.contacts.push_back(std::move(contact));
+  }
+
+  void ReadBeltContact(const Card& card, BeltCard& belt, int number) {
+    const int j = r_.Integer(card, 1, 4, "J, the belt");
+    if (j != number && card.line != 0) {
+      Invalid(card, 1, 4, fmt::format("J is {} on the card of belt {}", j, number),
+              "the cards follow the belts' order");
+    }
+    belt.contact_line = card.line;
+    if (number == 1) {
+      Unverified(card, 17, 20,
+                 "a belt's force function is read as force against strain (elongation over "
+                 "length)");
+    }
+    belt.segment = Reference(card, 5, 8, "MS_SEG(1), the segment");
+    ReadFunctionNumbers(card, 17, &belt.force, &belt.friction);
+    // NX and NOUT come from the next line by format reversion (9I4 for 11 items).
+    const Card extra = r_.Next(fmt::format("F.2.b (belt {}, NX and NOUT)", number));
+    Unverified(extra, 1, 8,
+               "NX and NOUT of F.2.b are read from the next line (format reversion of 9I4 "
+               "for 11 items), as ATB V.3 does");
+    const int nx = r_.Integer(extra, 1, 4, "NX");
+    belt.output = r_.Integer(extra, 5, 8, "NOUT, the output flag") != 0;
+    if (nx != 0) {
+      Refuse(extra, 1, 4, fmt::format("NX is {}", nx), "the meaning of NX is not documented");
+    }
+  }
+
+  // --- G: initial conditions ---------------------------------------------------------------
+  void ReadG() {
+    const Card g1 = r_.Next("G.1.a");
+    const int i1 = r_.Integer(g1, 31, 34, "I1");
+    const int j1 = r_.Integer(g1, 35, 38, "J1");
+    const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
+    if (i1 == 15) {
+      Refuse(g1, 31, 34, "I1 = 15 asks for an equilibrium solve",
+             "use a `settle { duration = ... }` block instead, and remove the EQUILB cards");
+    }
+    if (i3 != 0) {
+      Refuse(g1, 47, 50, fmt::format("I3 is {}: velocities from another source", i3),
+             "the meaning of I3 = 1 and 2 is not documented; give the velocities on G.2");
+    }
+    if (j1 != 0) {
+      r_.Next("G.1.b (obsolete)");
+      Unverified(g1, 35, 38, "J1 is not zero: the obsolete G.1.b card is read and ignored");
+    }
+    // One G.2 card per reference segment: segment 1 and each J+1 whose JNT(J) = 0.
+    std::vector<int> references{1};
+    for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
+      if (deck_.joints[j].parent == 0) references.push_back(static_cast<int>(j) + 2);
+    }
+    for (const int segment : references) {
+      const Card card = r_.Next(fmt::format("G.2 (reference segment {})", segment));
+      InitialCard initial;
+      initial.line = card.line;
+      initial.segment = segment;
+      initial.position = Triple(card, 1, 10, "the position");
+      initial.velocity = Triple(card, 31, 10, "the velocity");
+      if (r_.Integer(card, 61, 63, "IREF2") != 0) {
+        Refuse(card, 61, 63, "IREF2: the velocity of a vehicle",
+               "write the velocity on the card itself");
+      }
+      if (r_.Integer(card, 64, 66, "IREF4") != 0) {
+        Refuse(card, 64, 66, "IREF4: a position relative to a vehicle",
+               "write the position in the inertial frame");
+      }
+      deck_.initial_positions.push_back(initial);
+    }
+    for (std::size_t s = 0; s < deck_.segments.size(); ++s) {
+      const Card card = r_.Next(fmt::format("G.3.a (segment {})", s + 1));
+      OrientationCard orientation;
+      orientation.line = card.line;
+      orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
+      orientation.angular_velocity = Triple(card, 31, 10, "the angular velocity");
+      for (int i = 0; i < 4; ++i) {
+        const int first = 61 + 3 * i;
+        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");
+        if (value != 0) {
+          Refuse(card, first, first + 2, fmt::format("ID{} is {}", i + 1, value),
+                 "sled's initial orientations are yaw, pitch, roll in the ground frame; leave "
+                 "columns 61-72 blank");
+          break;
+        }
+      }
+      deck_.initial_orientations.push_back(orientation);
+    }
+  }
+
+  // --- H: output requests ------------------------------------------------------------------
+  void ReadH() {
+    constexpr OutputCard::Kind kKinds[] = {
+        OutputCard::Kind::kAcceleration, OutputCard::Kind::kVelocity, OutputCard::Kind::kPosition};
+    for (int k = 0; k < 3 && !r_.truncated(); ++k) {
+      if (r_.OnlyBlankLinesRemain()) return;  // decks may end before the H cards
+      const Card head = r_.Next(fmt::format("H.{}.a", k + 1));
+      const int count = Count(head, 1, 6, "KSG, the number of requests", kMaxOutputs);
+      if (count >= 1) ReadOutput(head, kKinds[k], 7, 10);
+      if (count <= 1) {
+        r_.Next(fmt::format("H.{} (dummy)", k + 1));
+        continue;
+      }
+      for (int i = 1; i < count; ++i) {
+        ReadOutput(r_.Next(fmt::format("H.{}.b (request {})", k + 1, i + 1)), kKinds[k], 1, 10);
+      }
+    }
+  }
+
+  void ReadOutput(const Card& card, OutputCard::Kind kind, int kref_first, int msg_first) {
+    OutputCard output;
+    output.line = card.line;
+    output.kind = kind;
+    const int kref_last = msg_first - 1;
+    const int kref = r_.Integer(card, kref_first, kref_last, "KREF, the reference segment");
+    output.segment = Reference(card, msg_first, msg_first + 2, "MSG, the segment");
+    output.point = Triple(card, 13, 12, "the point on the segment");
+    r_.Integer(card, 49, 54, "NODPR");
+    if (kref != 0) {
+      Refuse(card, kref_first, kref_last, fmt::format("KREF is {}: relative to a segment", kref),
+             "sled's point outputs are in the ground frame");
+      return;
+    }
+    deck_.outputs.push_back(std::move(output));
+  }
+
+  CardReader& r_;
+  Deck deck_;
+};
+
+}  // namespace
+
+Deck ReadAinDeck(CardReader& reader) { return AinReader(reader).Read(); }
+
+}  // namespace sled::lang::legacy

@@ -1,0 +1,166 @@
+// What a CVS-III / ATB deck says, card group by card group, after reading and validation: the
+// reader fills it, the mapping turns it into the AST. Numbers stay in the deck's units; indices
+// are the deck's (1-based). Each entry keeps the line of its card for the comments of the
+// generated scenario, and references keep their field's range for diagnostics.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "lang/source/source_range.h"
+
+namespace sled::lang::legacy {
+
+using Vec3 = std::array<double, 3>;
+
+// A number on a card that refers to something else (a segment, a plane, a function).
+struct Ref {
+  int number = 0;
+  SourceRange where;
+  std::string card;  // the card's label, for messages
+};
+
+struct DeckUnits {
+  std::string length;  // sled unit symbols: "in", "lbf", "s"
+  std::string force;
+  std::string time;
+};
+
+// The five numbers of a B.4 joint spring (or a reference to a joint function).
+struct JointSpring {
+  double linear = 0, quadratic = 0, cubic = 0, energy_loss = 0, stop = 0;
+  Ref function;  // number > 0: a negative first coefficient named E function |n|
+};
+
+struct SegmentCard {
+  std::uint32_t line = 0;
+  std::string name;
+  double weight = 0;
+  Vec3 inertia{}, semi_axes{}, center{};
+  bool has_principal_axes = false;
+  Vec3 principal_axes{};
+  // A D.5 card may replace the contact ellipsoid.
+  std::uint32_t ellipsoid_line = 0;
+  Vec3 ellipsoid_orientation{};
+  double degree = 2;
+};
+
+enum class JointType { kBall, kPin, kEuler, kSlip };
+
+struct JointCard {
+  std::uint32_t line = 0;
+  std::string name;
+  int parent = 0;  // JNT(J); the child is segment J + 1; 0 starts a new reference body
+  JointType type = JointType::kBall;
+  Vec3 at_parent{}, at_child{}, axes_parent{}, axes_child{};
+  JointSpring flexure, twist, spin;  // spin for Euler joints only (B.4.b)
+  Vec3 initial_angles{};             // Euler joints: ANG on B.4.b
+  double viscous = 0, coulomb = 0, restitution = 0;
+};
+
+struct VehicleCard {
+  std::uint32_t line = 0;
+  std::string title;
+  Vec3 orientation{}, position{};
+  double speed = 0, duration = 0;
+};
+
+struct PlaneCard {
+  std::uint32_t line = 0;
+  std::string title;
+  std::array<Vec3, 3> corners{};
+};
+
+struct BeltCard {
+  std::uint32_t line = 0;
+  std::string title;
+  Vec3 anchor_a{}, anchor_b{};
+  double slack = 0;
+  // From F.2.b.
+  std::uint32_t contact_line = 0;
+  Ref segment, force, friction;
+  bool output = false;
+};
+
+struct VehicleEllipsoidCard {
+  std::uint32_t line = 0;
+  int vehicle = 0;  // 1-based among the vehicles
+  Vec3 semi_axes{}, center{}, orientation{};
+  double degree = 2;
+};
+
+struct SpringCard {
+  std::uint32_t line = 0;
+  Ref first, second;
+  Vec3 at_first{}, at_second{};
+  double free_length = 0, linear = 0, quadratic = 0, damping = 0;
+};
+
+struct FunctionCard {
+  std::uint32_t line = 0;
+  SourceRange where;  // E.1 columns 1-4
+  int number = 0;
+  std::string title;
+  enum class Form { kConstant, kPolynomial, kTable } form = Form::kConstant;
+  double constant = 0;
+  std::vector<double> coefficients;               // A0..A5
+  std::vector<std::pair<double, double>> points;  // (D, F(D))
+};
+
+struct ContactCard {
+  std::uint32_t line = 0;
+  bool with_plane = false;  // F.1 (plane) or F.3 (segment)
+  Ref segment, other, force, friction;
+  bool output = false;
+};
+
+struct InitialCard {
+  std::uint32_t line = 0;
+  int segment = 0;
+  Vec3 position{}, velocity{};
+};
+
+struct OrientationCard {
+  std::uint32_t line = 0;
+  Vec3 angles{}, angular_velocity{};
+};
+
+struct OutputCard {
+  std::uint32_t line = 0;
+  enum class Kind { kAcceleration, kVelocity, kPosition } kind = Kind::kAcceleration;
+  Ref segment;
+  Vec3 point{};
+};
+
+struct Deck {
+  std::string date, title, subtitle;
+  DeckUnits units;
+  std::uint32_t units_line = 0;
+  Vec3 gravity{};
+  double g = 0;
+  std::uint32_t control_line = 0;
+  int steps = 0;
+  double dt = 0, first_step = 0, max_step = 0, min_step = 0;
+  std::vector<int> print_controls;
+  std::string body_title;
+  std::uint32_t body_line = 0;
+  std::vector<SegmentCard> segments;
+  std::vector<JointCard> joints;
+  std::vector<VehicleCard> vehicles;  // the primary vehicle (MSEG = 0) last, as in the deck
+  std::vector<PlaneCard> planes;
+  std::vector<BeltCard> belts;
+  std::vector<VehicleEllipsoidCard> vehicle_ellipsoids;
+  std::uint32_t symmetry_line = 0;
+  std::vector<Ref> symmetry;  // per segment
+  std::vector<SpringCard> springs;
+  std::vector<FunctionCard> functions;
+  std::vector<ContactCard> contacts;
+  std::vector<InitialCard> initial_positions;
+  std::vector<OrientationCard> initial_orientations;  // per segment
+  std::vector<OutputCard> outputs;
+};
+
+}  // namespace sled::lang::legacy

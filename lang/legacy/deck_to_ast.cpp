@@ -1,0 +1,749 @@
+// The mapping from a read deck to the scenario AST: one declaration per card entity, names from
+// the deck, numbers in the deck's units, and a comment naming each declaration's card.
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "lang/legacy/convert.h"
+
+namespace sled::lang::legacy {
+namespace {
+
+// --- Building the tree --------------------------------------------------------------------
+
+ast::Unit MakeUnit(std::string_view text) {
+  ast::Unit unit;
+  int sign = 1;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    std::size_t end = text.find_first_of("*/", i);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view factor = text.substr(i, end - i);
+    int exponent = 1;
+    const std::size_t caret = factor.find('^');
+    if (caret != std::string_view::npos) {
+      exponent = std::stoi(std::string(factor.substr(caret + 1)));
+      factor = factor.substr(0, caret);
+    }
+    unit.factors.push_back({std::string(factor), sign * exponent, {}});
+    if (end < text.size()) sign = text[end] == '/' ? -1 : 1;
+    i = end + 1;
+  }
+  return unit;
+}
+
+ast::Expr Number(double value, std::string_view unit = {}) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kNumber;
+  expr.number = value == 0 ? 0.0 : value;  // never print `-0`
+  if (!unit.empty()) expr.unit = MakeUnit(unit);
+  return expr;
+}
+
+ast::Expr Vector(const Vec3& v, std::string_view unit) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kVector;
+  for (const double c : v) expr.operands.push_back(Number(c));
+  expr.unit = MakeUnit(unit);
+  return expr;
+}
+
+ast::Expr Path(const std::string& dotted) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kPath;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t dot = dotted.find('.', start);
+    expr.path.push_back(dotted.substr(start, dot - start));
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return expr;
+}
+
+ast::Expr String(std::string text) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kString;
+  expr.text = std::move(text);
+  return expr;
+}
+
+ast::Expr Arrow(std::vector<ast::Expr> chain) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kArrow;
+  expr.operands = std::move(chain);
+  return expr;
+}
+
+ast::Expr Binary(char op, ast::Expr left, ast::Expr right) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kBinary;
+  expr.op = op;
+  expr.operands.push_back(std::move(left));
+  expr.operands.push_back(std::move(right));
+  return expr;
+}
+
+ast::Expr Negate(ast::Expr operand) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kUnary;
+  expr.op = '-';
+  expr.operands.push_back(std::move(operand));
+  return expr;
+}
+
+ast::Expr Call(std::string callee, std::vector<std::pair<std::string, ast::Expr>> arguments) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kCall;
+  expr.path.push_back(std::move(callee));
+  for (auto& [name, value] : arguments) {
+    expr.arguments.push_back({name, {}, std::make_unique<ast::Expr>(std::move(value))});
+  }
+  return expr;
+}
+
+ast::Statement Attribute(std::string keyword, ast::Expr value) {
+  ast::Statement statement;
+  statement.keyword = std::move(keyword);
+  statement.has_value = true;
+  statement.values.push_back(std::move(value));
+  return statement;
+}
+
+ast::Statement Declaration(std::string keyword, ast::Expr target, std::string comment = {}) {
+  ast::Statement statement;
+  statement.keyword = std::move(keyword);
+  statement.target = std::move(target);
+  statement.block = std::make_unique<ast::Block>();
+  if (!comment.empty()) statement.leading_comments.push_back({" " + comment, {}, false});
+  return statement;
+}
+
+void Add(ast::Statement& parent, ast::Statement child) {
+  parent.block->statements.push_back(std::move(child));
+}
+
+ast::Statement Row(ast::Expr from, ast::Expr to) {
+  ast::Statement row;
+  row.kind = ast::StatementKind::kRow;
+  std::vector<ast::Expr> chain;
+  chain.push_back(std::move(from));
+  chain.push_back(std::move(to));
+  row.values.push_back(Arrow(std::move(chain)));
+  return row;
+}
+
+std::string CardComment(std::string_view card, std::uint32_t line) {
+  return fmt::format("card {}, line {}", card, line);
+}
+
+bool IsZero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
+// --- Names --------------------------------------------------------------------------------
+
+// A deck label as a sled name: lower case, words joined by `_`, never a word the grammar or the
+// frames reserve, unique among `taken`.
+std::string NameOf(std::string_view label, std::string_view fallback,
+                   std::set<std::string>& taken) {
+  std::string name;
+  for (const char c : label) {
+    if (std::isalnum(static_cast<unsigned char>(c))) {
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    } else if (!name.empty() && name.back() != '_') {
+      name += '_';
+    }
+  }
+  while (!name.empty() && name.back() == '_') name.pop_back();
+  if (name.size() > 24) name.resize(24);
+  while (!name.empty() && name.back() == '_') name.pop_back();
+  static const std::set<std::string> kReserved = {"at",   "on",    "with",    "as",    "filter",
+                                                  "true", "false", "ground",  "x",     "y",
+                                                  "z",    "body",  "segment", "joint", "function"};
+  if (name.empty()) name = std::string(fallback);
+  if (std::isdigit(static_cast<unsigned char>(name[0]))) name = std::string(fallback) + "_" + name;
+  if (kReserved.count(name) != 0) name += "_";
+  std::string unique = name;
+  for (int n = 2; taken.count(unique) != 0; ++n) unique = fmt::format("{}_{}", name, n);
+  taken.insert(unique);
+  return unique;
+}
+
+// --- The mapping --------------------------------------------------------------------------
+
+enum class Use { kContact, kBelt, kJoint };
+
+class Mapper {
+ public:
+  Mapper(const Deck& deck, DiagnosticConsumer& diagnostics)
+      : deck_(deck),
+        diagnostics_(diagnostics),
+        L(deck.units.length),
+        F(deck.units.force),
+        T(deck.units.time) {}
+
+  ast::File Map() {
+    NameEverything();
+    ast::Statement scenario =
+        Declaration("scenario", String(deck_.title.empty() ? "converted deck" : deck_.title));
+    scenario.leading_comments.push_back(
+        {fmt::format(" Converted by `sled convert` from an ATB deck{}.",
+                     deck_.date.empty() ? "" : " dated " + deck_.date),
+         {},
+         false});
+    if (!deck_.subtitle.empty())
+      scenario.leading_comments.push_back({" " + deck_.subtitle, {}, false});
+    ast::Block& body = *scenario.block;
+
+    ast::Statement g = Attribute("let", Number(deck_.g, L + "/" + T + "^2"));
+    g.keyword = "let";
+    g.target = Path("deck_g");
+    g.leading_comments.push_back(
+        {" " + CardComment("A.3", deck_.units_line) + ": weights are divided by G", {}, false});
+    body.statements.push_back(std::move(g));
+    body.statements.push_back(Attribute("gravity", Vector(deck_.gravity, L + "/" + T + "^2")));
+    MapRunSettings(body);
+    MapBody(body);
+    MapVehicles(body);
+    MapSurfaces(body);
+    MapRestraints(body);
+    MapFunctions(body);
+    MapInitial(body);
+    MapOutputs(body);
+
+    ast::File file;
+    file.body.statements.push_back(std::move(scenario));
+    return file;
+  }
+
+ private:
+  void Report(DiagnosticKind kind, const Ref& ref, std::string message, std::string help = {}) {
+    Diagnostic diagnostic = MakeDiagnostic(kind, ref.where, std::move(message));
+    diagnostic.help = std::move(help);
+    diagnostic.show_column_range = true;
+    diagnostics_.Consume(std::move(diagnostic));
+  }
+
+  void NameEverything() {
+    body_ = NameOf(deck_.body_title, "body", taken_);
+    for (const SegmentCard& segment : deck_.segments) {
+      segments_.push_back(NameOf(segment.name, "segment", body_names_));
+    }
+    for (const JointCard& joint : deck_.joints) {
+      joints_.push_back(NameOf(joint.name, "joint", body_names_));
+    }
+    for (const VehicleCard& vehicle : deck_.vehicles) {
+      const std::string title = vehicle.title.substr(0, vehicle.title.find_first_of(" ,;:"));
+      vehicles_.push_back(NameOf(title, "vehicle", taken_));
+    }
+    for (const PlaneCard& plane : deck_.planes)
+      planes_.push_back(NameOf(plane.title, "plane", taken_));
+    for (const BeltCard& belt : deck_.belts) belts_.push_back(NameOf(belt.title, "belt", taken_));
+  }
+
+  std::string Primary() const { return vehicles_.empty() ? "ground" : vehicles_.back(); }
+
+  // A segment of the body by deck number, or empty after reporting a bad number.
+  std::string Segment(const Ref& ref, std::string_view what) {
+    if (ref.number < 1 || ref.number > static_cast<int>(segments_.size())) {
+      Report(DiagnosticKind::kDeckCountOutOfRange, ref,
+             fmt::format("card {}: {} {} does not exist", ref.card, what, ref.number),
+             fmt::format("segments are numbered 1 to {}", segments_.size()));
+      return {};
+    }
+    return body_ + "." + segments_[static_cast<std::size_t>(ref.number - 1)];
+  }
+
+  const FunctionCard* Function(const Ref& ref) {
+    for (const FunctionCard& function : deck_.functions) {
+      if (function.number == ref.number) return &function;
+    }
+    Report(DiagnosticKind::kDeckUndefinedFunction, ref,
+           fmt::format("card {}: function {} is not defined", ref.card, ref.number),
+           "define it with E.1 and E.2 cards, or correct the number");
+    return nullptr;
+  }
+
+  // The name under which a function is declared for one kind of use (its units depend on it).
+  std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use) {
+    const FunctionCard* function = Function(ref);
+    if (function == nullptr) return std::nullopt;
+    auto key = std::make_pair(function->number, static_cast<int>(use));
+    auto found = function_names_.find(key);
+    if (found == function_names_.end()) {
+      std::string name =
+          NameOf(function->title, fmt::format("function_{}", function->number), taken_);
+      found = function_names_.emplace(key, name).first;
+      uses_.push_back({function, use, name});
+    }
+    return Path(found->second);
+  }
+
+  // A friction coefficient from a constant function; zero for no function.
+  std::optional<double> Friction(const Ref& ref) {
+    if (ref.number == 0) return 0.0;
+    const FunctionCard* function = Function(ref);
+    if (function == nullptr) return std::nullopt;
+    used_.insert(function->number);
+    if (function->form != FunctionCard::Form::kConstant) {
+      Report(DiagnosticKind::kDeckNotExpressible, ref,
+             fmt::format("card {}: friction function {} is not a constant", ref.card, ref.number),
+             "sled's `friction` is one coefficient; use a constant function (D1 = 0)");
+      return std::nullopt;
+    }
+    return function->constant;
+  }
+
+  void MapRunSettings(ast::Block& body) {
+    ast::Statement time = Declaration(
+        "time", Path("x"), CardComment("A.4", deck_.control_line) + ": NSTEPS output steps of DT");
+    time.target.reset();
+    Add(time, Attribute("end", Binary('*', Number(deck_.steps), Number(deck_.dt, T))));
+    Add(time, Attribute("output_every", Number(deck_.dt, T)));
+    body.statements.push_back(std::move(time));
+    ast::Statement integrator = Declaration("integrator", Path("exponential"));
+    if (deck_.first_step > 0)
+      Add(integrator, Attribute("initial_step", Number(deck_.first_step, T)));
+    if (deck_.max_step > 0) Add(integrator, Attribute("max_step", Number(deck_.max_step, T)));
+    if (deck_.min_step > 0) Add(integrator, Attribute("min_step", Number(deck_.min_step, T)));
+    body.statements.push_back(std::move(integrator));
+  }
+
+  ast::Expr Torque(const JointSpring& spring, const Ref& owner, std::string_view angle_unit) {
+    (void)owner;
+    std::vector<std::pair<std::string, ast::Expr>> coefficients;
+    coefficients.emplace_back("", Number(0));
+    coefficients.emplace_back("",
+                              Number(spring.linear, F + "*" + L + "/" + std::string(angle_unit)));
+    if (spring.quadratic != 0 || spring.cubic != 0) {
+      coefficients.emplace_back(
+          "", Number(spring.quadratic, F + "*" + L + "/" + std::string(angle_unit) + "^2"));
+    }
+    if (spring.cubic != 0) {
+      coefficients.emplace_back(
+          "", Number(spring.cubic, F + "*" + L + "/" + std::string(angle_unit) + "^3"));
+    }
+    return Call("polynomial", std::move(coefficients));
+  }
+
+  bool HasSpring(const JointSpring& spring) const {
+    return spring.function.number != 0 || spring.linear != 0 || spring.quadratic != 0 ||
+           spring.cubic != 0;
+  }
+
+  void AddSpring(ast::Statement& joint, const char* attribute, const JointSpring& spring) {
+    if (spring.function.number != 0) {
+      if (auto function = FunctionFor(spring.function, Use::kJoint)) {
+        Add(joint, Attribute(attribute, std::move(*function)));
+      }
+    } else if (HasSpring(spring)) {
+      Add(joint, Attribute(attribute, Torque(spring, spring.function, "deg")));
+    }
+  }
+
+  void MapBody(ast::Block& scenario) {
+    ast::Statement body =
+        Declaration("body", Path(body_),
+                    CardComment("B.1", deck_.body_line) + fmt::format(": {}", deck_.body_title));
+    for (std::size_t i = 0; i < deck_.segments.size(); ++i) {
+      const SegmentCard& card = deck_.segments[i];
+      ast::Statement segment =
+          Declaration("segment", Path(segments_[i]), CardComment("B.2.a", card.line));
+      if (card.weight == 0) {
+        Add(segment, Attribute("mass", Number(0, "kg")));
+        Add(segment, Attribute("singular", ast::Expr{}));
+        segment.block->statements.back().values[0].kind = ast::ExprKind::kBool;
+        segment.block->statements.back().values[0].text = "true";
+      } else {
+        Add(segment, Attribute("mass", Binary('/', Number(card.weight, F), Path("deck_g"))));
+        Add(segment, Attribute("inertia", Vector(card.inertia, F + "*" + T + "^2*" + L)));
+      }
+      if (card.has_principal_axes)
+        Add(segment, Attribute("principal_axes", Vector(card.principal_axes, "deg")));
+      if (!IsZero(card.semi_axes)) {
+        ast::Statement ellipsoid =
+            Declaration("ellipsoid", Path("x"),
+                        card.ellipsoid_line ? CardComment("D.5", card.ellipsoid_line) : "");
+        ellipsoid.target.reset();
+        Add(ellipsoid, Attribute("semi_axes", Vector(card.semi_axes, L)));
+        if (!IsZero(card.center)) Add(ellipsoid, Attribute("center", Vector(card.center, L)));
+        if (!IsZero(card.ellipsoid_orientation))
+          Add(ellipsoid, Attribute("orientation", Vector(card.ellipsoid_orientation, "deg")));
+        if (card.degree != 2) Add(ellipsoid, Attribute("degree", Number(card.degree)));
+        Add(segment, std::move(ellipsoid));
+      }
+      body.block->statements.push_back(std::move(segment));
+    }
+    for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
+      const JointCard& card = deck_.joints[j];
+      const std::string& child = segments_[j + 1];
+      const bool null = card.parent == 0;
+      const std::string& parent = segments_[null ? 0 : static_cast<std::size_t>(card.parent - 1)];
+      static constexpr const char* kTypes[] = {"ball", "pin", "euler", "slip"};
+      const char* type = null ? "null" : kTypes[static_cast<int>(card.type)];
+      ast::Statement joint =
+          Declaration("joint", Path(joints_[j]), CardComment("B.3.a", card.line));
+      std::vector<ast::Expr> chain;
+      chain.push_back(Path(parent));
+      chain.push_back(Path(child));
+      joint.clauses.push_back({":", {}, Call(type, {{"", Arrow(std::move(chain))}})});
+      if (null) {
+        joint.block.reset();
+        body.block->statements.push_back(std::move(joint));
+        continue;
+      }
+      ast::Statement at_parent = Attribute("at", Vector(card.at_parent, L));
+      at_parent.target = Path(parent);
+      ast::Statement at_child = Attribute("at", Vector(card.at_child, L));
+      at_child.target = Path(child);
+      Add(joint, std::move(at_parent));
+      Add(joint, std::move(at_child));
+      if (!IsZero(card.axes_parent)) {
+        ast::Statement axes = Attribute("axes", Vector(card.axes_parent, "deg"));
+        axes.target = Path(parent);
+        Add(joint, std::move(axes));
+      }
+      if (!IsZero(card.axes_child)) {
+        ast::Statement axes = Attribute("axes", Vector(card.axes_child, "deg"));
+        axes.target = Path(child);
+        Add(joint, std::move(axes));
+      }
+      if (card.type == JointType::kEuler) {
+        AddSpring(joint, "precession", card.flexure);
+        AddSpring(joint, "nutation", card.twist);
+        AddSpring(joint, "spin", card.spin);
+      } else {
+        AddSpring(joint, "flexure", card.flexure);
+        if (card.type == JointType::kBall) AddSpring(joint, "twist", card.twist);
+      }
+      if (card.flexure.energy_loss != 0)
+        Add(joint, Attribute("energy_loss", Number(card.flexure.energy_loss)));
+      if (card.flexure.stop != 0) Add(joint, Attribute("stop", Number(card.flexure.stop, "deg")));
+      if (card.type == JointType::kBall && card.twist.stop != 0)
+        Add(joint, Attribute("twist_stop", Number(card.twist.stop, "deg")));
+      if (card.viscous != 0)
+        Add(joint, Attribute("viscous", Number(card.viscous, F + "*" + L + "*" + T + "/deg")));
+      if (card.coulomb != 0) Add(joint, Attribute("coulomb", Number(card.coulomb, F + "*" + L)));
+      if (card.restitution != 0) Add(joint, Attribute("restitution", Number(card.restitution)));
+      body.block->statements.push_back(std::move(joint));
+    }
+    scenario.statements.push_back(std::move(body));
+  }
+
+  void MapVehicles(ast::Block& scenario) {
+    for (std::size_t v = 0; v < deck_.vehicles.size(); ++v) {
+      const VehicleCard& card = deck_.vehicles[v];
+      ast::Statement vehicle = Declaration(
+          "vehicle", Path(vehicles_[v]),
+          CardComment("C.2.a", card.line) + (card.title.empty() ? "" : ": " + card.title));
+      if (!IsZero(card.position)) Add(vehicle, Attribute("position", Vector(card.position, L)));
+      if (!IsZero(card.orientation))
+        Add(vehicle, Attribute("orientation", Vector(card.orientation, "deg")));
+      if (card.speed != 0) {
+        Add(vehicle, Attribute("velocity", Vector({card.speed, 0, 0}, L + "/" + T)));
+        Add(vehicle,
+            Attribute("motion", Call("half_sine", {{"delta_v", Number(card.speed, L + "/" + T)},
+                                                   {"duration", Number(card.duration, T)},
+                                                   {"axis", Negate(Path("x"))}})));
+      }
+      scenario.statements.push_back(std::move(vehicle));
+    }
+  }
+
+  void MapSurfaces(ast::Block& scenario) {
+    for (std::size_t p = 0; p < deck_.planes.size(); ++p) {
+      const PlaneCard& card = deck_.planes[p];
+      ast::Statement plane = Declaration("plane", Path(planes_[p]), CardComment("D.2", card.line));
+      plane.clauses.push_back({"on", {}, Path(Primary())});
+      ast::Statement corners;
+      corners.keyword = "corners";
+      corners.has_value = true;
+      for (const Vec3& corner : card.corners) corners.values.push_back(Vector(corner, L));
+      Add(plane, std::move(corners));
+      scenario.statements.push_back(std::move(plane));
+    }
+    std::set<std::string> taken_local;
+    for (const VehicleEllipsoidCard& card : deck_.vehicle_ellipsoids) {
+      const std::string& vehicle = vehicles_[static_cast<std::size_t>(card.vehicle - 1)];
+      ast::Statement ellipsoid =
+          Declaration("ellipsoid", Path(NameOf(vehicle + "_ellipsoid", "ellipsoid", taken_)),
+                      CardComment("D.5", card.line));
+      ellipsoid.clauses.push_back({"on", {}, Path(vehicle)});
+      Add(ellipsoid, Attribute("semi_axes", Vector(card.semi_axes, L)));
+      if (!IsZero(card.center)) Add(ellipsoid, Attribute("center", Vector(card.center, L)));
+      if (!IsZero(card.orientation))
+        Add(ellipsoid, Attribute("orientation", Vector(card.orientation, "deg")));
+      if (card.degree != 2) Add(ellipsoid, Attribute("degree", Number(card.degree)));
+      scenario.statements.push_back(std::move(ellipsoid));
+    }
+    for (const ContactCard& card : deck_.contacts) {
+      const std::string segment = Segment(card.segment, "segment");
+      std::string other;
+      if (card.with_plane) {
+        other = planes_[static_cast<std::size_t>(card.other.number - 1)];
+      } else {
+        other = Segment(card.other, "segment");
+      }
+      auto force = FunctionFor(card.force, Use::kContact);
+      const auto friction = Friction(card.friction);
+      if (segment.empty() || other.empty() || !force || !friction) continue;
+      ast::Statement contact = Declaration(
+          "contact", Path(segment), CardComment(card.with_plane ? "F.1.b" : "F.3.b", card.line));
+      contact.clauses.push_back({"with", {}, Path(other)});
+      Add(contact, Attribute("force", std::move(*force)));
+      if (*friction != 0) Add(contact, Attribute("friction", Number(*friction)));
+      if (card.output) contact_outputs_.emplace_back(segment, other);
+      scenario.statements.push_back(std::move(contact));
+    }
+  }
+
+  void MapRestraints(ast::Block& scenario) {
+    for (std::size_t b = 0; b < deck_.belts.size(); ++b) {
+      const BeltCard& card = deck_.belts[b];
+      if (card.contact_line == 0) {
+        Ref where{0, {}, "D.3"};
+        (void)where;
+        continue;  // the F.2.b card was missing: reported by the reader
+      }
+      const std::string segment = Segment(card.segment, "segment");
+      auto force = FunctionFor(card.force, Use::kBelt);
+      const auto friction = Friction(card.friction);
+      if (segment.empty() || !force || !friction) continue;
+      ast::Statement belt = Declaration(
+          "belt", Path(belts_[b]),
+          CardComment("D.3", card.line) + fmt::format(" and F.2.b, line {}", card.contact_line));
+      belt.clauses.push_back({"on", {}, Path(Primary())});
+      std::vector<ast::Expr> path;
+      path.push_back(Vector(card.anchor_a, L));
+      path.push_back(Path(segment));
+      path.push_back(Vector(card.anchor_b, L));
+      Add(belt, Attribute("path", Arrow(std::move(path))));
+      Add(belt, Attribute("force", std::move(*force)));
+      if (card.slack > 0) Add(belt, Attribute("slack", Number(card.slack, L)));
+      if (*friction != 0) Add(belt, Attribute("friction", Number(*friction)));
+      if (card.output) belt_outputs_.push_back(belts_[b]);
+      scenario.statements.push_back(std::move(belt));
+    }
+    for (std::size_t s = 0; s < deck_.springs.size(); ++s) {
+      const SpringCard& card = deck_.springs[s];
+      const std::string first = Segment(card.first, "segment M");
+      const std::string second = Segment(card.second, "segment N");
+      if (first.empty() || second.empty()) continue;
+      const std::string name = NameOf(fmt::format("spring_{}", s + 1), "spring", taken_);
+      ast::Statement spring = Declaration("spring", Path(name), CardComment("D.8", card.line));
+      std::vector<ast::Expr> chain;
+      chain.push_back(Path(first));
+      chain.push_back(Path(second));
+      spring.clauses.push_back({":", {}, Arrow(std::move(chain))});
+      ast::Statement at_first = Attribute("at", Vector(card.at_first, L));
+      at_first.target = Path(first);
+      ast::Statement at_second = Attribute("at", Vector(card.at_second, L));
+      at_second.target = Path(second);
+      Add(spring, std::move(at_first));
+      Add(spring, std::move(at_second));
+      std::vector<std::pair<std::string, ast::Expr>> coefficients;
+      coefficients.emplace_back("", Number(0));
+      coefficients.emplace_back("", Number(card.linear, F + "/" + L));
+      if (card.quadratic != 0)
+        coefficients.emplace_back("", Number(card.quadratic, F + "/" + L + "^2"));
+      Add(spring, Attribute("stiffness", Call("polynomial", std::move(coefficients))));
+      if (card.damping != 0)
+        Add(spring, Attribute("damping", Number(card.damping, F + "*" + T + "/" + L)));
+      if (card.free_length != 0) Add(spring, Attribute("free_length", Number(card.free_length, L)));
+      scenario.statements.push_back(std::move(spring));
+    }
+    // D.7: mutual pairs become mirror pairs.
+    ast::Statement symmetry =
+        Declaration("symmetry", Path("mirror"), CardComment("D.7", deck_.symmetry_line));
+    for (std::size_t i = 0; i < deck_.symmetry.size(); ++i) {
+      const Ref& ref = deck_.symmetry[i];
+      if (ref.number == 0) continue;
+      const auto other = static_cast<std::size_t>(ref.number - 1);
+      if (other >= deck_.symmetry.size() ||
+          deck_.symmetry[other].number != static_cast<int>(i + 1)) {
+        Report(DiagnosticKind::kDeckInvalidValue, ref,
+               fmt::format("card {}: segment {} names {} as its mirror, but not the reverse",
+                           ref.card, i + 1, ref.number),
+               "symmetry pairs are mutual");
+        continue;
+      }
+      if (other < i) continue;
+      ast::Statement pair;
+      pair.keyword = "pair";
+      pair.has_value = true;
+      pair.values.push_back(Path(body_ + "." + segments_[i]));
+      pair.values.push_back(Path(body_ + "." + segments_[other]));
+      Add(symmetry, std::move(pair));
+    }
+    if (!symmetry.block->statements.empty()) scenario.statements.push_back(std::move(symmetry));
+  }
+
+  void MapFunctions(ast::Block& scenario) {
+    // Declared after their uses were seen, in the order of the E cards.
+    std::vector<ast::Statement> statements;
+    for (const FunctionCard& function : deck_.functions) {
+      bool used = used_.count(function.number) != 0;
+      for (const FunctionUse& use : uses_) {
+        if (use.function != &function) continue;
+        used = true;
+        statements.push_back(FunctionStatement(function, use.use, use.name));
+      }
+      if (!used) {
+        Report(DiagnosticKind::kDeckUnusedFunction, Ref{function.number, function.where, "E.1"},
+               fmt::format("card E.1: function {} (`{}`) is used by no card and is left out",
+                           function.number, function.title),
+               "without a use its units are unknown; declare it by hand if you need it");
+      }
+    }
+    for (auto& statement : statements) scenario.statements.push_back(std::move(statement));
+  }
+
+  ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name) {
+    const std::string argument_unit = use == Use::kContact ? L : use == Use::kJoint ? "deg" : "";
+    const std::string result_unit = use == Use::kJoint ? F + "*" + L : F;
+    const char* argument = use == Use::kContact ? "deflection"
+                           : use == Use::kJoint ? "angle"
+                                                : "strain";
+    const char* result = use == Use::kJoint ? "torque" : "force";
+    ast::Statement statement =
+        Declaration("function", Path(name),
+                    CardComment("E.1", function.line) +
+                        fmt::format(": function {}{}", function.number,
+                                    function.title.empty() ? "" : ", " + function.title));
+    statement.has_value = true;
+    std::vector<ast::Expr> signature;
+    signature.push_back(Path(argument));
+    signature.push_back(Path(result));
+    switch (function.form) {
+      case FunctionCard::Form::kConstant:
+        statement.values.push_back(
+            Call("constant", {{"", Number(function.constant, result_unit)}}));
+        statement.block.reset();
+        break;
+      case FunctionCard::Form::kPolynomial: {
+        std::vector<std::pair<std::string, ast::Expr>> arguments;
+        arguments.emplace_back("", Arrow(std::move(signature)));
+        std::size_t last = function.coefficients.size();
+        while (last > 2 && function.coefficients[last - 1] == 0) --last;
+        for (std::size_t k = 0; k < last; ++k) {
+          std::string unit = result_unit;
+          if (k > 0 && !argument_unit.empty())
+            unit += "/" + argument_unit + (k > 1 ? fmt::format("^{}", k) : "");
+          arguments.emplace_back("", Number(function.coefficients[k], unit));
+        }
+        statement.values.push_back(Call("polynomial", std::move(arguments)));
+        statement.block.reset();
+        break;
+      }
+      case FunctionCard::Form::kTable:
+        statement.values.push_back(Call("table", {{"", Arrow(std::move(signature))}}));
+        for (const auto& [x, y] : function.points) {
+          Add(statement, Row(Number(x, argument_unit), Number(y, result_unit)));
+        }
+        break;
+    }
+    return statement;
+  }
+
+  void MapInitial(ast::Block& scenario) {
+    for (const InitialCard& card : deck_.initial_positions) {
+      const auto index = static_cast<std::size_t>(card.segment - 1);
+      const std::string target = card.segment == 1 ? body_ : body_ + "." + segments_[index];
+      ast::Statement initial = Declaration("initial", Path(target), CardComment("G.2", card.line));
+      Add(initial, Attribute("position", Vector(card.position, L)));
+      if (!IsZero(card.velocity))
+        Add(initial, Attribute("velocity", Vector(card.velocity, L + "/" + T)));
+      AddOrientation(initial, index);
+      scenario.statements.push_back(std::move(initial));
+    }
+    for (std::size_t s = 0; s < deck_.initial_orientations.size(); ++s) {
+      const bool reference =
+          std::any_of(deck_.initial_positions.begin(), deck_.initial_positions.end(),
+                      [&](const InitialCard& c) { return c.segment == static_cast<int>(s + 1); });
+      const OrientationCard& card = deck_.initial_orientations[s];
+      if (reference || (IsZero(card.angles) && IsZero(card.angular_velocity))) continue;
+      ast::Statement initial =
+          Declaration("initial", Path(body_ + "." + segments_[s]), CardComment("G.3.a", card.line));
+      AddOrientation(initial, s);
+      scenario.statements.push_back(std::move(initial));
+    }
+    for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
+      const JointCard& card = deck_.joints[j];
+      if (card.type != JointType::kEuler || IsZero(card.initial_angles)) continue;
+      ast::Statement initial =
+          Declaration("initial", Path(body_ + "." + joints_[j]), CardComment("B.4.b", card.line));
+      Add(initial, Attribute("angles", Vector(card.initial_angles, "deg")));
+      scenario.statements.push_back(std::move(initial));
+    }
+  }
+
+  void AddOrientation(ast::Statement& initial, std::size_t segment) {
+    if (segment >= deck_.initial_orientations.size()) return;
+    const OrientationCard& card = deck_.initial_orientations[segment];
+    if (!IsZero(card.angles)) Add(initial, Attribute("orientation", Vector(card.angles, "deg")));
+    if (!IsZero(card.angular_velocity))
+      Add(initial, Attribute("angular_velocity", Vector(card.angular_velocity, "deg/" + T)));
+  }
+
+  void MapOutputs(ast::Block& scenario) {
+    ast::Statement output =
+        Declaration("output", Path("x"), "cards H.1 to H.3, and NOUT of the F cards");
+    output.target.reset();
+    static constexpr const char* kKinds[] = {"acceleration", "velocity", "position"};
+    for (const OutputCard& card : deck_.outputs) {
+      const std::string segment = Segment(card.segment, "segment");
+      if (segment.empty()) continue;
+      ast::Statement request;
+      request.keyword = kKinds[static_cast<int>(card.kind)];
+      request.target = Path(segment);
+      request.clauses.push_back({"at", {}, Vector(card.point, L)});
+      Add(output, std::move(request));
+    }
+    for (const auto& [a, b] : contact_outputs_) {
+      ast::Statement request;
+      request.keyword = "contact_force";
+      request.target = Path(a);
+      request.clauses.push_back({"with", {}, Path(b)});
+      Add(output, std::move(request));
+    }
+    for (const std::string& belt : belt_outputs_) {
+      ast::Statement request;
+      request.keyword = "belt_force";
+      request.target = Path(belt);
+      Add(output, std::move(request));
+    }
+    if (!output.block->statements.empty()) scenario.statements.push_back(std::move(output));
+  }
+
+  struct FunctionUse {
+    const FunctionCard* function;
+    Use use;
+    std::string name;
+  };
+
+  const Deck& deck_;
+  DiagnosticConsumer& diagnostics_;
+  const std::string L, F, T;
+  std::set<std::string> taken_{"deck_g"};
+  std::set<std::string> body_names_;
+  std::string body_;
+  std::vector<std::string> segments_, joints_, vehicles_, planes_, belts_;
+  std::map<std::pair<int, int>, std::string> function_names_;
+  std::vector<FunctionUse> uses_;
+  std::set<int> used_;
+  std::vector<std::pair<std::string, std::string>> contact_outputs_;
+  std::vector<std::string> belt_outputs_;
+};
+
+}  // namespace
+
+ast::File DeckToAst(const Deck& deck, DiagnosticConsumer& diagnostics) {
+  return Mapper(deck, diagnostics).Map();
+}
+
+}  // namespace sled::lang::legacy

@@ -1,0 +1,226 @@
+// The legacy deck reader and translator (lang/legacy): Fortran field reading, the diagnostics of
+// mangled decks (file, line, card and columns), the corpus deck's conversion and its stability
+// under the formatter, and robustness against truncated and corrupted decks.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "lang/diagnostics/diagnostic.h"
+#include "lang/diagnostics/render.h"
+#include "lang/format/formatter.h"
+#include "lang/legacy/convert.h"
+#include "lang/legacy/fortran_field.h"
+#include "lang/source/source_manager.h"
+#include "lang/syntax/parser.h"
+
+namespace sled::lang::legacy {
+namespace {
+
+const std::string kRoot = SLED_SOURCE_ROOT;
+const std::string kDeck = kRoot + "/examples/legacy/seated_occupant.ain";
+
+struct Converted {
+  std::string text;                      // the formatted scenario, empty on errors
+  std::vector<std::string> diagnostics;  // compact renderings
+  int errors = 0;
+  int warnings = 0;
+  bool Has(std::string_view needle) const {
+    for (const auto& d : diagnostics) {
+      if (d.find(needle) != std::string::npos) return true;
+    }
+    return false;
+  }
+};
+
+Converted Convert(const std::string& text, BlankMode blanks = BlankMode::kIgnore) {
+  SourceManager sources;
+  DiagnosticCollector collector;
+  const FileId id = sources.Add("deck.ain", text);
+  ConvertOptions options;
+  options.diagnostics = &collector;
+  options.blanks = blanks;
+  const ast::File file = ConvertAinDeck(sources, id, options);
+  Converted out;
+  if (!collector.has_errors()) out.text = Format(file);
+  collector.SortByPosition();
+  for (const Diagnostic& d : collector.diagnostics())
+    out.diagnostics.push_back(RenderCompact(sources, d));
+  out.errors = collector.error_count();
+  out.warnings = collector.warning_count();
+  return out;
+}
+
+std::string CorpusDeck() {
+  auto text = ReadFile(kDeck);
+  EXPECT_TRUE(text.has_value()) << kDeck;
+  return text.value_or("");
+}
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::string Join(const std::vector<std::string>& lines, std::size_t count) {
+  std::string text;
+  for (std::size_t i = 0; i < count && i < lines.size(); ++i) text += lines[i] + "\n";
+  return text;
+}
+
+// The 1-based line of the first card starting with `prefix`.
+std::size_t LineStarting(const std::vector<std::string>& lines, std::string_view prefix) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind(prefix, 0) == 0) return i + 1;
+  }
+  ADD_FAILURE() << "no line starts with " << prefix;
+  return 0;
+}
+
+TEST(FortranField, ReadsRealsAsFormattedReadsDo) {
+  EXPECT_EQ(ReadRealField("  26.6", BlankMode::kIgnore).number, 26.6);
+  EXPECT_EQ(ReadRealField("   386", BlankMode::kIgnore).number, 386.0);  // Fw.0: a whole number
+  EXPECT_EQ(ReadRealField("1.5E-3", BlankMode::kIgnore).number, 1.5e-3);
+  EXPECT_EQ(ReadRealField("1.5D+2", BlankMode::kIgnore).number, 150.0);
+  EXPECT_EQ(ReadRealField(" 1.5-3", BlankMode::kIgnore).number, 1.5e-3);
+  EXPECT_EQ(ReadRealField("      ", BlankMode::kIgnore).number, 0.0);
+  EXPECT_TRUE(ReadRealField("      ", BlankMode::kIgnore).blank);
+  EXPECT_EQ(ReadRealField("1 2. ", BlankMode::kIgnore).number, 12.0);  // BN: blanks vanish
+  EXPECT_EQ(ReadRealField(" 1 2. ", BlankMode::kZero).number, 102.0);  // BZ: embedded blank is 0
+  EXPECT_EQ(ReadRealField("12a", BlankMode::kIgnore).problem, FieldProblem::kNotANumber);
+  EXPECT_EQ(ReadRealField("-", BlankMode::kIgnore).problem, FieldProblem::kNotANumber);
+  EXPECT_EQ(ReadRealField("1e999", BlankMode::kIgnore).problem, FieldProblem::kOutOfRange);
+}
+
+TEST(FortranField, ReadsIntegersAndBlankZeroMode) {
+  EXPECT_EQ(ReadIntegerField("  15", BlankMode::kIgnore).number, 15.0);
+  EXPECT_EQ(ReadIntegerField(" -3 ", BlankMode::kIgnore).number, -3.0);
+  EXPECT_EQ(ReadIntegerField(" 1  ", BlankMode::kIgnore).number, 1.0);
+  EXPECT_EQ(ReadIntegerField(" 1  ", BlankMode::kZero).number, 100.0);  // left-justified in CVS-III
+  EXPECT_EQ(ReadIntegerField("15. ", BlankMode::kIgnore).problem, FieldProblem::kNotAnInteger);
+  EXPECT_EQ(ReadIntegerField("1x", BlankMode::kIgnore).problem, FieldProblem::kNotANumber);
+  EXPECT_EQ(ReadIntegerField("99999999999", BlankMode::kIgnore).problem, FieldProblem::kOutOfRange);
+}
+
+TEST(LegacyConvert, CorpusDeckConvertsAndFormatsStably) {
+  const Converted converted = Convert(CorpusDeck());
+  ASSERT_EQ(converted.errors, 0) << converted.diagnostics.front();
+  ASSERT_FALSE(converted.text.empty());
+  // The printed scenario parses back without errors, and formatting it again changes nothing.
+  SourceManager sources;
+  DiagnosticCollector collector;
+  const FileId id = sources.Add("converted.sled", converted.text);
+  ParseOptions parse;
+  parse.diagnostics = &collector;
+  const ast::File reparsed = Parse(sources, id, parse);
+  EXPECT_FALSE(collector.has_errors());
+  EXPECT_EQ(Format(reparsed), converted.text);
+  // Names and units come from the deck; each declaration names its card.
+  EXPECT_NE(converted.text.find("segment lt {"), std::string::npos);
+  EXPECT_NE(converted.text.find("mass = 26.6 lbf / deck_g"), std::string::npos);
+  EXPECT_NE(converted.text.find("joint lumb : ball(lt -> ct)"), std::string::npos);
+  EXPECT_NE(converted.text.find("// card B.2.a, line"), std::string::npos);
+  EXPECT_NE(converted.text.find("function seat_foam = table(deflection -> force) {"),
+            std::string::npos);
+  EXPECT_NE(converted.text.find("1 in -> 150 lbf"), std::string::npos);
+  // The unverified fields the deck uses are reported as warnings, and only those.
+  EXPECT_TRUE(converted.Has("warning[W0501]")) << converted.diagnostics.size();
+}
+
+TEST(LegacyConvert, LettersInANumericFieldNameLineCardAndColumns) {
+  std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t line = LineStarting(lines, "UT  ");
+  lines[line - 1].replace(26, 4, "1.7x");  // columns 27-30 hold PHI(y)
+  const Converted converted = Convert(Join(lines, lines.size()));
+  EXPECT_TRUE(
+      converted.Has(fmt::format("deck.ain:{}:25-30: error[E0502]: card B.2.a (segment 3), "
+                                "columns 25-30",
+                                line)))
+      << converted.diagnostics.front();
+}
+
+TEST(LegacyConvert, EachManglingGetsItsCode) {
+  const std::vector<std::string> lines = Lines(CorpusDeck());
+  auto mangled = [&](std::string_view prefix, auto edit) {
+    std::vector<std::string> copy = lines;
+    edit(copy[LineStarting(copy, prefix) - 1]);
+    return Convert(Join(copy, copy.size()));
+  };
+  EXPECT_TRUE(mangled("    15    14", [](std::string& s) {
+                s.replace(0, 6, "   15.");
+              }).Has("error[E0503]"));
+  EXPECT_TRUE(mangled("    15    14", [](std::string& s) {
+                s.replace(0, 6, "    75");
+              }).Has("error[E0505]"));
+  EXPECT_TRUE(mangled("LT  ", [](std::string& s) { s[3] = '\t'; }).Has("error[E0504]"));
+  EXPECT_TRUE(
+      mangled("IN  LB", [](std::string& s) { s.replace(0, 4, "FURL"); }).Has("error[E0506]"));
+  EXPECT_TRUE(mangled("LUMB", [](std::string& s) {
+                s.replace(54, 6, " 5000.");
+              }).Has("columns 55-60: TENS_MAX"));
+  // Shifting a card's fields one column to the right puts digits where blanks belong.
+  EXPECT_GT(mangled("H    ", [](std::string& s) { s.insert(6, " "); }).errors, 0);
+  // Extra cards after H.3.
+  const Converted extra = Convert(Join(lines, lines.size()) + "     1  0  5\n");
+  EXPECT_TRUE(extra.Has("error[E0510]"));
+}
+
+TEST(LegacyConvert, BlankCardsAreDataNotSkipped) {
+  // Removing one of the 15 blank G.3.a cards leaves the deck one card short at the end.
+  std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t g3 = LineStarting(lines, "# G.3.a");
+  lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(g3));
+  const Converted converted = Convert(Join(lines, lines.size()));
+  EXPECT_GT(converted.errors, 0);
+}
+
+TEST(LegacyConvert, UndefinedFunctionIsReportedAtItsField) {
+  std::vector<std::string> lines = Lines(CorpusDeck());
+  // The first F.1.b card names function 1 in columns 17-20; make it 7.
+  const std::size_t line = LineStarting(lines, "   1   1   0   0   1");
+  lines[line - 1].replace(16, 4, "   7");
+  const Converted converted = Convert(Join(lines, lines.size()));
+  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:17-20: error[E0509]", line)));
+}
+
+TEST(LegacyConvertRobustness, EveryTruncationIsReportedNeverACrash) {
+  const std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t h_cards = LineStarting(lines, "# ---- H cards");
+  for (std::size_t keep = 0; keep < lines.size(); ++keep) {
+    const Converted converted = Convert(Join(lines, keep));
+    // Before the H cards, a cut deck always lacks a card it announced.
+    if (keep + 1 < h_cards) {
+      EXPECT_GT(converted.errors, 0) << "cut after line " << keep;
+    }
+  }
+}
+
+TEST(LegacyConvertRobustness, CorruptedCharactersNeverCrash) {
+  const std::string deck = CorpusDeck();
+  const char replacements[] = {'x', '9', ' ', '-', '.', '\t', '\n', '#', 'E'};
+  std::uint32_t state = 12345;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::string copy = deck;
+    for (int flips = 0; flips < 3; ++flips) {
+      state = state * 1664525u + 1013904223u;
+      const std::size_t at = state % copy.size();
+      copy[at] = replacements[(state >> 16) % sizeof(replacements)];
+    }
+    const Converted converted = Convert(copy, trial % 2 ? BlankMode::kZero : BlankMode::kIgnore);
+    if (converted.errors == 0) {
+      EXPECT_FALSE(converted.text.empty());
+    }
+  }
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
