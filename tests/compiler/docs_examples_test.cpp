@@ -217,7 +217,8 @@ TEST(ExamplesAndStdlib, EveryFileChecksWithoutErrorsOrWarnings) {
 TEST(ExamplesAndStdlib, EveryExampleHasAReadmeLine) {
   const std::string readme = ReadOrFail(kRoot + "/examples/README.md");
   for (const std::filesystem::path& file : SledFilesUnder(kRoot + "/examples")) {
-    const std::string name = file.filename().string();
+    // A link from the README's folder: `(pendulum.sled)`, `(numerics/spin_100.sled)`.
+    const std::string name = std::filesystem::relative(file, kRoot + "/examples").generic_string();
     EXPECT_NE(readme.find("(" + name + ")"), std::string::npos)
         << "examples/README.md has no line for " << name;
   }
