@@ -5,8 +5,9 @@
 #
 # 1. `sled study` on every case of examples/numerics/suite.txt and on the flagship, over the
 #    tolerance ladder $SLED_NUMERICS_TOLERANCES (default 1e-2 to 1e-6);
-# 2. `sled run` of the conservative smooth cases with each integrator at 1e-4, 1e-6 and 1e-8, for
-#    the energy balance's drift (summary.json, energy_balance.relative_residual);
+# 2. `sled run` of the conservative cases with each integrator at 1e-4, 1e-6 and 1e-8, for the
+#    energy balance's drift (summary.json, energy_balance.relative_residual) and the free body's
+#    angular momentum drift;
 # 3. the CVODE peer (tests/bench/cvode_peer.cpp) beside sled's integrators, when it is built;
 # 4. from those: the time each method needs to reach each error level, the convergence orders on
 #    the smooth cases (least-squares slope of log error against log evaluations) and the energy
@@ -307,6 +308,32 @@ for name in CONSERVATIVE:
             else:
                 cells.append(f"{s['energy_balance']['relative_residual']:.1e}")
         L.append(f"| {name} | {m} | " + " | ".join(cells) + " |")
+
+# Angular momentum of the free body: |I w| (body axes, principal moments from its scene) is
+# conserved in flight; its largest relative change over the run.
+scene = open(os.path.join(os.path.dirname(doc), "..", "examples", "numerics", "free_body.sled"))
+moments = [float(v) for v in re.search(r"inertia = \(([^)]*)\) kg\*m\^2", scene.read())
+           .group(1).split(",")]
+L.append("")
+L.append("Angular momentum drift of `free_body` (the largest change of |I w| over the run, over "
+         "its initial value, from the same runs' output rows):")
+L.append("")
+L.append("| method | 1e-4 | 1e-6 | 1e-8 |")
+L.append("|---|---|---|---|")
+for m in METHODS:
+    cells = []
+    for t in ("1e-4", "1e-6", "1e-8"):
+        path = os.path.join(out, "energy", f"free_body_{m}_{t}", "timeseries.csv")
+        if not os.path.exists(path):
+            cells.append("no run")
+            continue
+        with open(path) as f:
+            rows = list(csv.DictReader(f))
+        axes = [f"box.block.angular_velocity.{a} [rad/s]" for a in "xyz"]
+        norms = [math.sqrt(sum((i * float(r[a])) ** 2 for i, a in zip(moments, axes)))
+                 for r in rows]
+        cells.append(f"{max(abs(n - norms[0]) for n in norms) / norms[0]:.1e}")
+    L.append(f"| {m} | " + " | ".join(cells) + " |")
 
 os.makedirs(plots, exist_ok=True)
 for c in cases:
