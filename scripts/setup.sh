@@ -20,6 +20,7 @@ packages=(
   libgmock-dev
   libbenchmark-dev
   libmujoco-dev       # test- and benchmark-only peer (tests/verification, tests/bench)
+  libsundials-dev     # benchmark-only peer: CVODE (tests/bench/cvode_peer.cpp)
   nlohmann-json3-dev  # sled report reads summary.json
   chromium            # test-only: loads the report page headless (tests/report)
 )

@@ -217,7 +217,7 @@ TEST(ExamplesAndStdlib, EveryFileChecksWithoutErrorsOrWarnings) {
 TEST(ExamplesAndStdlib, EveryExampleHasAReadmeLine) {
   const std::string readme = ReadOrFail(kRoot + "/examples/README.md");
   for (const std::filesystem::path& file : SledFilesUnder(kRoot + "/examples")) {
-    // Linked by its path under examples/ (`legacy/x.sled` for a file in a subfolder).
+    // Linked by its path under examples/: `(pendulum.sled)`, `(legacy/x.sled)`.
     const std::string name = std::filesystem::relative(file, kRoot + "/examples").generic_string();
     EXPECT_NE(readme.find("(" + name + ")"), std::string::npos)
         << "examples/README.md has no line for " << name;

@@ -78,7 +78,8 @@ ReportInputs Inputs() {
       "occupant.head.acceleration.z [m/s^2]", "belt.lap.belt_force.span1 [N]"};
   inputs.raw = Table(names, 100.0);
   inputs.filtered = Table({names[0], names[1], names[2]}, 90.0);
-  inputs.glb = std::string("glTF\x02\x00\x00\x00 binary bytes", 24);
+  static constexpr char kGlb[] = "glTF\x02\x00\x00\x00 binary bytes";
+  inputs.glb = std::string(kGlb, sizeof(kGlb) - 1);  // the NULs are part of the bytes
   return inputs;
 }
 

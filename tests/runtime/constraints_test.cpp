@@ -395,10 +395,8 @@ TEST_P(EveryKind, SecondDerivativeFollowsTheStabilisation) {
 TEST_P(EveryKind, ProjectionClosesTheLoopsAndKeepsAConsistentStateUnchanged) {
   Model model = SceneWith(GetParam(), 0.0);
   Data data = MakeData(model);
-  const std::size_t nq = data.q.size();
-  std::vector<double> y(nq + data.v.size());
-  std::copy(data.q.begin(), data.q.end(), y.begin());
-  std::copy(data.v.begin(), data.v.end(), y.begin() + static_cast<std::ptrdiff_t>(nq));
+  std::vector<double> y(StateSize(model));
+  StoreState(data, y);
   const std::vector<double> consistent = y;
   Failure failure;
   ASSERT_TRUE(ProjectConstraints(model, data, model.start_time, y, &failure)) << failure.cause;
@@ -414,8 +412,7 @@ TEST_P(EveryKind, ProjectionClosesTheLoopsAndKeepsAConsistentStateUnchanged) {
   // The drift moves the points by ~1e-6 m and m/s; a light hand 5 cm from its pin takes the
   // velocity correction: a rate change of ~1e-6 / 0.05 rad/s.
   EXPECT_LT(change, 1e-3);
-  data.q.assign(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(nq));
-  data.v.assign(y.begin() + static_cast<std::ptrdiff_t>(nq), y.end());
+  LoadState(data, model.start_time, y);
   ASSERT_TRUE(Forward(model, data, nullptr));
   EXPECT_LE(data.constraints->phi.cwiseAbs().maxCoeff(), 1e-12);
   EXPECT_LE(data.constraints->phi_dot.cwiseAbs().maxCoeff(), 1e-12);

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "compiler/check/check.h"
 #include "compiler/lower/lower.h"
@@ -18,11 +20,15 @@ struct Compiled {
   std::string errors;  // rendered diagnostics; empty when the scene checks
 };
 
-inline Compiled CompileFile(lang::SourceManager& sources, lang::FileId file) {
+// `overrides` are `--set NAME=VALUE` pairs, the value as source text.
+inline Compiled CompileFile(
+    lang::SourceManager& sources, lang::FileId file,
+    const std::vector<std::pair<std::string, std::string>>& overrides = {}) {
   const std::filesystem::path root = SLED_SOURCE_ROOT;
   lang::DiagnosticCollector collector;
   compiler::CheckOptions check_options;
   check_options.diagnostics = &collector;
+  check_options.overrides = overrides;
   check_options.stdlib_root = (root / "stdlib").string();
   const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, file, check_options);
   Compiled compiled;
