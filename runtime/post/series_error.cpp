@@ -51,6 +51,10 @@ SeriesError CompareSeries(const Model& model, const TimeSeries& run,
     column += count;
   }
   for (std::size_t c = 1; c < column && c < reference.columns; ++c) {
+    // A contact point is zero while apart and jumps to where the surfaces meet: one row's shift
+    // of the first touch moves it by its whole range. The contact's force and deflection, which
+    // start from zero, carry its accuracy instead.
+    if (kinds[c] == Model::OutputKind::kContactPoint) continue;
     double deviation = 0.0, run_peak = 0.0, reference_peak = 0.0;
     for (std::size_t row = 0; row < error.rows; ++row) {
       const double expected = Value(reference, row, c), got = Value(run, row, c);

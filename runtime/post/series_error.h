@@ -2,7 +2,8 @@
 // the measures `sled study` puts against run time (docs/numerics.md). Each is relative, so
 // channels of different units compare: a channel's largest deviation over the largest range of
 // the reference's channels of its kind, a peak against the reference's peak, a criterion against
-// the reference's value.
+// the reference's value. Contact points are left out: they jump from zero to where the surfaces
+// meet, so a first touch one row earlier moves them by their whole range.
 #pragma once
 
 #include <vector>
