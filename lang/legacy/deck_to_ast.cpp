@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "lang/ast/make_expr.h"
 #include "lang/legacy/convert.h"
 
 namespace sled::lang::legacy {
@@ -74,30 +75,6 @@ ast::Expr String(std::string text) {
   return expr;
 }
 
-ast::Expr Arrow(std::vector<ast::Expr> chain) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kArrow;
-  expr.operands = std::move(chain);
-  return expr;
-}
-
-ast::Expr Binary(char op, ast::Expr left, ast::Expr right) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kBinary;
-  expr.op = op;
-  expr.operands.push_back(std::move(left));
-  expr.operands.push_back(std::move(right));
-  return expr;
-}
-
-ast::Expr Negate(ast::Expr operand) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kUnary;
-  expr.op = '-';
-  expr.operands.push_back(std::move(operand));
-  return expr;
-}
-
 ast::Expr Call(std::string callee, std::vector<std::pair<std::string, ast::Expr>> arguments) {
   ast::Expr expr;
   expr.kind = ast::ExprKind::kCall;
@@ -135,7 +112,7 @@ ast::Statement Row(ast::Expr from, ast::Expr to) {
   std::vector<ast::Expr> chain;
   chain.push_back(std::move(from));
   chain.push_back(std::move(to));
-  row.values.push_back(Arrow(std::move(chain)));
+  row.values.push_back(ast::MakeArrow(std::move(chain)));
   return row;
 }
 
@@ -303,7 +280,7 @@ class Mapper {
     ast::Statement time = Declaration(
         "time", Path("x"), CardComment("A.4", deck_.control_line) + ": NSTEPS output steps of DT");
     time.target.reset();
-    Add(time, Attribute("end", Binary('*', Number(deck_.steps), Number(deck_.dt, T))));
+    Add(time, Attribute("end", ast::MakeBinary('*', Number(deck_.steps), Number(deck_.dt, T))));
     Add(time, Attribute("output_every", Number(deck_.dt, T)));
     body.statements.push_back(std::move(time));
     ast::Statement integrator = Declaration("integrator", Path("exponential"));
@@ -360,7 +337,8 @@ class Mapper {
         segment.block->statements.back().values[0].kind = ast::ExprKind::kBool;
         segment.block->statements.back().values[0].text = "true";
       } else {
-        Add(segment, Attribute("mass", Binary('/', Number(card.weight, F), Path("deck_g"))));
+        Add(segment,
+            Attribute("mass", ast::MakeBinary('/', Number(card.weight, F), Path("deck_g"))));
         Add(segment, Attribute("inertia", Vector(card.inertia, F + "*" + T + "^2*" + L)));
       }
       if (card.has_principal_axes)
@@ -391,7 +369,7 @@ class Mapper {
       std::vector<ast::Expr> chain;
       chain.push_back(Path(parent));
       chain.push_back(Path(child));
-      joint.clauses.push_back({":", {}, Call(type, {{"", Arrow(std::move(chain))}})});
+      joint.clauses.push_back({":", {}, Call(type, {{"", ast::MakeArrow(std::move(chain))}})});
       if (null) {
         joint.block.reset();
         body.block->statements.push_back(std::move(joint));
@@ -449,7 +427,7 @@ class Mapper {
         Add(vehicle,
             Attribute("motion", Call("half_sine", {{"delta_v", Number(card.speed, L + "/" + T)},
                                                    {"duration", Number(card.duration, T)},
-                                                   {"axis", Negate(Path("x"))}})));
+                                                   {"axis", ast::MakeNegation(Path("x"))}})));
       }
       scenario.statements.push_back(std::move(vehicle));
     }
@@ -522,7 +500,7 @@ class Mapper {
       path.push_back(Vector(card.anchor_a, L));
       path.push_back(Path(segment));
       path.push_back(Vector(card.anchor_b, L));
-      Add(belt, Attribute("path", Arrow(std::move(path))));
+      Add(belt, Attribute("path", ast::MakeArrow(std::move(path))));
       Add(belt, Attribute("force", std::move(*force)));
       if (card.slack > 0) Add(belt, Attribute("slack", Number(card.slack, L)));
       if (*friction != 0) Add(belt, Attribute("friction", Number(*friction)));
@@ -539,7 +517,7 @@ class Mapper {
       std::vector<ast::Expr> chain;
       chain.push_back(Path(first));
       chain.push_back(Path(second));
-      spring.clauses.push_back({":", {}, Arrow(std::move(chain))});
+      spring.clauses.push_back({":", {}, ast::MakeArrow(std::move(chain))});
       ast::Statement at_first = Attribute("at", Vector(card.at_first, L));
       at_first.target = Path(first);
       ast::Statement at_second = Attribute("at", Vector(card.at_second, L));
@@ -627,7 +605,7 @@ class Mapper {
         break;
       case FunctionCard::Form::kPolynomial: {
         std::vector<std::pair<std::string, ast::Expr>> arguments;
-        arguments.emplace_back("", Arrow(std::move(signature)));
+        arguments.emplace_back("", ast::MakeArrow(std::move(signature)));
         std::size_t last = function.coefficients.size();
         while (last > 2 && function.coefficients[last - 1] == 0) --last;
         for (std::size_t k = 0; k < last; ++k) {
@@ -641,7 +619,7 @@ class Mapper {
         break;
       }
       case FunctionCard::Form::kTable:
-        statement.values.push_back(Call("table", {{"", Arrow(std::move(signature))}}));
+        statement.values.push_back(Call("table", {{"", ast::MakeArrow(std::move(signature))}}));
         for (const auto& [x, y] : function.points) {
           Add(statement, Row(Number(x, argument_unit), Number(y, result_unit)));
         }

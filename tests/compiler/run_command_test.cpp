@@ -23,8 +23,7 @@ using RunCommand = testing::SledProcessTest;
 TEST_F(RunCommand, ReportWritesThePageBesideTheOutputs) {
   // `--report` makes the page from the files the run just wrote, as `sled report DIR` does.
   const fs::path out = temp() / "out";
-  const SledResult result =
-      Sled({"run", "examples/pendulum.sled", "-o", out.string(), "--report"});
+  const SledResult result = Sled({"run", "examples/pendulum.sled", "-o", out.string(), "--report"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const std::string page = ReadText(out / "report.html");
   EXPECT_THAT(page, HasSubstr("<svg"));

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "lang/ast/ast.h"
+#include "lang/ast/make_expr.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/source/source_manager.h"
 #include "lang/syntax/parser.h"
@@ -422,29 +423,11 @@ ast::Expr Name(std::string name) {
   return expr;
 }
 
-ast::Expr Binary(char op, ast::Expr left, ast::Expr right) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kBinary;
-  expr.op = op;
-  expr.operands.push_back(std::move(left));
-  expr.operands.push_back(std::move(right));
-  return expr;
-}
-
-ast::Expr Negate(ast::Expr operand) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kUnary;
-  expr.op = '-';
-  expr.operands.push_back(std::move(operand));
-  return expr;
-}
-
 ast::Expr Arrow(ast::Expr a, ast::Expr b) {
-  ast::Expr expr;
-  expr.kind = ast::ExprKind::kArrow;
-  expr.operands.push_back(std::move(a));
-  expr.operands.push_back(std::move(b));
-  return expr;
+  std::vector<ast::Expr> chain;
+  chain.push_back(std::move(a));
+  chain.push_back(std::move(b));
+  return ast::MakeArrow(std::move(chain));
 }
 
 // Removes the paren nodes the formatter had to add, so a synthetic tree compares to its
@@ -462,15 +445,20 @@ ast::Expr StripParens(const ast::Expr& expr) {
 TEST(FormatExprTest, AddsParenthesesASyntheticTreeNeeds) {
   const std::vector<std::pair<ast::Expr, std::string>> cases = [] {
     std::vector<std::pair<ast::Expr, std::string>> out;
-    out.emplace_back(Binary('*', Binary('+', Name("a"), Name("b")), Name("c")), "(a + b) * c");
-    out.emplace_back(Binary('-', Name("a"), Binary('-', Name("b"), Name("c"))), "a - (b - c)");
-    out.emplace_back(Binary('-', Binary('-', Name("a"), Name("b")), Name("c")), "a - b - c");
-    out.emplace_back(Binary('^', Binary('^', Name("a"), Name("b")), Name("c")), "(a ^ b) ^ c");
-    out.emplace_back(Binary('^', Name("a"), Binary('^', Name("b"), Name("c"))), "a ^ b ^ c");
-    out.emplace_back(Binary('^', Negate(Name("a")), Name("b")), "(-a) ^ b");
-    out.emplace_back(Binary('^', Name("a"), Negate(Name("b"))), "a ^ -b");
-    out.emplace_back(Negate(Binary('+', Name("a"), Name("b"))), "-(a + b)");
-    out.emplace_back(Binary('*', Name("a"), Arrow(Name("b"), Name("c"))), "a * (b -> c)");
+    out.emplace_back(ast::MakeBinary('*', ast::MakeBinary('+', Name("a"), Name("b")), Name("c")),
+                     "(a + b) * c");
+    out.emplace_back(ast::MakeBinary('-', Name("a"), ast::MakeBinary('-', Name("b"), Name("c"))),
+                     "a - (b - c)");
+    out.emplace_back(ast::MakeBinary('-', ast::MakeBinary('-', Name("a"), Name("b")), Name("c")),
+                     "a - b - c");
+    out.emplace_back(ast::MakeBinary('^', ast::MakeBinary('^', Name("a"), Name("b")), Name("c")),
+                     "(a ^ b) ^ c");
+    out.emplace_back(ast::MakeBinary('^', Name("a"), ast::MakeBinary('^', Name("b"), Name("c"))),
+                     "a ^ b ^ c");
+    out.emplace_back(ast::MakeBinary('^', ast::MakeNegation(Name("a")), Name("b")), "(-a) ^ b");
+    out.emplace_back(ast::MakeBinary('^', Name("a"), ast::MakeNegation(Name("b"))), "a ^ -b");
+    out.emplace_back(ast::MakeNegation(ast::MakeBinary('+', Name("a"), Name("b"))), "-(a + b)");
+    out.emplace_back(ast::MakeBinary('*', Name("a"), Arrow(Name("b"), Name("c"))), "a * (b -> c)");
     out.emplace_back(Arrow(Arrow(Name("a"), Name("b")), Name("c")), "(a -> b) -> c");
     out.emplace_back(Number(0.1), "0.1");
     out.emplace_back(Number(1.5e-7), "1.5e-07");
@@ -487,8 +475,8 @@ TEST(FormatExprTest, AddsParenthesesASyntheticTreeNeeds) {
 TEST(FormatExprTest, SignsANegativeNumberWithoutSpellingAsUnaryMinus) {
   // It reads back as unary minus on a positive number: the same value, not the same tree.
   EXPECT_EQ(Format(Number(-2)), "-2");
-  EXPECT_EQ(Format(Binary('^', Number(-2), Number(2, "2"))), "(-2) ^ 2");
-  EXPECT_EQ(Format(Binary('-', Name("a"), Number(-2))), "a - -2");
+  EXPECT_EQ(Format(ast::MakeBinary('^', Number(-2), Number(2, "2"))), "(-2) ^ 2");
+  EXPECT_EQ(Format(ast::MakeBinary('-', Name("a"), Number(-2))), "a - -2");
 }
 
 TEST(FormatExprTest, EscapesStringsItCannotHoldVerbatim) {
