@@ -8,6 +8,7 @@
 
 #include "runtime/archive.h"
 #include "runtime/dynamics.h"
+#include "runtime/frame_motion.h"
 #include "runtime/joint.h"
 #include "runtime/mass_matrix.h"
 #include "runtime/tree_bias.h"
@@ -77,50 +78,6 @@ bool Fail(Failure* failure, const std::string& where, std::string cause) {
   return false;
 }
 
-// A frame's motion in world coordinates: the velocity and (classical) acceleration of its
-// origin, and its angular velocity and acceleration.
-struct FrameMotion {
-  Mat3 rotation = Mat3::Identity();
-  Vec3 origin = Vec3::Zero();
-  Vec3 velocity = Vec3::Zero();
-  Vec3 acceleration = Vec3::Zero();
-  Vec3 angular_velocity = Vec3::Zero();
-  Vec3 angular_acceleration = Vec3::Zero();
-};
-
-FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
-  FrameMotion motion;
-  switch (frame.kind) {
-    case FrameRef::Kind::kSegment: {
-      const auto s = static_cast<std::size_t>(frame.index);
-      const Mat3& R = data.rotation[s];
-      const Vec3 w = data.velocity[s].head<3>();
-      const Vec3 v = data.velocity[s].tail<3>();
-      motion.rotation = R;
-      motion.origin = data.position[s];
-      motion.velocity = R * v;
-      motion.angular_velocity = R * w;
-      // Spatial to classical: the origin's acceleration is a + w x v (segment coordinates).
-      motion.acceleration = R * (data.acceleration[s].tail<3>() + w.cross(v));
-      motion.angular_acceleration = R * data.acceleration[s].head<3>();
-      return motion;
-    }
-    case FrameRef::Kind::kVehicle: {
-      const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(frame.index)];
-      motion.rotation = vehicle.rotation;
-      motion.origin = vehicle.position;
-      motion.velocity = vehicle.velocity;
-      motion.acceleration = vehicle.acceleration;
-      motion.angular_velocity = vehicle.angular_velocity;
-      motion.angular_acceleration = vehicle.angular_acceleration;
-      return motion;
-    }
-    case FrameRef::Kind::kGround:
-      break;
-  }
-  return motion;
-}
-
 struct PointMotion {
   Vec3 position;
   Vec3 velocity;
@@ -181,8 +138,8 @@ bool Evaluate(const Model& model, const Data& data, ConstraintWorkspace& w, bool
                   "the constraint joins two prescribed frames (ground or vehicles): nothing can "
                   "move to satisfy it");
     }
-    const FrameMotion f1 = MotionOf(data, first);
-    const FrameMotion f2 = MotionOf(data, second);
+    const FrameMotion f1 = MotionWithAcceleration(data, first);
+    const FrameMotion f2 = MotionWithAcceleration(data, second);
     const PointMotion p1 = PointOf(f1, model.constraint_point_first[c]);
     const PointMotion p2 = PointOf(f2, model.constraint_point_second[c]);
     w.point_first[c] = p1.position;

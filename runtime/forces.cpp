@@ -4,6 +4,7 @@
 
 #include "runtime/airbag/airbag_forces.h"
 #include "runtime/contact/contact_forces.h"
+#include "runtime/frame_motion.h"
 #include "runtime/functions.h"
 #include "runtime/joint.h"
 #include "runtime/restraint/belts.h"
@@ -111,23 +112,9 @@ SwingTwist DecomposeSwingTwist(const Eigen::Quaterniond& rotation) {
 }
 
 PointState PointInFrame(const Data& data, const FrameRef& frame, const Vec3& point) {
-  switch (frame.kind) {
-    case FrameRef::Kind::kSegment: {
-      const auto s = static_cast<std::size_t>(frame.index);
-      const Vec3 arm = data.rotation[s] * point;
-      const Vec3 w = data.rotation[s] * data.velocity[s].head<3>();
-      const Vec3 v = data.rotation[s] * data.velocity[s].tail<3>();
-      return {data.position[s] + arm, v + w.cross(arm)};
-    }
-    case FrameRef::Kind::kVehicle: {
-      const VehicleState& vehicle = data.vehicle[static_cast<std::size_t>(frame.index)];
-      const Vec3 arm = vehicle.rotation * point;
-      return {vehicle.position + arm, vehicle.velocity + vehicle.angular_velocity.cross(arm)};
-    }
-    case FrameRef::Kind::kGround:
-      break;
-  }
-  return {point, Vec3::Zero()};
+  const FrameMotion motion = MotionOf(data, frame);
+  const Vec3 position = motion.origin + motion.rotation * point;
+  return {position, VelocityAt(motion, position)};
 }
 
 void ComputeForces(const Model& model, Data& data) {

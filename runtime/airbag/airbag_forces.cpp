@@ -9,6 +9,7 @@
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_geometry.h"
 #include "runtime/forces.h"
+#include "runtime/frame_motion.h"
 #include "runtime/functions.h"
 
 namespace sled::runtime {
@@ -21,10 +22,6 @@ constexpr double kMinimumVolumeFraction = 1e-3;
 // accuracy (far below the integrators' tolerances, so the rates stay smooth in the state).
 constexpr double kScaleTolerance = 1e-13;
 constexpr int kScaleIterations = 60;
-
-Vec3 PointVelocity(const FrameMotion& frame, const Vec3& point) {
-  return frame.velocity + frame.angular_velocity.cross(point - frame.origin);
-}
 
 // Support extent of an ellipsoid (semi-axes along the columns of `rotation`) along unit n.
 double Extent(const Vec3& semi_axes, const Mat3& rotation, const Vec3& n) {
@@ -94,9 +91,8 @@ Penetration Penetrate(const Model& model, Data& data, std::size_t b, const Frame
     // envelope grows: its surface point along the normal moves out by its full-size extent plus
     // the centre's move along x, per unit of scale.
     const Vec3 closing =
-        PointVelocity(frame, g.point) -
-        PointVelocity(MotionOf(data, {FrameRef::Kind::kSegment, table.contact_segment[c]}),
-                      g.point);
+        VelocityAt(frame, g.point) -
+        VelocityAt(MotionOf(data, {FrameRef::Kind::kSegment, table.contact_segment[c]}), g.point);
     out.motion_rate += cap.area * normal.dot(closing);
     out.per_scale += cap.area * (Extent(semi_axes, bag.rotation, normal) +
                                  semi_axes.x() * normal.dot(bag.rotation.col(0)));

@@ -72,30 +72,6 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
 
 }  // namespace
 
-FrameMotion MotionOf(const Data& data, const FrameRef& frame) {
-  FrameMotion out;
-  const auto i = static_cast<std::size_t>(frame.index);
-  switch (frame.kind) {
-    case FrameRef::Kind::kSegment:
-      out.origin = data.position[i];
-      out.rotation = data.rotation[i];
-      out.velocity = out.rotation * data.velocity[i].tail<3>();
-      out.angular_velocity = out.rotation * data.velocity[i].head<3>();
-      break;
-    case FrameRef::Kind::kVehicle: {
-      const VehicleState& v = data.vehicle[i];
-      out.origin = v.position;
-      out.rotation = v.rotation;
-      out.velocity = v.velocity;
-      out.angular_velocity = v.angular_velocity;
-      break;
-    }
-    case FrameRef::Kind::kGround:
-      break;
-  }
-  return out;
-}
-
 void PlaceContactSurfaces(const Model& model, Data& data) {
   const ContactTable& table = model.contacts;
   ContactState& state = data.contacts;
@@ -126,8 +102,7 @@ ContactGeometry PairGeometry(const Model& model, Data& data, std::size_t k) {
 
 Vec3 SurfacePointVelocity(const Model& model, const Data& data, std::size_t k, int side,
                           const Vec3& point) {
-  const FrameMotion frame = MotionOf(data, SurfaceFrame(model.contacts, k, side));
-  return frame.velocity + frame.angular_velocity.cross(point - frame.origin);
+  return VelocityAt(MotionOf(data, SurfaceFrame(model.contacts, k, side)), point);
 }
 
 void AccumulateContactForces(const Model& model, Data& data) {

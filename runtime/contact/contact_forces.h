@@ -8,18 +8,9 @@
 
 #include "runtime/contact/contact_geometry.h"
 #include "runtime/data.h"
+#include "runtime/frame_motion.h"
 
 namespace sled::runtime {
-
-// World pose and motion of a frame at the current kinematics (vehicles from data.vehicle).
-struct FrameMotion {
-  Vec3 origin = Vec3::Zero();
-  Mat3 rotation = Mat3::Identity();
-  Vec3 velocity = Vec3::Zero();
-  Vec3 angular_velocity = Vec3::Zero();
-};
-
-FrameMotion MotionOf(const Data& data, const FrameRef& frame);
 
 // Adds every contact pair's wrenches to data.external and records each pair's deflection, gap,
 // force and point in data.contacts. Needs current kinematics (positions and velocities).
