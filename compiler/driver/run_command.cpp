@@ -333,6 +333,11 @@ int RunCommand(const RunCommandOptions& options) {
       "evaluations)\n",
       series.rows(), directory, summary.wall_seconds, summary.stats.steps, summary.stats.rejected,
       summary.stats.evaluations);
+  if (!summary.checkpoints.empty()) {
+    std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
+                             summary.checkpoints.size() == 1 ? "" : "s",
+                             summary.checkpoints.back());
+  }
   const runtime::EnergySummary& energy = summary.energy;
   std::cerr << fmt::format(
       "sled: energy balance closes to {:.2g} % (largest residual {:.3g} J of {:.4g} J; at the "

@@ -36,6 +36,7 @@ TEST_F(CheckpointTest, AResumedRunIsBitIdenticalToTheUninterruptedOne) {
     const SledResult full =
         Sled({"run", scene, "-o", Out(method + "-full"), "--checkpoint-every", "20ms"});
     ASSERT_EQ(full.exit_code, 0) << full.err;
+    EXPECT_NE(full.err.find("2 checkpoints, the last"), std::string::npos) << full.err;
     const SledResult plain = Sled({"run", scene, "-o", Out(method + "-plain")});
     ASSERT_EQ(plain.exit_code, 0) << plain.err;
     for (const std::string at : {"0.020000", "0.040000"}) {
