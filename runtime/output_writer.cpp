@@ -116,6 +116,7 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
                      s.jacobians);
   out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
                      s.events);
+  out << fmt::format("    \"decaying_steps\": {},\n", s.decaying_steps);
   out << fmt::format("    \"max_local_error\": {},\n    \"error_estimate\": {}\n",
                      s.max_local_error, s.accumulated_error);
   out << "  },\n";

@@ -98,6 +98,7 @@ void ReadIntegrator(const Json& object, std::string* error, IntegratorSummary& o
   in.Number("jacobians", out.jacobians);
   in.Number("factorizations", out.factorizations);
   in.Number("events", out.events);
+  in.Number("decaying_steps", out.decaying_steps);
   in.Number("max_local_error", out.max_local_error);
   in.Number("error_estimate", out.error_estimate);
 }

@@ -18,6 +18,7 @@ struct IntegratorSummary {
   long long jacobians = 0;
   long long factorizations = 0;
   long long events = 0;
+  long long decaying_steps = 0;  // exponential method only
   double max_local_error = 0.0;
   double error_estimate = 0.0;
 };

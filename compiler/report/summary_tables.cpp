@@ -48,7 +48,7 @@ std::string RunSection(const RunSummaryFile& summary) {
 
 std::string IntegratorSection(const IntegratorSummary& s) {
   std::string html = "<section id=\"integrator\"><h2>Integrator</h2>";
-  html += KeyValueTable({
+  std::vector<std::pair<std::string, std::string>> rows = {
       {"method", EscapeHtml(s.method)},
       {"tolerance (relative, absolute)", fmt::format("{}, {}", Significant(s.relative_tolerance, 3),
                                                      Significant(s.absolute_tolerance, 3))},
@@ -58,7 +58,12 @@ std::string IntegratorSection(const IntegratorSummary& s) {
       {"events", fmt::format("{}", s.events)},
       {"largest local error", Significant(s.max_local_error, 3)},
       {"error estimate (accumulated)", Significant(s.error_estimate, 3)},
-  });
+  };
+  if (s.method == "exponential") {
+    // How much of the run the exponential part carried; the rest were third-order RK steps.
+    rows.push_back({"steps with a decay rate", fmt::format("{} of {}", s.decaying_steps, s.steps)});
+  }
+  html += KeyValueTable(rows);
   return html + "</section>";
 }
 

@@ -207,6 +207,10 @@ void ExponentialIntegrator::SerializeHistory(Archive& archive) {
 }
 
 void ExponentialIntegrator::StepAccepted() {
+  if (std::any_of(lambda_step_.begin(), lambda_step_.end(),
+                  [](double rate) { return rate < 0.0; })) {
+    ++mutable_stats().decaying_steps;
+  }
   std::copy(lambda_step_.begin(), lambda_step_.end(), lambda_place_.begin());
 }
 

@@ -77,6 +77,9 @@ struct IntegratorStats {
   long jacobians = 0;       // Jacobians formed (analytic or by differences)
   long factorizations = 0;  // linear systems factored (implicit methods)
   long events = 0;
+  // Accepted steps of the exponential method in which at least one 3-vector group was integrated
+  // with a decay rate (the rest were plain third-order Runge-Kutta steps); 0 for other methods.
+  long decaying_steps = 0;
   // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance),
   // and an estimate of the global error: the sum over steps of the local error estimates in
   // the weighted norm, times the tolerance scale.

@@ -400,6 +400,10 @@ TEST_P(ConvergenceOrder, ObservedOrderIsWithinHalfOfTheTheoreticalOrder) {
       // The spiral is integrated with its decay rate, not as plain RK3.
       const auto& exponential = dynamic_cast<const ExponentialIntegrator&>(*integrator);
       EXPECT_LT(exponential.decay_rates()[0], -0.9 * DecayingSpiral::kRate);
+      EXPECT_EQ(integrator->stats().decaying_steps, steps);  // and the stats say so
+    }
+    if (std::string(c.method) != "exponential") {
+      EXPECT_EQ(integrator->stats().decaying_steps, 0);
     }
   }
   for (std::size_t i = 1; i < errors.size(); ++i) {
