@@ -183,12 +183,13 @@ int StudyCommand(const StudyOptions& options) {
   std::filesystem::create_directories(directory, code);
   std::ofstream csv(std::filesystem::path(directory) / "study.csv");
   csv << "method,tolerance,wall_seconds,steps,rejected,evaluations,error_all,error_position,"
-         "error_peak_acceleration,error_criteria,failed\n";
+         "error_peak_acceleration,error_criteria,failed,decaying_steps\n";
   for (const Sample& s : samples) {
-    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{}\n", s.method, s.tolerance, s.wall_seconds,
-                       s.summary.stats.steps, s.summary.stats.rejected, s.summary.stats.evaluations,
-                       s.error.overall, s.error.position, s.error.peak_acceleration,
-                       s.error.criteria, s.summary.failed ? 1 : 0);
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", s.method, s.tolerance,
+                       s.wall_seconds, s.summary.stats.steps, s.summary.stats.rejected,
+                       s.summary.stats.evaluations, s.error.overall, s.error.position,
+                       s.error.peak_acceleration, s.error.criteria, s.summary.failed ? 1 : 0,
+                       s.summary.stats.decaying_steps);
   }
   std::ofstream svg(std::filesystem::path(directory) / "study.svg");
   svg << WorkPrecisionSvg(methods, samples);

@@ -44,6 +44,13 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
     EXPECT_LE(tight_error, loose_error) << loose[0];
     EXPECT_LT(loose_error, 1e-3) << loose[0];  // a tolerance of 1e-3 keeps within it
     EXPECT_GE(std::stoi(tight[3]), std::stoi(loose[3])) << loose[0];  // steps
+    ASSERT_EQ(loose.size(), 12u);
+    // Steps that used a decay rate: only the exponential method has them, never more than steps.
+    if (loose[0] == "exponential") {
+      EXPECT_LE(std::stoi(loose[11]), std::stoi(loose[3]));
+    } else {
+      EXPECT_EQ(loose[11], "0") << loose[0];
+    }
   }
   const std::string svg = ReadText(out / "study.svg");
   EXPECT_THAT(svg, HasSubstr("<svg"));
