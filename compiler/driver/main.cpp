@@ -49,10 +49,11 @@ commands:
                        tight reference: error against run time as a table, DIR/study.csv
                        and the work-precision plot DIR/study.svg (DIR defaults to FILE's
                        name with `-study`); the error of the scene's own settings
-  convert DECK [-o FILE] [--blank-zero]
-                       translate a CVS-III/ATB fixed-column deck (.ain) into a
-                       .sled scenario (standard output without -o); --blank-zero
-                       reads blank columns as zeros (FORTRAN IV decks)
+  convert DECK [-o FILE] [--blank-zero] [--deck=ain|lin]
+                       translate a CVS-III/ATB deck, fixed-column (.ain) or
+                       list-directed (.lin), into a .sled scenario (standard output
+                       without -o); --deck reads another extension as that format;
+                       --blank-zero reads blank columns as zeros (FORTRAN IV decks)
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -96,6 +97,7 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> overrides;
   bool iso_mme = false;
   bool blank_zero = false;
+  std::string deck_format;  // "ain", "lin" or empty (by the extension)
   std::vector<double> dump_times;
   double checkpoint_every = 0.0;
   std::string resume;
@@ -218,6 +220,18 @@ int RunFormat(const Options& options) {
 
 int RunConvert(const Options& options) {
   if (options.files.size() != 1) return UsageError("`convert` takes one deck");
+  std::optional<sled::lang::legacy::DeckFormat> format =
+      sled::lang::legacy::DeckFormatOfPath(options.files[0]);
+  if (options.deck_format == "ain") format = sled::lang::legacy::DeckFormat::kFixed;
+  if (options.deck_format == "lin") format = sled::lang::legacy::DeckFormat::kList;
+  if (!format) {
+    return UsageError(fmt::format(
+        "`{}` is neither an .ain nor a .lin deck; say which with --deck=ain or --deck=lin",
+        options.files[0]));
+  }
+  if (options.blank_zero && *format == sled::lang::legacy::DeckFormat::kList) {
+    return UsageError("--blank-zero applies to fixed-column (.ain) decks only");
+  }
   SourceManager sources;
   DiagnosticCollector collector;
   const auto file = LoadFile(sources, options.files[0], collector);
@@ -225,9 +239,10 @@ int RunConvert(const Options& options) {
   if (file) {
     sled::lang::legacy::ConvertOptions convert;
     convert.diagnostics = &collector;
+    convert.format = *format;
     convert.blanks = options.blank_zero ? sled::lang::legacy::BlankMode::kZero
                                         : sled::lang::legacy::BlankMode::kIgnore;
-    const auto ast = sled::lang::legacy::ConvertAinDeck(sources, *file, convert);
+    const auto ast = sled::lang::legacy::ConvertDeck(sources, *file, convert);
     if (!collector.has_errors()) text = sled::lang::Format(ast);
   }
   PrintDiagnostics(sources, collector, options.compact);
@@ -287,6 +302,11 @@ int main(int argc, char** argv) {
       options.dump_model = true;
     } else if (arg == "--blank-zero") {
       options.blank_zero = true;
+    } else if (arg.rfind("--deck=", 0) == 0) {
+      options.deck_format = arg.substr(7);
+      if (options.deck_format != "ain" && options.deck_format != "lin") {
+        return UsageError(fmt::format("`{}`: the deck format is `ain` or `lin`", arg));
+      }
     } else if (arg == "--no-lints") {
       options.lints = false;
     } else if (arg == "-o" || arg == "--output") {

@@ -6,43 +6,30 @@
 #include <fmt/format.h>
 
 namespace sled::lang::legacy {
+namespace {
 
-CardReader::CardReader(const SourceManager& sources, FileId file, BlankMode blanks,
-                       DiagnosticConsumer& diagnostics)
-    : file_(file), blanks_(blanks), diagnostics_(diagnostics) {
-  const std::string_view text = sources.buffer(file).text();
-  size_ = static_cast<std::uint32_t>(text.size());
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    lines_.push_back({static_cast<std::uint32_t>(start), line});
-    start = end + 1;
-  }
+std::string Trimmed(std::string_view text) {
+  const std::size_t first = text.find_first_not_of(' ');
+  const std::size_t last = text.find_last_not_of(' ');
+  return first == std::string_view::npos ? std::string()
+                                         : std::string(text.substr(first, last - first + 1));
 }
 
-bool CardReader::IsComment(std::size_t index) const {
-  const std::string_view text = lines_[index].text;
-  const std::size_t first = text.find_first_not_of(" \t");
-  return first != std::string_view::npos && text[first] == '#';
-}
+}  // namespace
 
-Card CardReader::Next(std::string label) {
+Card CardReader::Next(std::string label, const CardSpec& spec) {
   while (next_ < lines_.size() && IsComment(next_)) ++next_;
+  Card card;
+  card.label = std::move(label);
+  card.fields = &FieldsOf(spec.fortran);
+  card.ain_only_column = spec.ain_only_column;
   if (next_ >= lines_.size()) {
-    if (!truncated_) {
-      truncated_ = true;
-      ReportAt(DiagnosticKind::kDeckTruncated, EndOfDeck(),
-               fmt::format("the deck ends before card {}", label),
-               "a deck lists every card its counts announce; add the missing cards or correct the "
-               "count that asks for them");
-    }
-    return Card{0, {}, std::move(label)};
+    ReportTruncated("card " + card.label);
+    return card;
   }
   const std::size_t index = next_++;
-  Card card{static_cast<std::uint32_t>(index + 1), lines_[index].text, std::move(label)};
+  card.line = static_cast<std::uint32_t>(index + 1);
+  card.text = lines_[index].text;
   const std::size_t tab = card.text.find('\t');
   if (tab != std::string_view::npos) {
     const int column = static_cast<int>(tab) + 1;
@@ -53,81 +40,37 @@ Card CardReader::Next(std::string label) {
   return card;
 }
 
-bool CardReader::OnlyBlankLinesRemain() const {
-  for (std::size_t i = next_; i < lines_.size(); ++i) {
-    if (IsComment(i)) continue;
-    if (lines_[i].text.find_first_not_of(" \t") != std::string_view::npos) return false;
-  }
-  return true;
-}
-
-std::string_view CardReader::Peek() const {
-  std::size_t i = next_;
-  while (i < lines_.size() && IsComment(i)) ++i;
-  return i < lines_.size() ? lines_[i].text : std::string_view();
-}
-
 std::string_view CardReader::Columns(const Card& card, int first, int last) const {
   const auto begin = static_cast<std::size_t>(first - 1);
   if (begin >= card.text.size()) return {};
   return card.text.substr(begin, static_cast<std::size_t>(last - first + 1));
 }
 
-namespace {
-
-std::string Quoted(std::string_view text) {
-  const std::size_t first = text.find_first_not_of(' ');
-  const std::size_t last = text.find_last_not_of(' ');
-  return first == std::string_view::npos ? std::string()
-                                         : std::string(text.substr(first, last - first + 1));
+std::string_view CardReader::PlacementHint() const {
+  return "write it within its columns and check that the fields before it are in their columns";
 }
 
-}  // namespace
-
 double CardReader::Real(const Card& card, int first, int last, std::string_view what) {
+  if (FieldIndex(card, first, last) < 0) return 0.0;
   const std::string_view text = Columns(card, first, last);
   const FieldValue value = ReadRealField(text, blanks_);
   if (value.problem == FieldProblem::kNone) return value.number;
-  const std::string found = Quoted(text);
-  Report(DiagnosticKind::kDeckBadNumber, card, first, last,
-         fmt::format("card {}, columns {}-{} ({}): `{}` is not a number", card.label, first, last,
-                     what, found),
-         value.problem == FieldProblem::kOutOfRange
-             ? "the value is too large to represent"
-             : "the field holds a number such as `12.5`, `-0.25` or `1.5E-3`, within its columns; "
-               "check that the fields before it are in their columns");
+  ReportBadNumber(card, first, last, what, Trimmed(text), value.problem, false);
   return 0.0;
 }
 
 int CardReader::Integer(const Card& card, int first, int last, std::string_view what) {
+  if (FieldIndex(card, first, last) < 0) return 0;
   const std::string_view text = Columns(card, first, last);
   const FieldValue value = ReadIntegerField(text, blanks_);
   if (value.problem == FieldProblem::kNone) return static_cast<int>(value.number);
-  const std::string found = Quoted(text);
-  if (value.problem == FieldProblem::kNotAnInteger) {
-    Report(DiagnosticKind::kDeckIntegerExpected, card, first, last,
-           fmt::format("card {}, columns {}-{} ({}): `{}` is not a whole number", card.label, first,
-                       last, what, found),
-           "this field is an integer (Fortran I format): write it without a decimal point, "
-           "right-justified in its columns");
-  } else {
-    Report(DiagnosticKind::kDeckBadNumber, card, first, last,
-           fmt::format("card {}, columns {}-{} ({}): `{}` is not a whole number", card.label, first,
-                       last, what, found),
-           value.problem == FieldProblem::kOutOfRange
-               ? "the value is too large for an integer field"
-               : "the field holds a whole number such as `15`, right-justified in its columns; "
-                 "check that the fields before it are in their columns");
-  }
+  ReportBadNumber(card, first, last, what, Trimmed(text), value.problem, true);
   return 0;
 }
 
-std::string CardReader::Text(const Card& card, int first, int last) const {
-  return Quoted(Columns(card, first, last));
-}
-
-bool CardReader::Blank(const Card& card, int first, int last) const {
-  return Columns(card, first, last).find_first_not_of(' ') == std::string_view::npos;
+std::string CardReader::Text(const Card& card, int first, int last) {
+  if (FieldIndex(card, first, last) < 0) return {};
+  return Trimmed(Columns(card, first, last));
 }
 
 SourceRange CardReader::Range(const Card& card, int first, int last) const {
@@ -139,20 +82,8 @@ SourceRange CardReader::Range(const Card& card, int first, int last) const {
   return {file_, line.offset + begin, line.offset + end};
 }
 
-SourceRange CardReader::EndOfDeck() const { return {file_, size_, size_}; }
-
-void CardReader::Report(DiagnosticKind kind, const Card& card, int first, int last,
-                        std::string message, std::string help) {
-  ReportAt(kind, Range(card, first, last), std::move(message), std::move(help));
-}
-
-void CardReader::ReportAt(DiagnosticKind kind, SourceRange range, std::string message,
-                          std::string help) {
-  Diagnostic diagnostic = MakeDiagnostic(kind, range, std::move(message));
-  diagnostic.help = std::move(help);
-  diagnostic.show_column_range = true;
-  if (diagnostic.severity == Severity::kError) ++errors_;
-  diagnostics_.Consume(std::move(diagnostic));
+std::string CardReader::Where(const Card&, int first, int last) const {
+  return ColumnsText(first, last);
 }
 
 }  // namespace sled::lang::legacy

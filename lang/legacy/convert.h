@@ -2,6 +2,9 @@
 // for the formatter to print (DESIGN.md §2). Diagnostics name the deck's line, card and columns.
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 #include "lang/ast/ast.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/legacy/deck.h"
@@ -10,14 +13,23 @@
 
 namespace sled::lang::legacy {
 
+// How the deck is written: fixed columns (`.ain`, the FORMATs of ATB's READ statements) or
+// list-directed (`.lin`, ATB's `READ (unit, *)`).
+enum class DeckFormat { kFixed, kList };
+
 struct ConvertOptions {
   DiagnosticConsumer* diagnostics = nullptr;  // required
-  BlankMode blanks = BlankMode::kIgnore;      // kZero: FORTRAN IV blanks-as-zeros (--blank-zero)
+  DeckFormat format = DeckFormat::kFixed;
+  BlankMode blanks = BlankMode::kIgnore;  // kZero: FORTRAN IV blanks-as-zeros (--blank-zero, .ain)
 };
 
-// The scenario of a fixed-column `.ain` deck. When errors were reported the tree is incomplete
-// and must not be printed as a conversion.
-ast::File ConvertAinDeck(const SourceManager& sources, FileId deck, const ConvertOptions& options);
+// The format a deck's file name asks for: `.ain` fixed, `.lin` list-directed (any case); nothing
+// for another extension.
+std::optional<DeckFormat> DeckFormatOfPath(std::string_view path);
+
+// The scenario of a deck. When errors were reported the tree is incomplete and must not be
+// printed as a conversion.
+ast::File ConvertDeck(const SourceManager& sources, FileId deck, const ConvertOptions& options);
 
 // The mapping alone, for a deck already read: reports unresolved references (E0505, E0509) and
 // unused functions (W0502) at the cards' ranges.

@@ -56,7 +56,7 @@ void BM_ConvertDeck(benchmark::State& state) {
     const sled::lang::FileId id = sources.Add("large.ain", deck);
     sled::lang::legacy::ConvertOptions options;
     options.diagnostics = &collector;
-    const auto file = sled::lang::legacy::ConvertAinDeck(sources, id, options);
+    const auto file = sled::lang::legacy::ConvertDeck(sources, id, options);
     if (collector.has_errors()) {
       for (const auto& diagnostic : collector.diagnostics()) {
         if (diagnostic.severity != sled::lang::Severity::kError) continue;

@@ -62,5 +62,20 @@ TEST_F(LegacyRoundTrip, MangledDeckFailsWithALocatedDiagnostic) {
   EXPECT_EQ(convert.out, "");
 }
 
+TEST_F(LegacyRoundTrip, LinDeckConvertsByItsExtensionOrByDeckOption) {
+  const SledResult from_ain = Sled({"convert", "examples/legacy/seated_occupant.ain"});
+  const SledResult from_lin = Sled({"convert", "examples/legacy/seated_occupant.lin"});
+  ASSERT_EQ(from_lin.exit_code, 0) << from_lin.err;
+  EXPECT_EQ(from_lin.out, from_ain.out);
+  // Another extension needs --deck; --blank-zero is for fixed columns only.
+  const fs::path other = temp() / "seated_occupant.dat";
+  WriteText(other, ReadText(kSourceRoot / "examples/legacy/seated_occupant.lin"));
+  EXPECT_EQ(Sled({"convert", other.string()}).exit_code, 2);
+  const SledResult forced = Sled({"convert", other.string(), "--deck=lin"});
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_EQ(forced.out, from_ain.out);
+  EXPECT_EQ(Sled({"convert", other.string(), "--deck=lin", "--blank-zero"}).exit_code, 2);
+}
+
 }  // namespace
 }  // namespace sled::testing

@@ -42,7 +42,7 @@ Converted Convert(const std::string& text, BlankMode blanks = BlankMode::kIgnore
   ConvertOptions options;
   options.diagnostics = &collector;
   options.blanks = blanks;
-  const ast::File file = ConvertAinDeck(sources, id, options);
+  const ast::File file = ConvertDeck(sources, id, options);
   Converted out;
   if (!collector.has_errors()) out.text = Format(file);
   collector.SortByPosition();

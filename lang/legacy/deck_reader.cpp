@@ -1,4 +1,4 @@
-#include "lang/legacy/ain_reader.h"
+#include "lang/legacy/deck_reader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -25,9 +25,9 @@ std::string Upper(std::string text) {
   return text;
 }
 
-class AinReader {
+class DeckReader {
  public:
-  explicit AinReader(CardReader& reader) : r_(reader) {}
+  explicit DeckReader(DeckSource& reader) : r_(reader) {}
 
   Deck Read() {
     ReadA();
@@ -39,8 +39,8 @@ class AinReader {
     if (!r_.truncated()) ReadG();
     if (!r_.truncated()) ReadH();
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
-      const Card card = r_.Next("after H.3");
-      r_.Report(DiagnosticKind::kDeckExtraCards, card, 1, static_cast<int>(card.text.size()),
+      const Card card = r_.Next("after H.3", {"(A80)"});
+      r_.Report(DiagnosticKind::kDeckExtraCards, card, 1, 80,
                 fmt::format("line {} follows the last card sled reads (H.3)", card.line),
                 "the layouts of cards H.4 to H.11 are not documented; remove these output "
                 "requests and add them to the scenario's `output` block by hand");
@@ -63,8 +63,8 @@ class AinReader {
     const int value = r_.Integer(card, first, last, what);
     if (value < 0 || value > limit) {
       r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, first, last,
-                fmt::format("card {}, columns {}-{} ({}): {} is outside 0 to {}", card.label, first,
-                            last, what, value, limit),
+                fmt::format("card {}, {} ({}): {} is outside 0 to {}", card.label,
+                            r_.Where(card, first, last), what, value, limit),
                 "the ATB V.3 limits (MODULE_STANDARD) bound every count");
       return 0;
     }
@@ -77,7 +77,7 @@ class AinReader {
 
   void Refuse(const Card& card, int first, int last, std::string what, std::string help) {
     r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
-              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
               std::move(help));
   }
   void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,
@@ -89,24 +89,24 @@ class AinReader {
   }
   void Unverified(const Card& card, int first, int last, std::string what) {
     r_.Report(DiagnosticKind::kDeckUnverifiedField, card, first, last,
-              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
               "the format reference marks this unverified: compare the converted scenario with "
               "the deck's documentation before trusting it");
   }
   void Invalid(const Card& card, int first, int last, std::string what, std::string help) {
     r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
-              fmt::format("card {}, columns {}-{}: {}", card.label, first, last, what),
+              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
               std::move(help));
   }
 
   // --- A: control --------------------------------------------------------------------------
   void ReadA() {
-    const Card date = r_.Next("A.1 (date)");
+    const Card date = r_.Next("A.1 (date)", {"(A12)"});
     deck_.date = r_.Text(date, 1, 12);
-    deck_.title = r_.Text(r_.Next("A.1 (title, line 1)"), 1, 80);
-    deck_.subtitle = r_.Text(r_.Next("A.1 (title, line 2)"), 1, 80);
+    deck_.title = r_.Text(r_.Next("A.1 (title, line 1)", {"(A80)"}), 1, 80);
+    deck_.subtitle = r_.Text(r_.Next("A.1 (title, line 2)", {"(A80)"}), 1, 80);
 
-    const Card units = r_.Next("A.3");
+    const Card units = r_.Next("A.3", {"(3A4,4F12.0)"});
     deck_.units_line = units.line;
     deck_.units.length =
         Unit(units, 1, 4, "UNITL, the length unit",
@@ -129,7 +129,7 @@ class AinReader {
               "segment masses are weights divided by G: give G in columns 49-60");
     }
 
-    const Card control = r_.Next("A.4");
+    const Card control = r_.Next("A.4", {"(2I4,4F8.0)"});
     deck_.control_line = control.line;
     const int ndint = r_.Integer(control, 1, 4, "NDINT");
     if (ndint != 0) Unverified(control, 1, 4, "the meaning of NDINT is not documented; ignored");
@@ -147,18 +147,19 @@ class AinReader {
               "the output step must be positive");
     }
 
-    const Card print = r_.Next("A.5");
+    const Card print = r_.Next("A.5", {"(36I2)"});
     for (int i = 0; i < 36; ++i) {
       deck_.print_controls.push_back(r_.Integer(print, 2 * i + 1, 2 * i + 2, "NPRT"));
     }
     const int windows = deck_.print_controls[33];
     if (windows < 0 || windows > 3) {
       r_.Report(DiagnosticKind::kDeckCountOutOfRange, print, 67, 68,
-                fmt::format("card A.5, columns 67-68 (NPRT(34), the number of A.6 time windows): "
+                fmt::format("card A.5, {} (NPRT(34), the number of A.6 time windows): "
                             "{} is outside 0 to 3",
-                            windows));
+                            r_.Where(print, 67, 68), windows));
     } else {
-      for (int i = 0; i < windows; ++i) r_.Next(fmt::format("A.6 (window {})", i + 1));
+      for (int i = 0; i < windows; ++i)
+        r_.Next(fmt::format("A.6 (window {})", i + 1), {"(A1,1X,A1,1X,A1,1X,F10.3,1X,F10.3)"});
     }
   }
 
@@ -172,15 +173,15 @@ class AinReader {
     for (const auto& entry : known)
       names += fmt::format("{}`{}`", names.empty() ? "" : ", ", entry.first);
     r_.Report(DiagnosticKind::kDeckUnknownUnit, card, first, last,
-              fmt::format("card A.3, columns {}-{} ({}): `{}` is not a unit label sled knows",
-                          first, last, what, label),
+              fmt::format("card A.3, {} ({}): `{}` is not a unit label sled knows",
+                          r_.Where(card, first, last), what, label),
               fmt::format("write one of {}", names));
     return std::string(known.begin()->second);
   }
 
   // --- B: the body -------------------------------------------------------------------------
   void ReadB() {
-    const Card b1 = r_.Next("B.1");
+    const Card b1 = r_.Next("B.1", {"(2I6,8X,A20,I5)"});
     deck_.body_line = b1.line;
     const int segments = Count(b1, 1, 6, "NSEG, the number of segments", kMaxSegments);
     const int joints = Count(b1, 7, 12, "NJNT, the number of joints", kMaxSegments);
@@ -199,7 +200,7 @@ class AinReader {
     for (auto& joint : deck_.joints) ReadJointSprings(joint);
     for (auto& joint : deck_.joints) ReadJointDamping(joint);
     for (int i = 0; i < segments; ++i) {
-      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1));
+      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
       for (int f = 0; f < 12; ++f) {
         const int first = 6 * f + 1;
         const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
@@ -215,7 +216,7 @@ class AinReader {
   }
 
   void ReadSegment(int number) {
-    const Card card = r_.Next(fmt::format("B.2.a (segment {})", number));
+    const Card card = r_.Next(fmt::format("B.2.a (segment {})", number), {"(A4,2X,10F6.0,I4)"});
     SegmentCard segment;
     segment.line = card.line;
     segment.name = r_.Text(card, 1, 4);
@@ -232,7 +233,7 @@ class AinReader {
               "a weight is zero (a singular segment) or positive");
     }
     if (lpmi == 1) {
-      const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number));
+      const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number), {"(12X,3F6.0)"});
       segment.has_principal_axes = true;
       segment.principal_axes = Triple(axes, 13, 6, "yaw, pitch and roll of the principal axes");
     } else if (lpmi != 0) {
@@ -243,8 +244,9 @@ class AinReader {
   }
 
   void ReadJoint(int number, int segments) {
-    const Card line1 = r_.Next(fmt::format("B.3.a (joint {})", number));
-    const Card line2 = r_.Next(fmt::format("B.3.b (joint {})", number));
+    const Card line1 =
+        r_.Next(fmt::format("B.3.a (joint {})", number), {"(A4,2X,2I4,6F6.0,I4,2F6.0)"});
+    const Card line2 = r_.Next(fmt::format("B.3.b (joint {})", number), {"(14X,9F6.0,6I2)"});
     JointCard joint;
     joint.line = line1.line;
     joint.name = r_.Text(line1, 1, 4);
@@ -264,9 +266,9 @@ class AinReader {
              "flexible segment chains have no counterpart in sled; use ordinary joints");
     } else if (joint.parent > segments || joint.parent == number + 1) {
       r_.Report(DiagnosticKind::kDeckCountOutOfRange, line1, 7, 10,
-                fmt::format("card {}, columns 7-10 (JNT, the proximal segment): segment {} does "
-                            "not exist or is the joint's own distal segment",
-                            line1.label, joint.parent),
+                fmt::format("card {}, {} (JNT, the proximal segment): segment {} does not "
+                            "exist or is the joint's own distal segment",
+                            line1.label, r_.Where(line1, 7, 10), joint.parent),
                 fmt::format("name a segment from 0 (a new reference body) to {}", segments));
       joint.parent = 0;
     }
@@ -338,7 +340,7 @@ class AinReader {
 
   void ReadJointSprings(JointCard& joint) {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
-    const Card card = r_.Next(fmt::format("B.4.a (joint {})", j));
+    const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
     joint.flexure = Spring(card, 1);
     joint.twist = Spring(card, 37);
     if (joint.type != JointType::kEuler && joint.twist.energy_loss != 0 &&
@@ -347,7 +349,7 @@ class AinReader {
              "sled's joints take one `energy_loss`; give both springs the same coefficient");
     }
     if (joint.type == JointType::kEuler) {
-      const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j));
+      const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j), {"(2(4F6.0,F12.0))", 8});
       joint.spin = Spring(spin, 1);
       joint.initial_angles = Triple(spin, 37, 6, "ANG, the initial joint angles");
     }
@@ -357,7 +359,8 @@ class AinReader {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
     const int cards = joint.type == JointType::kEuler ? 3 : 1;
     for (int k = 0; k < cards; ++k) {
-      const Card card = r_.Next(fmt::format("B.5.{} (joint {})", static_cast<char>('a' + k), j));
+      const Card card = r_.Next(fmt::format("B.5.{} (joint {})", static_cast<char>('a' + k), j),
+                                {"(5F6.0,18X,2F6.0)"});
       const double viscous = r_.Real(card, 1, 6, "the viscous coefficient");
       const double coulomb = r_.Real(card, 7, 12, "the Coulomb friction torque");
       const double full = r_.Real(card, 13, 18, "the angular velocity of full Coulomb friction");
@@ -395,8 +398,8 @@ class AinReader {
   // --- C: vehicles -------------------------------------------------------------------------
   void ReadC() {
     for (int v = 0; v < kMaxVehicles && !r_.truncated(); ++v) {
-      const Card title = r_.Next(fmt::format("C.1 (vehicle {})", v + 1));
-      const Card card = r_.Next(fmt::format("C.2.a (vehicle {})", v + 1));
+      const Card title = r_.Next(fmt::format("C.1 (vehicle {})", v + 1), {"(A80)"});
+      const Card card = r_.Next(fmt::format("C.2.a (vehicle {})", v + 1), {"(8F6.0,I6,2F6.0,3I2)"});
       VehicleCard vehicle;
       vehicle.line = card.line;
       vehicle.title = r_.Text(title, 1, 80);
@@ -437,7 +440,7 @@ class AinReader {
 
   // --- D: surfaces and restraints ----------------------------------------------------------
   void ReadD() {
-    const Card d1 = r_.Next("D.1.a");
+    const Card d1 = r_.Next("D.1.a", {"(12I6)"});
     const int planes = Count(d1, 1, 6, "NPL, the number of planes", kMaxPlanes);
     const int belts = Count(d1, 7, 12, "NBLT, the number of belts", kMaxBelts);
     const int bags = r_.Integer(d1, 13, 18, "NBAG, the number of airbags");
@@ -480,7 +483,7 @@ class AinReader {
   }
 
   void ReadPlane(int number) {
-    const Card head = r_.Next(fmt::format("D.2 (plane {})", number));
+    const Card head = r_.Next(fmt::format("D.2 (plane {})", number), {"(I4,4X,A20)"});
     PlaneCard plane;
     plane.line = head.line;
     const int j = r_.Integer(head, 1, 4, "J, the plane's number");
@@ -494,16 +497,17 @@ class AinReader {
                  "planes are placed in the primary vehicle's frame (the vehicle whose MSEG is 0)");
     }
     for (int i = 0; i < 3; ++i) {
-      const Card corner = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1));
+      const Card corner = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1), {"(3F12.0)"});
       plane.corners[static_cast<std::size_t>(i)] = Triple(corner, 1, 12, "a corner of the plane");
     }
     deck_.planes.push_back(std::move(plane));
   }
 
   void ReadBelt(int number) {
-    const Card title = r_.Next(fmt::format("D.3 (belt {}, title)", number));
-    const Card anchors = r_.Next(fmt::format("D.3 (belt {}, anchors)", number));
-    const Card rest = r_.Next(fmt::format("D.3 (belt {}, reference point and slack)", number));
+    const Card title = r_.Next(fmt::format("D.3 (belt {}, title)", number), {"(A20)"});
+    const Card anchors = r_.Next(fmt::format("D.3 (belt {}, anchors)", number), {"(6F12.0)"});
+    const Card rest =
+        r_.Next(fmt::format("D.3 (belt {}, reference point and slack)", number), {"(6F12.0)", 5});
     BeltCard belt;
     belt.line = title.line;
     belt.title = r_.Text(title, 1, 20);
@@ -525,7 +529,7 @@ class AinReader {
   }
 
   void ReadEllipsoid(int number) {
-    const Card card = r_.Next(fmt::format("D.5 (ellipsoid {})", number));
+    const Card card = r_.Next(fmt::format("D.5 (ellipsoid {})", number), {"(I6,9F6.0,3F4.0)"});
     const int m = r_.Integer(card, 1, 6, "M, the ellipsoid's number");
     const Vec3 semi_axes = Triple(card, 7, 6, "the semi-axes");
     const Vec3 center = Triple(card, 25, 6, "the centre");
@@ -564,7 +568,8 @@ class AinReader {
     const int segments = static_cast<int>(deck_.segments.size());
     const int lines = std::max(1, (segments + 17) / 18);
     for (int l = 0; l < lines; ++l) {
-      const Card card = r_.Next(fmt::format("D.7 (symmetry, line {})", l + 1));
+      const Card card = r_.Next(fmt::format("D.7 (symmetry, line {})", l + 1),
+                                {"(18I4)", std::min(18, std::max(1, segments - 18 * l))});
       if (l == 0) deck_.symmetry_line = card.line;
       for (int i = 0; i < 18 && l * 18 + i < segments; ++i) {
         Ref ref = Reference(card, 4 * i + 1, 4 * i + 4, "SYMMETRY, the mirror segment");
@@ -583,7 +588,7 @@ class AinReader {
   }
 
   void ReadSpring(int number) {
-    const Card card = r_.Next(fmt::format("D.8 (spring {})", number));
+    const Card card = r_.Next(fmt::format("D.8 (spring {})", number), {"(2I3,11F6.0)"});
     SpringCard spring;
     spring.line = card.line;
     spring.first = Reference(card, 1, 3, "segment M");
@@ -605,7 +610,7 @@ class AinReader {
   // --- E: functions ------------------------------------------------------------------------
   void ReadE() {
     for (int guard = 0; guard < 1000 && !r_.truncated(); ++guard) {
-      const Card head = r_.Next("E.1");
+      const Card head = r_.Next("E.1", {"(I4,4X,A20)"});
       const int number = r_.Integer(head, 1, 4, "the function's number");
       if (number > kMaxFunction) return;
       FunctionCard function;
@@ -618,7 +623,7 @@ class AinReader {
         Invalid(head, 1, 4, fmt::format("function number {}", number),
                 "functions are numbered 1 to 98; a number above 98 ends the E cards");
       }
-      const Card e2 = r_.Next(fmt::format("E.2 ({})", label));
+      const Card e2 = r_.Next(fmt::format("E.2 ({})", label), {"(6F12.0)", 5});
       double d[5];
       for (int i = 0; i < 5; ++i) d[i] = r_.Real(e2, 12 * i + 1, 12 * i + 12, "D0..D4");
       if (d[1] == 0) {
@@ -632,7 +637,7 @@ class AinReader {
                  "the meaning of D0 to D4 is not documented, so a two-part function cannot be "
                  "converted safely; split it by hand");
           if (d[2] > 0)
-            r_.Next(fmt::format("E.3 ({}, second part)", label));
+            r_.Next(fmt::format("E.3 ({}, second part)", label), {"(6F12.0)"});
           else
             SkipTable(label);
         }
@@ -657,16 +662,17 @@ class AinReader {
 
   void ReadFunctionPart(FunctionCard& function, bool polynomial, const std::string& label) {
     if (polynomial) {
-      const Card e3 = r_.Next(fmt::format("E.3 ({})", label));
+      const Card e3 = r_.Next(fmt::format("E.3 ({})", label), {"(6F12.0)"});
       for (int i = 0; i < 6; ++i) {
         function.coefficients.push_back(r_.Real(e3, 12 * i + 1, 12 * i + 12, "a coefficient"));
       }
       return;
     }
-    const Card e4a = r_.Next(fmt::format("E.4.a ({})", label));
+    const Card e4a = r_.Next(fmt::format("E.4.a ({})", label), {"(12I6)", 1});
     const int points = Count(e4a, 1, 6, "NPI, the number of points", 1000);
     for (int line = 0; line < (points + 2) / 3; ++line) {
-      const Card e4b = r_.Next(fmt::format("E.4.b ({}, line {})", label, line + 1));
+      const Card e4b = r_.Next(fmt::format("E.4.b ({}, line {})", label, line + 1),
+                               {"(6F12.0)", 2 * std::min(3, points - 3 * line), line > 0});
       for (int k = 0; k < 3 && line * 3 + k < points; ++k) {
         const int first = 24 * k + 1;
         const double x = r_.Real(e4b, first, first + 11, "D, the argument");
@@ -700,7 +706,8 @@ class AinReader {
       bool warned = false;
       for (int p = 0; p < planes; ++p) {
         for (int k = 0; k < counts[static_cast<std::size_t>(p)]; ++k) {
-          const Card card = r_.Next(fmt::format("F.1.b (plane {}, contact {})", p + 1, k + 1));
+          const Card card =
+              r_.Next(fmt::format("F.1.b (plane {}, contact {})", p + 1, k + 1), {"(9I4,4X,I4)"});
           if (!warned) {
             Unverified(card, 1, 44,
                        "the F.1 plane-contact cards are read like F.3.b (plane, segment, 2 "
@@ -712,10 +719,10 @@ class AinReader {
       }
     }
     if (belts > 0) {
-      std::vector<int> counts = CountsPerItem("F.2.a", belts);
+      std::vector<int> counts = CountsPerItem("F.2.a", belts, true);
       for (int b = 0; b < belts; ++b) {
         for (int k = 0; k < counts[static_cast<std::size_t>(b)]; ++k) {
-          const Card card = r_.Next(fmt::format("F.2.b (belt {})", b + 1));
+          const Card card = r_.Next(fmt::format("F.2.b (belt {})", b + 1), {"(9I4)"});
           if (k > 0) {
             Refuse(card, 1, 36, "a belt over more than one segment",
                    "sled reads one F.2.b card per belt; write the belt's path by hand");
@@ -728,25 +735,31 @@ class AinReader {
     std::vector<int> counts = CountsPerItem("F.3.a", segments);
     for (int s = 0; s < segments; ++s) {
       for (int k = 0; k < counts[static_cast<std::size_t>(s)]; ++k) {
-        const Card card = r_.Next(fmt::format("F.3.b (segment {}, contact {})", s + 1, k + 1));
+        const Card card =
+            r_.Next(fmt::format("F.3.b (segment {}, contact {})", s + 1, k + 1), {"(9I4,4X,I4)"});
         ReadContact(card, false, s + 1, segments);
       }
     }
     const std::vector<int> global = CountsPerItem("F.4.a", std::max(1, segments - 1));
     for (std::size_t j = 0; j < global.size(); ++j) {
       if (global[j] != 0) {
-        Refuse(r_.Next("F.4.b"), 1, 4, "a global-graphic joint contact",
+        Refuse(r_.Next("F.4.b", {"(18I4)"}), 1, 4, "a global-graphic joint contact",
                "sled has no joint-surface contacts; remove the F.4 entries");
         break;
       }
     }
   }
 
-  std::vector<int> CountsPerItem(const std::string& label, int items) {
+  // Counts per item, 18 per card (`(18I4)`, one READ per card in a .lin deck) or, for F.2.a, 8
+  // per card (`(8I4)`, one READ over all of them, so a .lin deck may give them on one line).
+  std::vector<int> CountsPerItem(const std::string& label, int items, bool belts = false) {
     std::vector<int> counts;
-    for (int line = 0; line < (items + 17) / 18; ++line) {
-      const Card card = r_.Next(fmt::format("{} (line {})", label, line + 1));
-      for (int i = 0; i < 18 && line * 18 + i < items; ++i) {
+    const int per_card = belts ? 8 : 18;
+    for (int line = 0; line < (items + per_card - 1) / per_card; ++line) {
+      const CardSpec spec{belts ? "(8I4)" : "(18I4)", std::min(per_card, items - per_card * line),
+                          belts && line > 0};
+      const Card card = r_.Next(fmt::format("{} (line {})", label, line + 1), spec);
+      for (int i = 0; i < per_card && line * per_card + i < items; ++i) {
         counts.push_back(
             Count(card, 4 * i + 1, 4 * i + 4, "a number of contacts", kMaxContacts / 10));
       }
@@ -815,7 +828,8 @@ class AinReader {
     belt.segment = Reference(card, 5, 8, "MS_SEG(1), the segment");
     ReadFunctionNumbers(card, 17, &belt.force, &belt.friction);
     // NX and NOUT come from the next line by format reversion (9I4 for 11 items).
-    const Card extra = r_.Next(fmt::format("F.2.b (belt {}, NX and NOUT)", number));
+    const Card extra =
+        r_.Next(fmt::format("F.2.b (belt {}, NX and NOUT)", number), {"(9I4)", 2, true});
     Unverified(extra, 1, 8,
                "NX and NOUT of F.2.b are read from the next line (format reversion of 9I4 "
                "for 11 items), as ATB V.3 does");
@@ -828,7 +842,7 @@ class AinReader {
 
   // --- G: initial conditions ---------------------------------------------------------------
   void ReadG() {
-    const Card g1 = r_.Next("G.1.a");
+    const Card g1 = r_.Next("G.1.a", {"(30X,2I4,8X,I4)", -1, false, 35});
     const int i1 = r_.Integer(g1, 31, 34, "I1");
     const int j1 = r_.Integer(g1, 35, 38, "J1");
     const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
@@ -841,7 +855,7 @@ class AinReader {
              "the meaning of I3 = 1 and 2 is not documented; give the velocities on G.2");
     }
     if (j1 != 0) {
-      r_.Next("G.1.b (obsolete)");
+      r_.Next("G.1.b (obsolete)", {"(I1)"});
       Unverified(g1, 35, 38, "J1 is not zero: the obsolete G.1.b card is read and ignored");
     }
     // One G.2 card per reference segment: segment 1 and each J+1 whose JNT(J) = 0.
@@ -850,7 +864,8 @@ class AinReader {
       if (deck_.joints[j].parent == 0) references.push_back(static_cast<int>(j) + 2);
     }
     for (const int segment : references) {
-      const Card card = r_.Next(fmt::format("G.2 (reference segment {})", segment));
+      const Card card =
+          r_.Next(fmt::format("G.2 (reference segment {})", segment), {"(6F10.0,2I3)"});
       InitialCard initial;
       initial.line = card.line;
       initial.segment = segment;
@@ -867,7 +882,7 @@ class AinReader {
       deck_.initial_positions.push_back(initial);
     }
     for (std::size_t s = 0; s < deck_.segments.size(); ++s) {
-      const Card card = r_.Next(fmt::format("G.3.a (segment {})", s + 1));
+      const Card card = r_.Next(fmt::format("G.3.a (segment {})", s + 1), {"(6F10.0,4I3)"});
       OrientationCard orientation;
       orientation.line = card.line;
       orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
@@ -892,15 +907,16 @@ class AinReader {
         OutputCard::Kind::kAcceleration, OutputCard::Kind::kVelocity, OutputCard::Kind::kPosition};
     for (int k = 0; k < 3 && !r_.truncated(); ++k) {
       if (r_.OnlyBlankLinesRemain()) return;  // decks may end before the H cards
-      const Card head = r_.Next(fmt::format("H.{}.a", k + 1));
+      const Card head = r_.Next(fmt::format("H.{}.a", k + 1), {"(I6,2I3,3F12.6,I6)"});
       const int count = Count(head, 1, 6, "KSG, the number of requests", kMaxOutputs);
       if (count >= 1) ReadOutput(head, kKinds[k], 7, 10);
       if (count <= 1) {
-        r_.Next(fmt::format("H.{} (dummy)", k + 1));
+        r_.Next(fmt::format("H.{} (dummy)", k + 1), {"(I2)"});
         continue;
       }
       for (int i = 1; i < count; ++i) {
-        ReadOutput(r_.Next(fmt::format("H.{}.b (request {})", k + 1, i + 1)), kKinds[k], 1, 10);
+        ReadOutput(r_.Next(fmt::format("H.{}.b (request {})", k + 1, i + 1), {"(I9,I3,3F12.6,I6)"}),
+                   kKinds[k], 1, 10);
       }
     }
   }
@@ -922,12 +938,12 @@ class AinReader {
     deck_.outputs.push_back(std::move(output));
   }
 
-  CardReader& r_;
+  DeckSource& r_;
   Deck deck_;
 };
 
 }  // namespace
 
-Deck ReadAinDeck(CardReader& reader) { return AinReader(reader).Read(); }
+Deck ReadDeck(DeckSource& source) { return DeckReader(source).Read(); }
 
 }  // namespace sled::lang::legacy
