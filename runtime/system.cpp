@@ -110,6 +110,11 @@ std::vector<std::size_t> MultibodySystem::VectorGroups() const {
 }
 
 void MultibodySystem::Project(double t, std::span<double> y) {
+  ProjectState(t, y);
+  CommitStep(t, y);
+}
+
+void MultibodySystem::ProjectState(double t, std::span<double> y) {
   // Unit quaternions: the integrators move them off the unit sphere by the local error.
   for (std::size_t s = 0; s < model_.nsegment(); ++s) {
     std::size_t address = static_cast<std::size_t>(model_.q_address[s]);
@@ -126,6 +131,9 @@ void MultibodySystem::Project(double t, std::span<double> y) {
   }
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
   if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
+}
+
+void MultibodySystem::CommitStep(double t, std::span<const double> y) {
   Load(t, y);
   CommitContactHistory(model_, data_);
   // Belts: the webbing distribution and loading histories of the accepted step.

@@ -20,7 +20,15 @@ class MultibodySystem : public OdeSystem {
   std::size_t ControlledSize() const override;
   bool Derivative(double t, std::span<const double> y, std::span<double> dy) override;
   std::vector<std::size_t> VectorGroups() const override;
+  // Project = ProjectState, then CommitStep. The two halves are public for a driver that
+  // projects inside its step (before its error test: CVODE's projection, tests/bench) and so
+  // must commit the histories separately, after the step is accepted.
   void Project(double t, std::span<double> y) override;
+  // Unit quaternions and loop constraints: y moved back onto its manifold (by the drift only).
+  void ProjectState(double t, std::span<double> y);
+  // The load histories of an accepted step at (t, y): contacts' largest deflections and impulse
+  // engagement, belts' webbing distribution and loading histories.
+  void CommitStep(double t, std::span<const double> y);
   std::string FailureReason() const override;
 
   std::size_t EventCount() const override { return events_.size(); }

@@ -3,12 +3,20 @@
 #
 #   scripts/numerics.sh [OUT]      (OUT: where the study folders go; default build/numerics)
 #
+#   SLED_NUMERICS_CASES="free_body lock_cascade"   measures only those cases of the suite (and
+#                                                  `flagship` only when named); default: all
+#   SLED_NUMERICS_DOC=FILE     writes the tables into FILE (and the plots beside it, in
+#                              numerics/) instead of docs/numerics.md, say to try the script on
+#                              a few cases without touching the published page
+#
 # 1. `sled study` on every case of examples/numerics/suite.txt and on the flagship, over the
 #    tolerance ladder $SLED_NUMERICS_TOLERANCES (default 1e-2 to 1e-6);
 # 2. `sled run` of the conservative cases with each integrator at 1e-4, 1e-6 and 1e-8, for the
-#    energy balance's drift (summary.json, energy_balance.relative_residual) and the free body's
-#    angular momentum drift;
-# 3. the CVODE peer (tests/bench/cvode_peer.cpp) beside sled's integrators, when it is built;
+#    energy balance's drift (summary.json, energy_balance.relative_residual) and, from the output
+#    rows, the momentum drift: the free body's linear momentum (against gravity's impulse) and
+#    angular momentum, and the heavy top's angular momentum about the vertical through its tip;
+# 3. the CVODE peer (tests/bench/cvode_peer.cpp) beside sled's integrators on every case (events,
+#    load histories and all), when it is built;
 # 4. from those: the time each method needs to reach each error level, the convergence orders on
 #    the smooth cases (least-squares slope of log error against log evaluations) and the energy
 #    drift, written between the `numerics:begin` and `numerics:end` markers of docs/numerics.md,
@@ -23,11 +31,19 @@ sled="${SLED:-${root}/build/compiler/driver/sled}"
 out="${1:-${root}/build/numerics}"
 tolerances="${SLED_NUMERICS_TOLERANCES:-1e-2,1e-3,1e-4,1e-5,1e-6}"
 suite="${root}/examples/numerics/suite.txt"
+doc="${SLED_NUMERICS_DOC:-${root}/docs/numerics.md}"
+cases="${SLED_NUMERICS_CASES:-}"
 conservative=(free_body spin_100 pendulum_chain)
 methods=(exponential dopri5 rosenbrock)
 
 [[ -x "${sled}" ]] || { echo "numerics.sh: no sled at ${sled}; build first" >&2; exit 1; }
 mkdir -p "${out}"
+# Whether a case is measured in this run (all of them unless SLED_NUMERICS_CASES names some).
+wanted() {
+  [[ -z "${cases}" ]] || [[ " ${cases//,/ } " == *" $1 "* ]]
+}
+# Only this run's cases are tabulated: forget the folders of earlier runs.
+rm -f "${out}"/*/kind
 load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 
 # A study of one case: NAME FILE [NAME=VALUE;...]
@@ -49,17 +65,22 @@ study() {
 
 while read -r kind name file rest; do
   [[ -z "${kind}" || "${kind}" == \#* ]] && continue
+  wanted "${name}" || continue
   mkdir -p "${out}/${name}"
   echo "${kind}" >"${out}/${name}/kind"
   study "${name}" "${root}/examples/${file}" "${rest}"
 done <"${suite}"
-mkdir -p "${out}/flagship"
-echo flagship >"${out}/flagship/kind"
-study flagship "${root}/examples/frontal_sled.sled" ""
+if [[ -z "${cases}" ]] || wanted flagship; then
+  mkdir -p "${out}/flagship"
+  echo flagship >"${out}/flagship/kind"
+  study flagship "${root}/examples/frontal_sled.sled" ""
+fi
 
 # Energy drift: the scene with its integrator line replaced by each method and tolerance.
+rm -rf "${out}/energy"
 mkdir -p "${out}/energy"
 for name in "${conservative[@]}"; do
+  wanted "${name}" || continue
   for method in "${methods[@]}"; do
     for tolerance in 1e-4 1e-6 1e-8; do
       scene="${out}/energy/${name}_${method}_${tolerance}.sled"
@@ -79,19 +100,22 @@ peer="${SLED_CVODE_PEER:-${root}/build/tests/bench/sled_bench_cvode_peer}"
 rm -f "${out}/cvode_peer.csv"
 if [[ -x "${peer}" ]]; then
   echo "numerics.sh: the CVODE peer" >&2
-  "${peer}" >"${out}/cvode_peer.csv.part" && mv "${out}/cvode_peer.csv.part" "${out}/cvode_peer.csv"
+  peer_cases=()
+  [[ -n "${cases}" ]] && read -ra peer_cases <<<"${cases//,/ }"
+  "${peer}" "--tolerances=${tolerances}" "${peer_cases[@]}" >"${out}/cvode_peer.csv.part" \
+    2>"${out}/cvode_peer.log" && mv "${out}/cvode_peer.csv.part" "${out}/cvode_peer.csv"
 else
   echo "numerics.sh: no CVODE peer at ${peer}" \
     "(configure with -DSLED_BENCH=ON and libsundials-dev)" >&2
 fi
 
 load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
-python3 - "${out}" "${root}/docs/numerics.md" "${root}/docs/numerics" "${tolerances}" \
-  "${load_before}" "${load_after}" "$(git -C "${root}" rev-parse --short HEAD)" <<'PY'
+python3 - "${out}" "${doc}" "$(dirname "${doc}")/numerics" "${tolerances}" \
+  "${load_before}" "${load_after}" "$(git -C "${root}" rev-parse --short HEAD)" "${root}" <<'PY'
 import csv, json, math, os, re, shutil, sys
 from datetime import date
 
-out, doc, plots, ladder, load_before, load_after, commit = sys.argv[1:8]
+out, doc, plots, ladder, load_before, load_after, commit, root = sys.argv[1:9]
 LEVELS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6]
 ORDERS = {"exponential": 3, "dopri5": 5, "rosenbrock": 3}
 METHODS = list(ORDERS)
@@ -160,7 +184,7 @@ def order(case, method, work):
 
 names = sorted(d for d in os.listdir(out) if os.path.exists(os.path.join(out, d, "kind")))
 suite_order = []
-for line in open(os.path.join(os.path.dirname(doc), "..", "examples", "numerics", "suite.txt")):
+for line in open(os.path.join(root, "examples", "numerics", "suite.txt")):
     f = line.split()
     if f and not f[0].startswith("#"):
         suite_order.append(f[1])
@@ -261,43 +285,72 @@ if os.path.exists(peer_csv):
                 {"method": r["method"], "tol": float(r["tolerance"]),
                  "time": float(r["wall_seconds"]),
                  "steps": int(r["steps"]), "evals": int(r["evaluations"]),
-                 "error": float(r["error_all"]), "failed": r["failed"] == "1"})
+                 "events": int(r["events"]), "error": float(r["error_all"]),
+                 "failed": r["failed"] == "1"})
+    tightest = min(float(t) for t in ladder.split(","))
     L.append("`sled_bench_cvode_peer` (tests/bench/cvode_peer.cpp): the same right-hand side "
              "(runtime::MultibodySystem) integrated by SUNDIALS CVODE (BDF, dense Newton) and by "
-             "sled's three methods, in one process, at relative tolerances 1e-2 to 1e-6, each "
-             "against a dopri5 reference at 1e-10 (fastest of three runs). Time to reach each "
-             "error level, as above; the last row of a case is CVODE's time over the exponential "
-             "method's.")
+             "sled's three methods, in one process, at relative tolerances "
+             f"{ladder.replace(',', ', ')}, each against a dopri5 reference at 1e-10 (fastest of "
+             "three runs), on every case of the suite. CVODE is driven as sled's integrators "
+             "drive the system: the system's event functions (impulsive joint stops and contacts, "
+             "joint locks and unlocks) are CVODE's root functions, and at a root the events are "
+             "handled, the state projected and the histories committed, and CVODE restarts there "
+             "(`CVodeReInit`); unit quaternions and loop constraints are projected after each "
+             "step by CVODE's own projection (`CVodeSetProjFn`); the load histories of contacts "
+             "and belts are committed after each accepted step, on that step's state (CVODE "
+             "driven one step at a time), never on an interpolated one; and it lands on each "
+             "output time, as sled's methods do. Time to reach each error level, as above; the "
+             f"column *at {tightest:.0e}* is the run's error at the tightest tolerance (and, "
+             "when the case has events, how many the run located); the last row of a case is "
+             "CVODE's time over the exponential method's.")
     L.append("")
-    L.append("| case | method | " + " | ".join(f"{l:.0e}" for l in LEVELS) + " |")
-    L.append("|" + "---|" * (2 + len(LEVELS)))
-    for name, rows in peer.items():
+    L.append("| case | method | " + " | ".join(f"{l:.0e}" for l in LEVELS) +
+             f" | at {tightest:.0e} |")
+    L.append("|" + "---|" * (3 + len(LEVELS)))
+    ordered = [n for n in suite_order if n in peer] + [n for n in peer if n not in suite_order]
+    for name in ordered:
+        rows = peer[name]
         c = {"rows": rows, "floor": 0.0}
+        any_events = any(r["events"] > 0 for r in rows)
         for m in METHODS + ["cvode"]:
             cells = [fmt_time(time_to(c, m, l)) for l in LEVELS]
-            L.append(f"| {name} | {m} | " + " | ".join(cells) + " |")
+            last = [r for r in rows if r["method"] == m and r["tol"] == tightest]
+            if not last:
+                at = "no run"
+            elif last[0]["failed"]:
+                at = "failed"
+            else:
+                at = f"{last[0]['error']:.1e}"
+                if any_events:
+                    at += f" ({last[0]['events']} events)"
+            L.append(f"| {name} | {m} | " + " | ".join(cells) + f" | {at} |")
         cells = []
         for l in LEVELS:
             te, tc = time_to(c, "exponential", l), time_to(c, "cvode", l)
             both = isinstance(te, float) and isinstance(tc, float)
             cells.append(f"{tc / te:.2g}" if both else "-")
-        L.append(f"| {name} | cvode / exponential | " + " | ".join(cells) + " |")
+        L.append(f"| {name} | cvode / exponential | " + " | ".join(cells) + " | |")
 else:
     L.append("Not measured in this run: the CVODE peer was not built (configure with "
              "`-DSLED_BENCH=ON` and Debian `libsundials-dev`).")
+ENERGY_TOLERANCES = ("1e-4", "1e-6", "1e-8")
+energy_cases = [n for n in CONSERVATIVE
+                if any(os.path.isdir(os.path.join(out, "energy", f"{n}_{m}_{t}"))
+                       for m in METHODS for t in ENERGY_TOLERANCES)]
 L.append("")
-L.append("### Energy drift on the conservative cases")
+L.append("### Energy and momentum drift on the conservative cases")
 L.append("")
 L.append("`energy_balance.relative_residual` of `sled run` (the largest residual of kinetic + "
          "potential energy over the run, over the largest term), the scene run with each method "
          "and relative tolerance.")
 L.append("")
-L.append("| case | method | 1e-4 | 1e-6 | 1e-8 |")
+L.append("| case | method | " + " | ".join(ENERGY_TOLERANCES) + " |")
 L.append("|---|---|---|---|---|")
-for name in CONSERVATIVE:
+for name in energy_cases:
     for m in METHODS:
         cells = []
-        for t in ("1e-4", "1e-6", "1e-8"):
+        for t in ENERGY_TOLERANCES:
             path = os.path.join(out, "energy", f"{name}_{m}_{t}", "summary.json")
             if not os.path.exists(path):
                 cells.append("no run")
@@ -309,31 +362,112 @@ for name in CONSERVATIVE:
                 cells.append(f"{s['energy_balance']['relative_residual']:.1e}")
         L.append(f"| {name} | {m} | " + " | ".join(cells) + " |")
 
-# Angular momentum of the free body: |I w| (body axes, principal moments from its scene) is
-# conserved in flight; its largest relative change over the run.
-scene = open(os.path.join(os.path.dirname(doc), "..", "examples", "numerics", "free_body.sled"))
-moments = [float(v) for v in re.search(r"inertia = \(([^)]*)\) kg\*m\^2", scene.read())
-           .group(1).split(",")]
-L.append("")
-L.append("Angular momentum drift of `free_body` (the largest change of |I w| over the run, over "
-         "its initial value, from the same runs' output rows):")
-L.append("")
-L.append("| method | 1e-4 | 1e-6 | 1e-8 |")
-L.append("|---|---|---|---|")
-for m in METHODS:
-    cells = []
-    for t in ("1e-4", "1e-6", "1e-8"):
-        path = os.path.join(out, "energy", f"free_body_{m}_{t}", "timeseries.csv")
-        if not os.path.exists(path):
-            cells.append("no run")
-            continue
-        with open(path) as f:
-            rows = list(csv.DictReader(f))
-        axes = [f"box.block.angular_velocity.{a} [rad/s]" for a in "xyz"]
-        norms = [math.sqrt(sum((i * float(r[a])) ** 2 for i, a in zip(moments, axes)))
-                 for r in rows]
-        cells.append(f"{max(abs(n - norms[0]) for n in norms) / norms[0]:.1e}")
-    L.append(f"| {m} | " + " | ".join(cells) + " |")
+
+def scene_text(name):
+    return open(os.path.join(root, "examples", "numerics", f"{name}.sled")).read()
+
+
+def vector(text, pattern):
+    """The three numbers of the first `pattern` (a regex with one group around them)."""
+    return [float(v) for v in re.search(pattern, text).group(1).split(",")]
+
+
+def gravity(text):
+    """The scene's gravity [m/s^2]: its `gravity =` line, or the default (0, 0, -1) g."""
+    m = re.search(r"gravity = \(([^)]*)\) m/s\^2", text)
+    return [float(v) for v in m.group(1).split(",")] if m else [0.0, 0.0, -9.80665]
+
+
+def rotation(yaw, pitch, roll):
+    """Segment axes to ground from the output's yaw, pitch and roll (about z, y, x)."""
+    cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
+    cr, sr = math.cos(roll), math.sin(roll)
+    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr]]
+
+
+def channel(row, label, quantity, components):
+    unit = {"position": "m", "velocity": "m/s", "angular_velocity": "rad/s",
+            "orientation": "rad"}[quantity]
+    return [float(row[f"{label}.{quantity}.{c} [{unit}]"]) for c in components]
+
+
+XYZ = "xyz"
+
+
+def free_body_linear(rows, text):
+    """|v(t) - v(0) - g t| / |v(0)| of the centre of mass: the momentum balance with gravity's
+    impulse, which a uniform field makes exact (the mass cancels)."""
+    g = gravity(text)
+    v0 = channel(rows[0], "box.block", "velocity", XYZ)
+    t0 = float(rows[0]["time [s]"])
+    worst = 0.0
+    for r in rows:
+        t = float(r["time [s]"]) - t0
+        v = channel(r, "box.block", "velocity", XYZ)
+        worst = max(worst, math.sqrt(sum((v[i] - v0[i] - g[i] * t) ** 2 for i in range(3))))
+    return worst / math.sqrt(sum(c * c for c in v0))
+
+
+def free_body_angular(rows, text):
+    """|I w| (body axes, principal moments from the scene) is conserved in flight."""
+    moments = vector(text, r"inertia = \(([^)]*)\) kg\*m\^2")
+    norms = [math.sqrt(sum((i * w) ** 2 for i, w in
+                           zip(moments, channel(r, "box.block", "angular_velocity", XYZ))))
+             for r in rows]
+    return max(abs(n - norms[0]) for n in norms) / norms[0]
+
+
+def top_vertical(rows, text):
+    """The heavy top's angular momentum about the vertical through its tip, R I w + m r x v
+    (z component): gravity's torque about the tip and the tip's reaction have none."""
+    mass = float(re.search(r"mass = ([0-9.e+-]+) kg", text).group(1))
+    moments = vector(text, r"inertia = \(([^)]*)\) kg\*m\^2")
+    tip = [v / 1000 for v in vector(text, r"at ground = \(([^)]*)\) mm")]
+    values = []
+    for r in rows:
+        R = rotation(*channel(r, "top.disc", "orientation", ("yaw", "pitch", "roll")))
+        w = channel(r, "top.disc", "angular_velocity", XYZ)
+        p = channel(r, "top.disc", "position", XYZ)
+        v = channel(r, "top.disc", "velocity", XYZ)
+        spin = sum(R[2][i] * moments[i] * w[i] for i in range(3))
+        orbit = mass * ((p[0] - tip[0]) * v[1] - (p[1] - tip[1]) * v[0])
+        values.append(spin + orbit)
+    return max(abs(x - values[0]) for x in values) / abs(values[0])
+
+
+MOMENTA = [("free_body", "linear momentum (with gravity's impulse)", free_body_linear),
+           ("free_body", "angular momentum \\|I w\\|", free_body_angular),
+           ("spin_100", "angular momentum about the vertical through the tip", top_vertical)]
+momenta = [m for m in MOMENTA if m[0] in energy_cases]
+if momenta:
+    L.append("")
+    L.append("Momentum drift, from the same runs' output rows: the largest change over the run, "
+             "over the initial value. `free_body` flies under gravity, so its linear momentum "
+             "is compared with the initial one plus gravity's impulse m g t; `spin_100`'s "
+             "momentum about the vertical through its tip is conserved because gravity's "
+             "torque about the tip, and the tip's reaction, have no vertical component.")
+    L.append("")
+    L.append("| case | quantity | method | " + " | ".join(ENERGY_TOLERANCES) + " |")
+    L.append("|---|---|---|---|---|---|")
+    for name, quantity, measure in momenta:
+        text = scene_text(name)
+        for m in METHODS:
+            cells = []
+            for t in ENERGY_TOLERANCES:
+                folder = os.path.join(out, "energy", f"{name}_{m}_{t}")
+                path = os.path.join(folder, "timeseries.csv")
+                if not os.path.exists(path):
+                    cells.append("no run")
+                    continue
+                summary = os.path.join(folder, "summary.json")
+                if os.path.exists(summary) and json.load(open(summary)).get("status") != "ok":
+                    cells.append("failed")
+                    continue
+                with open(path) as f:
+                    cells.append(f"{measure(list(csv.DictReader(f)), text):.1e}")
+            L.append(f"| {name} | {quantity} | {m} | " + " | ".join(cells) + " |")
 
 os.makedirs(plots, exist_ok=True)
 for c in cases:
