@@ -705,6 +705,48 @@ TEST_P(EveryMethod, ProjectsAfterEveryAcceptedStep) {
   EXPECT_NEAR(std::hypot(integrator->state()[0], integrator->state()[1]), 1.0, 1e-15);
 }
 
+// The circle again, whose Project scales the state by (1 + shift) and which counts the
+// evaluations made exactly at a projected state.
+class ShiftedCircle : public OdeSystem {
+ public:
+  explicit ShiftedCircle(double shift) : shift_(shift) {}
+  std::size_t size() const override { return 2; }
+  bool Derivative(double, std::span<const double> y, std::span<double> dy) override {
+    if (y[0] == projected_[0] && y[1] == projected_[1]) ++evaluations_at_projected;
+    dy[0] = -y[1];
+    dy[1] = y[0];
+    return true;
+  }
+  void Project(double, std::span<double> y) override {
+    for (std::size_t i = 0; i < 2; ++i) projected_[i] = y[i] *= 1.0 + shift_;
+  }
+  long evaluations_at_projected = 0;
+
+ private:
+  double shift_;
+  double projected_[2] = {0.0, 0.0};
+};
+
+// A projection that moves the state by far less than the tolerance keeps the step's end
+// derivative (one evaluation per step saved on every scene with a quaternion); one that moves
+// it by more re-evaluates there, so the next step starts from a consistent pair.
+TEST(Projection, OnlyAProjectionBeyondATinyFractionOfTheToleranceReevaluates) {
+  for (const char* method : {"dopri5", "exponential"}) {
+    for (const double shift : {1e-12, 1e-4}) {
+      ShiftedCircle circle(shift);
+      auto integrator = Make(method);
+      const double y0[] = {1.0, 0.0};
+      integrator->Reset(circle, 0.0, y0, Tolerance(1e-5));
+      ASSERT_EQ(integrator->Advance(1.0).status, IntegratorStatus::kOk) << method;
+      if (shift < 1e-5) {
+        EXPECT_EQ(circle.evaluations_at_projected, 0) << method;
+      } else {
+        EXPECT_EQ(circle.evaluations_at_projected, integrator->stats().steps) << method;
+      }
+    }
+  }
+}
+
 TEST_P(EveryMethod, RerunsAreBitIdentical) {
   std::vector<double> first;
   IntegratorStats first_stats;
