@@ -272,6 +272,9 @@ std::string DumpModel(const Model& m) {
     if (s < m.segment_mirror_twin.size() && m.segment_mirror_twin[s]) {
       line(fmt::format("  mirror_twin normal_in_parent {}", Text(m.mirror_normal[s])));
     }
+    if (s < m.segment_mirror_count.size() && m.segment_mirror_count[s] == 2) {
+      line("  stands_for_its_mirror_image");
+    }
   }
   if (!m.segment_mirror_twin.empty()) line(fmt::format("mirror_plane y {}", m.mirror_plane_y));
   line(fmt::format("q0 {}", List(m.q0)));

@@ -4,7 +4,7 @@
 
 namespace sled::runtime {
 double MirrorWeight(const Model& model, std::size_t segment) {
-  return !model.segment_mirror_twin.empty() && model.segment_mirror_twin[segment] != 0 ? 2.0 : 1.0;
+  return model.segment_mirror_count.empty() ? 1.0 : model.segment_mirror_count[segment];
 }
 
 double KineticEnergy(const Model& model, const Data& data) {

@@ -10,12 +10,12 @@
 
 namespace sled::runtime {
 
-// 2 for a left twin of a mirror-symmetric scene (it stands for its right twin too), else 1.
+// 2 for a left segment of a mirror-symmetric scene and every segment below it (each stands for
+// its right twin too), else 1 (Model::segment_mirror_count).
 double MirrorWeight(const Model& model, std::size_t segment);
 
 // Kinetic energy (absolute velocities) and gravitational potential energy (zero at the ground
-// origin) of every segment; a left twin of a mirror-symmetric scene counts for itself and its
-// right twin.
+// origin) of every segment, each times its MirrorWeight.
 double KineticEnergy(const Model& model, const Data& data);
 double PotentialEnergy(const Model& model, const Data& data);
 

@@ -32,8 +32,8 @@ void AddPointForce(Data& data, std::size_t segment, const Vec3& point_world,
 
 // A force element's force on one of the frames it connects: on a segment, AddPointForce; on a
 // vehicle, its power (force . velocity of the vehicle point) goes into data.vehicle_power, times
-// `weight` (2 for an element of a left twin that stands for its mirror image too), for the
-// energy balance; the ground does no work.
+// `weight` (the MirrorWeight of the segment the element acts on: 2 when it stands for its
+// mirror image too), for the energy balance; the ground does no work.
 void AddFrameForce(Data& data, const FrameRef& frame, const Vec3& point_world,
                    const Vec3& force_world, double weight = 1.0);
 

@@ -136,6 +136,12 @@ struct Model {
   // in the parent's frame). Empty when there is no mirror symmetry.
   std::vector<std::uint8_t> segment_mirror_twin;
   std::vector<Vec3> mirror_normal;
+  // How many segments of the scene each Model segment stands for in sums over the scene
+  // (energies, the work of elements on vehicles): 2 for a left segment whose right twin the
+  // Model leaves out and for every segment below it (segment_mirror_twin marks only the top of
+  // such a subtree, where the doubling enters the dynamics), 1 otherwise. Empty when there is
+  // no mirror symmetry.
+  std::vector<std::uint8_t> segment_mirror_count;
   double mirror_plane_y = 0.0;  // the plane y = mirror_plane_y of the ground
 
   std::int32_t nq = 0;  // position coordinates (quaternions count four)

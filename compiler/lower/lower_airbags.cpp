@@ -30,8 +30,9 @@ bool LowerBagContact(Lowering& lowering, const Airbag& bag, int old) {
   }
   if (segment.ellipsoids.empty()) return note("it has no contact ellipsoid");
   const int index = lowering.new_index[static_cast<std::size_t>(old)];
-  const std::vector<std::uint8_t>& twins = lowering.model().segment_mirror_twin;
-  if (static_cast<std::size_t>(index) < twins.size() && twins[static_cast<std::size_t>(index)]) {
+  const std::vector<std::uint8_t>& counts = lowering.model().segment_mirror_count;
+  if (static_cast<std::size_t>(index) < counts.size() &&
+      counts[static_cast<std::size_t>(index)] == 2) {
     lowering.AddNote(bag.range,
                      fmt::format("mirror symmetry: airbag `{}` touches `{}`, whose right twin the "
                                  "Model leaves out; the twin's push on the gas is not counted",

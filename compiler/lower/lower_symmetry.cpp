@@ -221,6 +221,12 @@ void ApplyMirrorSymmetry(Lowering& lowering, std::size_t s) {
                     lowering.mirror_twin.end();
   model.segment_mirror_twin.push_back(0);
   model.mirror_normal.push_back(runtime::Vec3::Zero());
+  // A left segment stands for its right twin, and so does all that hangs from it (the twin's
+  // subtree is left out whole), however deep below the plane.
+  const std::int32_t model_parent = model.segment_parent[s];
+  const bool below_left =
+      model_parent >= 0 && model.segment_mirror_count[static_cast<std::size_t>(model_parent)] == 2;
+  model.segment_mirror_count.push_back(left || below_left ? 2 : 1);
   if (!left) {
     RestrictToPlane(lowering, s);
     return;

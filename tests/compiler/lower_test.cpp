@@ -251,6 +251,7 @@ TEST(LowerSymmetry, MirrorSymmetryLeavesTheRightTwinOutAndReadsItsOutputsFromThe
   EXPECT_THAT(m.segment_name, ElementsAre("b.trunk", "b.arm_l"));
   EXPECT_THAT(m.joint_kind, ElementsAre(JointKind::kPlanar, JointKind::kBall));
   EXPECT_THAT(m.segment_mirror_twin, ElementsAre(0, 1));
+  EXPECT_THAT(m.segment_mirror_count, ElementsAre(1, 2));
   ExpectNear(m.mirror_normal[1], runtime::Vec3(0, 1, 0), 1e-15);
   EXPECT_EQ(m.mirror_plane_y, 0.5);
   ASSERT_EQ(m.output_index.size(), 1u);
