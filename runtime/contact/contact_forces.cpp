@@ -7,6 +7,7 @@
 #include "runtime/energy.h"
 #include "runtime/force_deflection.h"
 #include "runtime/forces.h"
+#include "runtime/mirror.h"
 
 namespace sled::runtime {
 namespace {
@@ -33,6 +34,23 @@ EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std
   shape.degree = table.ellipsoid_degree[i];
   shape.radius = table.ellipsoid_radius[i];
   return shape;
+}
+
+// Mirror symmetry: a contact between a segment that stands for its right twin and one that does
+// not (in the plane) stands for the twin's contact too, which the Model leaves out; the segment
+// in the plane feels both pushes, the second the mirror image (about y = mirror_plane_y) of the
+// first, at the mirror image of its point.
+void AddTwinContactForce(const Model& model, Data& data, const FrameRef& first,
+                         const FrameRef& second, const Vec3& point, const Vec3& force_on_first) {
+  if (first.kind != FrameRef::Kind::kSegment || second.kind != FrameRef::Kind::kSegment) return;
+  const double first_weight = MirrorWeight(model, static_cast<std::size_t>(first.index));
+  const double second_weight = MirrorWeight(model, static_cast<std::size_t>(second.index));
+  if (first_weight == second_weight) return;
+  const bool first_in_plane = first_weight < second_weight;
+  const FrameRef& in_plane = first_in_plane ? first : second;
+  const Vec3 force = first_in_plane ? force_on_first : Vec3(-force_on_first);
+  const Vec3 image(point.x(), 2.0 * model.mirror_plane_y - point.y(), point.z());
+  AddPointForce(data, static_cast<std::size_t>(in_plane.index), image, MirrorWorldVector(force));
 }
 
 PlaneShape PlaneOf(const ContactState& state, std::int32_t p) {
@@ -158,6 +176,7 @@ void AccumulateContactForces(const Model& model, Data& data) {
                               : 1.0;
     AddFrameForce(data, first, g.point, force, weight);
     AddFrameForce(data, second, g.point, -force, weight);
+    AddTwinContactForce(model, data, first, second, g.point, force);
   }
 }
 
