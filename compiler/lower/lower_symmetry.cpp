@@ -166,6 +166,15 @@ void PlanMirrorSymmetry(Lowering& lowering) {
                       "one of a pair",
                       name(joint.child), name(joint.parent)));
     }
+    // A left segment stands for its twin's whole subtree: a child without a pair would be
+    // restricted to the plane as if it were on the centre line.
+    if (right_of[static_cast<std::size_t>(joint.parent)] >= 0 &&
+        right_of[static_cast<std::size_t>(joint.child)] < 0) {
+      return refuse(
+          fmt::format("`{}` hangs from the left segment `{}` but is not the left "
+                      "one of a pair",
+                      name(joint.child), name(joint.parent)));
+    }
   }
   auto on_right = [&](const FrameRef& frame) {
     return frame.kind == FrameRef::Kind::kSegment &&

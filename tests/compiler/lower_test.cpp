@@ -242,6 +242,26 @@ TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSeg
               HasSubstr("mirror symmetry is not applied: spring `tether` acts on a right segment"));
 }
 
+TEST(LowerSymmetry, MirrorSymmetryIsRefusedWhenALeftSegmentHasAnUnpairedChild) {
+  const Result r = LowerText(Scene(fmt::format(R"(
+  symmetry mirror {{ pair = b.arm_l, b.arm_r }}
+  body b {{
+    segment trunk {{ {0} }}
+    segment arm_l {{ {0} }}
+    segment arm_r {{ {0} }}
+    segment hand {{ {0} }}
+    joint shoulder_l : ball(trunk -> arm_l) {{ at trunk = (0, 0.2, 0) m  at arm_l = (0, 0, 0.1) m }}
+    joint shoulder_r : ball(trunk -> arm_r) {{ at trunk = (0, -0.2, 0) m  at arm_r = (0, 0, 0.1) m }}
+    joint wrist : ball(arm_l -> hand) {{ at arm_l = (0, 0, -0.1) m  at hand = (0, 0, 0.05) m }}
+  }})",
+                                               kUnitInertia)));
+  ASSERT_CHECKED(r);
+  EXPECT_TRUE(r.model().segment_mirror_twin.empty());
+  EXPECT_THAT(fmt::format("{}", fmt::join(r.lowered.notes, "\n")),
+              HasSubstr("mirror symmetry is not applied: `b.hand` hangs from the left "
+                        "segment `b.arm_l` but is not the left one of a pair"));
+}
+
 TEST(LowerSymmetry, MirrorSymmetryLeavesTheRightTwinOutAndReadsItsOutputsFromTheLeft) {
   const Result r = LowerText(Scene(kTwoArms + R"(
   initial b { position = (0, 0.5, 1) m }
