@@ -68,7 +68,7 @@ class Rosenbrock final : public AdaptiveIntegrator {
   double AdjustStep(double proposed, double current) const override;
 
  private:
-  // Forms the Jacobian and f_t at (t_, y_) (f0_ is f there). False if Derivative failed.
+  // Forms the Jacobian and f_t at (t_, y_). False if Derivative failed.
   bool FormJacobian(double h);
   // W = 1/(h gamma) I - J, factored.
   void Factor(double h);
@@ -78,7 +78,7 @@ class Rosenbrock final : public AdaptiveIntegrator {
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
   Eigen::VectorXd time_derivative_;  // f_t
   Eigen::VectorXd u_[kStages];
-  Eigen::VectorXd rhs_, stage_, f_stage_, error_;
+  Eigen::VectorXd rhs_, stage_, f_stage_, f_base_, error_;
   std::vector<double> jacobian_row_major_;  // for OdeSystem::Jacobian
 
   bool jacobian_valid_ = false;
