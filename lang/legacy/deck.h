@@ -158,6 +158,10 @@ struct Deck {
   std::vector<SpringCard> springs;
   std::vector<FunctionCard> functions;
   std::vector<ContactCard> contacts;
+  // G.1.a I3 = 0: the reference segments start with the primary vehicle's velocity (and its
+  // angular velocity, zero for the motions sled converts); else the G cards give them.
+  bool velocities_from_vehicle = true;
+  std::uint32_t velocity_source_line = 0;
   std::vector<InitialCard> initial_positions;
   std::vector<OrientationCard> initial_orientations;  // per segment
   std::vector<OutputCard> outputs;

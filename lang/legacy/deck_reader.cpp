@@ -93,6 +93,11 @@ class DeckReader {
               "the format reference marks this unverified: compare the converted scenario with "
               "the deck's documentation before trusting it");
   }
+  void Ignored(const Card& card, int first, int last, std::string what, std::string help) {
+    r_.Report(DiagnosticKind::kDeckIgnoredField, card, first, last,
+              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+              std::move(help));
+  }
   void Invalid(const Card& card, int first, int last, std::string what, std::string help) {
     r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
               fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
@@ -419,9 +424,11 @@ class DeckReader {
                "`motion = table(...)` by hand");
       } else {
         Unverified(card, 19, 30,
-                   "a half-sine pulse: AX and its frequency come from VINO12, which the "
-                   "reference does not have; sled assumes a half-sine of duration VTIME that "
-                   "brings VIPS to rest along the vehicle's -x");
+                   "a half-sine pulse: its direction AX, its frequency and the initial "
+                   "velocity come from VINO12, which the reference does not have; sled assumes "
+                   "an initial velocity VIPS along the vehicle's x axis (turned by its yaw and "
+                   "pitch) and a half-sine of duration VTIME along its -x that brings it to "
+                   "rest");
       }
       if (ivflg != 0) {
         Refuse(card, 67, 68, fmt::format("IVFLG is {}: motion relative to a segment", ivflg),
@@ -850,10 +857,15 @@ class DeckReader {
       Refuse(g1, 31, 34, "I1 = 15 asks for an equilibrium solve",
              "use a `settle { duration = ... }` block instead, and remove the EQUILB cards");
     }
-    if (i3 != 0) {
-      Refuse(g1, 47, 50, fmt::format("I3 is {}: velocities from another source", i3),
-             "the meaning of I3 = 1 and 2 is not documented; give the velocities on G.2");
+    // I3 = 0: every reference segment moves with the primary vehicle and the G.2 and G.3
+    // velocities are not used (INPUT_LINEAR, INPUT_ORIENT); 1: the G cards give them; 2: the G
+    // cards where IREF2 is 0, which is every card sled converts (IREF2 is refused).
+    if (i3 < 0 || i3 > 2) {
+      Invalid(g1, 47, 50, fmt::format("I3 is {}", i3),
+              "I3 is 0 (velocities of the primary vehicle), 1 or 2 (velocities from the G cards)");
     }
+    deck_.velocities_from_vehicle = i3 == 0;
+    deck_.velocity_source_line = g1.line;
     if (j1 != 0) {
       r_.Next("G.1.b (obsolete)", {"(I1)"});
       Unverified(g1, 35, 38, "J1 is not zero: the obsolete G.1.b card is read and ignored");
@@ -871,6 +883,14 @@ class DeckReader {
       initial.segment = segment;
       initial.position = Triple(card, 1, 10, "the position");
       initial.velocity = Triple(card, 31, 10, "the velocity");
+      if (deck_.velocities_from_vehicle && initial.velocity != Vec3{}) {
+        Ignored(card, 31, 60,
+                "with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's velocity and "
+                "ignores this one",
+                "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or "
+                "leave these columns blank");
+        initial.velocity = Vec3{};
+      }
       if (r_.Integer(card, 61, 63, "IREF2") != 0) {
         Refuse(card, 61, 63, "IREF2: the velocity of a vehicle",
                "write the velocity on the card itself");
@@ -887,6 +907,14 @@ class DeckReader {
       orientation.line = card.line;
       orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
       orientation.angular_velocity = Triple(card, 31, 10, "the angular velocity");
+      if (deck_.velocities_from_vehicle && orientation.angular_velocity != Vec3{}) {
+        Ignored(card, 31, 60,
+                "with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's angular "
+                "velocity and ignores this one",
+                "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or "
+                "leave these columns blank");
+        orientation.angular_velocity = Vec3{};
+      }
       for (int i = 0; i < 4; ++i) {
         const int first = 61 + 3 * i;
         const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");

@@ -2,7 +2,10 @@
 // the deck, numbers in the deck's units, and a comment naming each declaration's card.
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -121,6 +124,29 @@ std::string CardComment(std::string_view card, std::uint32_t line) {
 }
 
 bool IsZero(const Vec3& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+
+// The cosine and sine of an angle in degrees, exact at multiples of 90 degrees (a vehicle pitched
+// -90 degrees moves along z, not along z plus 1e-17 of x).
+std::optional<double> ExactCos(double degrees) {
+  const double quarters = degrees / 90;
+  if (quarters != std::floor(quarters) || std::fabs(quarters) > 1e6) return std::nullopt;
+  static constexpr double kCos[] = {1, 0, -1, 0};
+  return kCos[static_cast<int>(std::fmod(std::fmod(quarters, 4) + 4, 4))];
+}
+double CosDegrees(double degrees) {
+  return ExactCos(degrees).value_or(std::cos(degrees * (std::numbers::pi / 180)));
+}
+double SinDegrees(double degrees) {
+  return ExactCos(degrees - 90).value_or(std::sin(degrees * (std::numbers::pi / 180)));
+}
+
+// C.2.a: the vehicle's initial velocity, VIPS along its own x axis (yaw, then pitch; the roll
+// turns about x itself), the axis its half-sine pulse brings to rest.
+Vec3 VehicleVelocity(const VehicleCard& vehicle) {
+  const double yaw = vehicle.orientation[0], pitch = vehicle.orientation[1];
+  return {vehicle.speed * CosDegrees(yaw) * CosDegrees(pitch),
+          vehicle.speed * SinDegrees(yaw) * CosDegrees(pitch), -vehicle.speed * SinDegrees(pitch)};
+}
 
 // --- Names --------------------------------------------------------------------------------
 
@@ -423,7 +449,7 @@ class Mapper {
       if (!IsZero(card.orientation))
         Add(vehicle, Attribute("orientation", Vector(card.orientation, "deg")));
       if (card.speed != 0) {
-        Add(vehicle, Attribute("velocity", Vector({card.speed, 0, 0}, L + "/" + T)));
+        Add(vehicle, Attribute("velocity", Vector(VehicleVelocity(card), L + "/" + T)));
         Add(vehicle,
             Attribute("motion", Call("half_sine", {{"delta_v", Number(card.speed, L + "/" + T)},
                                                    {"duration", Number(card.duration, T)},
@@ -634,8 +660,19 @@ class Mapper {
       const std::string target = card.segment == 1 ? body_ : body_ + "." + segments_[index];
       ast::Statement initial = Declaration("initial", Path(target), CardComment("G.2", card.line));
       Add(initial, Attribute("position", Vector(card.position, L)));
-      if (!IsZero(card.velocity))
-        Add(initial, Attribute("velocity", Vector(card.velocity, L + "/" + T)));
+      const Vec3 velocity = deck_.velocities_from_vehicle && !deck_.vehicles.empty()
+                                ? VehicleVelocity(deck_.vehicles.back())
+                                : card.velocity;
+      if (!IsZero(velocity)) {
+        Add(initial, Attribute("velocity", Vector(velocity, L + "/" + T)));
+        if (deck_.velocities_from_vehicle) {
+          initial.block->statements.back().leading_comments.push_back(
+              {" " + CardComment("G.1.a", deck_.velocity_source_line) +
+                   ": I3 = 0, the primary vehicle's velocity",
+               {},
+               false});
+        }
+      }
       AddOrientation(initial, index);
       scenario.statements.push_back(std::move(initial));
     }

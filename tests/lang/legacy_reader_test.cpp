@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -190,6 +192,75 @@ TEST(LegacyConvert, UndefinedFunctionIsReportedAtItsField) {
   lines[line - 1].replace(16, 4, "   7");
   const Converted converted = Convert(Join(lines, lines.size()));
   EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:17-20: error[E0509]", line)));
+}
+
+// The scenario's `initial BODY { ... }` block, empty when there is none.
+std::string InitialBlock(const std::string& scenario, std::string_view body) {
+  const std::size_t start = scenario.find(fmt::format("initial {} {{", body));
+  if (start == std::string::npos) return {};
+  return scenario.substr(start, scenario.find("\n  }", start) - start);
+}
+
+TEST(LegacyConvert, G1aI3ChoosesTheVehiclesVelocityOrTheGCards) {
+  const std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t g1 = LineStarting(lines, "# ---- G cards") + 1;  // G.1.a, then G.2, G.3.a
+  auto convert = [&](std::string i3, std::string g2_velocity, std::string g3_rate) {
+    std::vector<std::string> copy = lines;
+    copy[g1 - 1] = std::string(46, ' ') + i3;
+    copy[g1].replace(30, 30, g2_velocity);
+    copy[g1 + 2] = std::string(30, ' ') + g3_rate;
+    return Convert(Join(copy, copy.size()));
+  };
+  const std::string blank(30, ' ');
+  const std::string rate = "        0.       10.        0.";
+  // I3 = 0 (blank): the sled's 528 in/s, whatever G.2 and G.3.a say; what they say is W0503.
+  const Converted vehicle = convert("    ", blank, blank);
+  EXPECT_EQ(vehicle.errors, 0);
+  EXPECT_FALSE(vehicle.Has("W0503"));
+  EXPECT_NE(InitialBlock(vehicle.text, "occupant").find("velocity = (528, 0, 0) in/s"),
+            std::string::npos)
+      << vehicle.text;
+  const Converted ignored = convert("   0", "      100.        0.        0.", rate);
+  EXPECT_TRUE(ignored.Has(fmt::format("deck.ain:{}:31-60: warning[W0503]: card G.2", g1 + 1)));
+  EXPECT_TRUE(ignored.Has(fmt::format("deck.ain:{}:31-60: warning[W0503]: card G.3.a", g1 + 3)));
+  EXPECT_EQ(InitialBlock(ignored.text, "occupant"), InitialBlock(vehicle.text, "occupant"));
+  EXPECT_EQ(ignored.text.find("angular_velocity"), std::string::npos);
+  // I3 = 1 and 2: the G cards, blank or not.
+  for (const char* i3 : {"   1", "   2"}) {
+    const Converted cards = convert(i3, "      100.        0.        0.", rate);
+    EXPECT_EQ(cards.warnings, vehicle.warnings) << i3;
+    EXPECT_NE(InitialBlock(cards.text, "occupant").find("velocity = (100, 0, 0) in/s"),
+              std::string::npos)
+        << cards.text;
+    EXPECT_NE(cards.text.find("angular_velocity = (0, 10, 0) deg/s"), std::string::npos);
+  }
+  const Converted at_rest = convert("   1", blank, blank);
+  EXPECT_EQ(InitialBlock(at_rest.text, "occupant").find("velocity"), std::string::npos);
+  EXPECT_TRUE(convert("   3", blank, blank)
+                  .Has(fmt::format("deck.ain:{}:47-50: error[E0512]: card G.1.a", g1)));
+}
+
+TEST(LegacyConvert, VehicleVelocityLiesAlongTheVehiclesXAxis) {
+  const std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t c2 = LineStarting(lines, "SLED 30 MPH") + 1;
+  auto convert = [&](std::string yaw_pitch_roll) {
+    std::vector<std::string> copy = lines;
+    copy[c2 - 1].replace(0, 18, yaw_pitch_roll);
+    return Convert(Join(copy, copy.size()));
+  };
+  // Pitched -90 degrees, x points down (+z); yawed 90, along +y; the roll turns about x itself.
+  const Converted pitched = convert("    0.  -90.   30.");
+  EXPECT_NE(pitched.text.find("velocity = (0, 0, 528) in/s"), std::string::npos) << pitched.text;
+  EXPECT_NE(InitialBlock(pitched.text, "occupant").find("velocity = (0, 0, 528) in/s"),
+            std::string::npos);
+  EXPECT_NE(convert("   90.    0.    0.").text.find("velocity = (0, 528, 0) in/s"),
+            std::string::npos);
+  const Converted yawed = convert("   60.    0.    0.");
+  const double yaw = 60 * (std::numbers::pi / 180);
+  EXPECT_NE(yawed.text.find(fmt::format("velocity = ({}, {}, 0) in/s", 528 * std::cos(yaw),
+                                        528 * std::sin(yaw))),
+            std::string::npos)
+      << yawed.text;
 }
 
 TEST(LegacyConvertRobustness, EveryTruncationIsReportedNeverACrash) {
