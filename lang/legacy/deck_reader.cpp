@@ -882,15 +882,7 @@ class DeckReader {
       initial.line = card.line;
       initial.segment = segment;
       initial.position = Triple(card, 1, 10, "the position");
-      initial.velocity = Triple(card, 31, 10, "the velocity");
-      if (deck_.velocities_from_vehicle && initial.velocity != Vec3{}) {
-        Ignored(card, 31, 60,
-                "with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's velocity and "
-                "ignores this one",
-                "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or "
-                "leave these columns blank");
-        initial.velocity = Vec3{};
-      }
+      initial.velocity = GivenVelocity(card, "velocity");
       if (r_.Integer(card, 61, 63, "IREF2") != 0) {
         Refuse(card, 61, 63, "IREF2: the velocity of a vehicle",
                "write the velocity on the card itself");
@@ -906,15 +898,7 @@ class DeckReader {
       OrientationCard orientation;
       orientation.line = card.line;
       orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
-      orientation.angular_velocity = Triple(card, 31, 10, "the angular velocity");
-      if (deck_.velocities_from_vehicle && orientation.angular_velocity != Vec3{}) {
-        Ignored(card, 31, 60,
-                "with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's angular "
-                "velocity and ignores this one",
-                "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or "
-                "leave these columns blank");
-        orientation.angular_velocity = Vec3{};
-      }
+      orientation.angular_velocity = GivenVelocity(card, "angular velocity");
       for (int i = 0; i < 4; ++i) {
         const int first = 61 + 3 * i;
         const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");
@@ -927,6 +911,19 @@ class DeckReader {
       }
       deck_.initial_orientations.push_back(orientation);
     }
+  }
+
+  // A G.2 velocity or G.3.a angular velocity (columns 31-60), zero when I3 = 0 makes ATB ignore it.
+  Vec3 GivenVelocity(const Card& card, std::string_view what) {
+    const Vec3 velocity = Triple(card, 31, 10, fmt::format("the {}", what));
+    if (!deck_.velocities_from_vehicle || velocity == Vec3{}) return velocity;
+    Ignored(card, 31, 60,
+            fmt::format("with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's {} "
+                        "and ignores this one",
+                        what),
+            "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or leave "
+            "these columns blank");
+    return Vec3{};
   }
 
   // --- H: output requests ------------------------------------------------------------------
