@@ -1,5 +1,7 @@
 #include "lang/legacy/deck_reader.h"
 
+#include "lang/legacy/deck_fields.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -25,9 +27,9 @@ std::string Upper(std::string text) {
   return text;
 }
 
-class DeckReader {
+class DeckReader : public DeckFields {
  public:
-  explicit DeckReader(DeckSource& reader) : r_(reader) {}
+  DeckReader(DeckSource& reader, Deck& deck) : DeckFields(reader, deck) {}
 
   Deck Read() {
     ReadA();
@@ -49,61 +51,6 @@ class DeckReader {
   }
 
  private:
-  Vec3 Triple(const Card& card, int first, int width, std::string_view what) {
-    Vec3 v{};
-    for (int i = 0; i < 3; ++i) {
-      v[static_cast<std::size_t>(i)] =
-          r_.Real(card, first + i * width, first + (i + 1) * width - 1, what);
-    }
-    return v;
-  }
-
-  // A count checked against its limit; out of range is reported and read as zero.
-  int Count(const Card& card, int first, int last, std::string_view what, int limit) {
-    const int value = r_.Integer(card, first, last, what);
-    if (value < 0 || value > limit) {
-      r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, first, last,
-                fmt::format("card {}, {} ({}): {} is outside 0 to {}", card.label,
-                            r_.Where(card, first, last), what, value, limit),
-                "the ATB V.3 limits (MODULE_STANDARD) bound every count");
-      return 0;
-    }
-    return value;
-  }
-
-  Ref Reference(const Card& card, int first, int last, std::string_view what) {
-    return Ref{r_.Integer(card, first, last, what), r_.Range(card, first, last), card.label};
-  }
-
-  void Refuse(const Card& card, int first, int last, std::string what, std::string help) {
-    r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
-              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-              std::move(help));
-  }
-  void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,
-                     std::string help) {
-    if (value != 0) {
-      Refuse(card, first, last, fmt::format("{} is {}; sled has no such attribute", what, value),
-             std::move(help));
-    }
-  }
-  void Unverified(const Card& card, int first, int last, std::string what) {
-    r_.Report(DiagnosticKind::kDeckUnverifiedField, card, first, last,
-              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-              "the format reference marks this unverified: compare the converted scenario with "
-              "the deck's documentation before trusting it");
-  }
-  void Ignored(const Card& card, int first, int last, std::string what, std::string help) {
-    r_.Report(DiagnosticKind::kDeckIgnoredField, card, first, last,
-              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-              std::move(help));
-  }
-  void Invalid(const Card& card, int first, int last, std::string what, std::string help) {
-    r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
-              fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-              std::move(help));
-  }
-
   // --- A: control --------------------------------------------------------------------------
   void ReadA() {
     const Card date = r_.Next("A.1 (date)", {"(A12)"});
@@ -709,7 +656,8 @@ class DeckReader {
     const int belts = static_cast<int>(deck_.belts.size());
     const int segments = static_cast<int>(deck_.segments.size());
     if (planes > 0) {
-      std::vector<int> counts = CountsPerItem("F.1.a", planes);
+      std::vector<int> counts = CountsPerItem("F.1.a", planes, "(18I4)", 18, false,
+                                              "a number of contacts", kMaxContacts / 10);
       bool warned = false;
       for (int p = 0; p < planes; ++p) {
         for (int k = 0; k < counts[static_cast<std::size_t>(p)]; ++k) {
@@ -726,7 +674,8 @@ class DeckReader {
       }
     }
     if (belts > 0) {
-      std::vector<int> counts = CountsPerItem("F.2.a", belts, true);
+      std::vector<int> counts = CountsPerItem("F.2.a", belts, "(8I4)", 8, true,
+                                              "a number of contacts", kMaxContacts / 10);
       for (int b = 0; b < belts; ++b) {
         for (int k = 0; k < counts[static_cast<std::size_t>(b)]; ++k) {
           const Card card = r_.Next(fmt::format("F.2.b (belt {})", b + 1), {"(9I4)"});
@@ -739,7 +688,8 @@ class DeckReader {
         }
       }
     }
-    std::vector<int> counts = CountsPerItem("F.3.a", segments);
+    std::vector<int> counts = CountsPerItem("F.3.a", segments, "(18I4)", 18, false,
+                                            "a number of contacts", kMaxContacts / 10);
     for (int s = 0; s < segments; ++s) {
       for (int k = 0; k < counts[static_cast<std::size_t>(s)]; ++k) {
         const Card card =
@@ -747,7 +697,8 @@ class DeckReader {
         ReadContact(card, false, s + 1, segments);
       }
     }
-    const std::vector<int> global = CountsPerItem("F.4.a", std::max(1, segments - 1));
+    const std::vector<int> global = CountsPerItem("F.4.a", std::max(1, segments - 1), "(18I4)", 18,
+                                                  false, "a number of contacts", kMaxContacts / 10);
     for (std::size_t j = 0; j < global.size(); ++j) {
       if (global[j] != 0) {
         Refuse(r_.Next("F.4.b", {"(18I4)"}), 1, 4, "a global-graphic joint contact",
@@ -755,40 +706,6 @@ class DeckReader {
         break;
       }
     }
-  }
-
-  // Counts per item, 18 per card (`(18I4)`, one READ per card in a .lin deck) or, for F.2.a, 8
-  // per card (`(8I4)`, one READ over all of them, so a .lin deck may give them on one line).
-  std::vector<int> CountsPerItem(const std::string& label, int items, bool belts = false) {
-    std::vector<int> counts;
-    const int per_card = belts ? 8 : 18;
-    for (int line = 0; line < (items + per_card - 1) / per_card; ++line) {
-      const CardSpec spec{belts ? "(8I4)" : "(18I4)", std::min(per_card, items - per_card * line),
-                          belts && line > 0};
-      const Card card = r_.Next(fmt::format("{} (line {})", label, line + 1), spec);
-      for (int i = 0; i < per_card && line * per_card + i < items; ++i) {
-        counts.push_back(
-            Count(card, 4 * i + 1, 4 * i + 4, "a number of contacts", kMaxContacts / 10));
-      }
-    }
-    counts.resize(static_cast<std::size_t>(items), 0);
-    return counts;
-  }
-
-  void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction) {
-    *force = Reference(card, first, first + 3, "the force-deflection function");
-    const char* names[] = {"the inertial-spike function", "the R-factor function",
-                           "the G-factor function"};
-    for (int i = 1; i <= 3; ++i) {
-      const int at = first + 4 * i;
-      const int value = r_.Integer(card, at, at + 3, names[i - 1]);
-      if (value != 0) {
-        Refuse(card, at, at + 3, fmt::format("{} is {}", names[i - 1], value),
-               "the meaning of these functions is not documented; sled's contacts take "
-               "`damping`, `impulse` and the unloading attributes of their force function instead");
-      }
-    }
-    *friction = Reference(card, first + 16, first + 19, "the friction function");
   }
 
   void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
@@ -962,13 +879,13 @@ class DeckReader {
     }
     deck_.outputs.push_back(std::move(output));
   }
-
-  DeckSource& r_;
-  Deck deck_;
 };
 
 }  // namespace
 
-Deck ReadDeck(DeckSource& source) { return DeckReader(source).Read(); }
+Deck ReadDeck(DeckSource& source) {
+  Deck deck;
+  return DeckReader(source, deck).Read();
+}
 
 }  // namespace sled::lang::legacy

@@ -1,0 +1,100 @@
+#include "lang/legacy/deck_fields.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace sled::lang::legacy {
+
+Vec3 DeckFields::Triple(const Card& card, int first, int width, std::string_view what) {
+  Vec3 v{};
+  for (int i = 0; i < 3; ++i) {
+    v[static_cast<std::size_t>(i)] =
+        r_.Real(card, first + i * width, first + (i + 1) * width - 1, what);
+  }
+  return v;
+}
+
+int DeckFields::Count(const Card& card, int first, int last, std::string_view what, int limit) {
+  const int value = r_.Integer(card, first, last, what);
+  if (value < 0 || value > limit) {
+    r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, first, last,
+              fmt::format("card {}, {} ({}): {} is outside 0 to {}", card.label,
+                          r_.Where(card, first, last), what, value, limit),
+              "the ATB V.3 limits (MODULE_STANDARD) bound every count");
+    return 0;
+  }
+  return value;
+}
+
+Ref DeckFields::Reference(const Card& card, int first, int last, std::string_view what) {
+  return Ref{r_.Integer(card, first, last, what), r_.Range(card, first, last), card.label};
+}
+
+std::vector<int> DeckFields::CountsPerItem(const std::string& label, int items,
+                                           std::string_view format, int per_card, bool one_read,
+                                           std::string_view what, int limit) {
+  std::vector<int> counts;
+  for (int line = 0; line < (items + per_card - 1) / per_card; ++line) {
+    const CardSpec spec{format, std::min(per_card, items - per_card * line), one_read && line > 0};
+    const Card card = r_.Next(fmt::format("{} (line {})", label, line + 1), spec);
+    for (int i = 0; i < per_card && line * per_card + i < items; ++i) {
+      counts.push_back(Count(card, 4 * i + 1, 4 * i + 4, what, limit));
+    }
+  }
+  counts.resize(static_cast<std::size_t>(std::max(items, 0)), 0);
+  return counts;
+}
+
+void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction) {
+  *force = Reference(card, first, first + 3, "the force-deflection function");
+  const char* names[] = {"the inertial-spike function", "the R-factor function",
+                         "the G-factor function"};
+  for (int i = 1; i <= 3; ++i) {
+    const int at = first + 4 * i;
+    const int value = r_.Integer(card, at, at + 3, names[i - 1]);
+    if (value != 0) {
+      Refuse(card, at, at + 3, fmt::format("{} is {}", names[i - 1], value),
+             "the meaning of these functions is not documented; sled's contacts take "
+             "`damping`, `impulse` and the unloading attributes of their force function instead");
+    }
+  }
+  *friction = Reference(card, first + 16, first + 19, "the friction function");
+}
+
+void DeckFields::Refuse(const Card& card, int first, int last, std::string what, std::string help) {
+  r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
+            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+            std::move(help));
+}
+
+void DeckFields::RefuseNonZero(const Card& card, int first, int last, double value,
+                               std::string_view what, std::string help) {
+  if (value != 0) {
+    Refuse(card, first, last, fmt::format("{} is {}; sled has no such attribute", what, value),
+           std::move(help));
+  }
+}
+
+void DeckFields::Unverified(const Card& card, int first, int last, std::string what) {
+  r_.Report(DiagnosticKind::kDeckUnverifiedField, card, first, last,
+            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+            "the format reference marks this unverified: compare the converted scenario with "
+            "the deck's documentation before trusting it");
+}
+
+void DeckFields::Ignored(const Card& card, int first, int last, std::string what,
+                         std::string help) {
+  r_.Report(DiagnosticKind::kDeckIgnoredField, card, first, last,
+            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+            std::move(help));
+}
+
+void DeckFields::Invalid(const Card& card, int first, int last, std::string what,
+                         std::string help) {
+  r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
+            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+            std::move(help));
+}
+
+}  // namespace sled::lang::legacy
