@@ -85,6 +85,30 @@ struct BeltCard {
   bool output = false;
 };
 
+// F.8: a harness (D.1 NHRNSS), belts through points. A belt's first and last points are anchors in
+// the harness's frame, the points between them are body segments whose ellipsoid the webbing
+// wraps.
+struct HarnessPoint {
+  std::uint32_t line = 0;  // F.8.d.1
+  Ref segment;             // KS: a wrapped point's body segment; an end's KS as given
+  Ref friction;            // NF(5)
+  Vec3 anchor{};           // an end: BAR(1..3) plus the F.8.d.2 offset, in the harness's frame
+  int tie = 0;             // an end: the tie point (KS / 100), 0 for none
+};
+
+struct HarnessBeltCard {
+  std::uint32_t line = 0;  // F.8.c
+  Ref force;
+  double slack = 0;  // XLONG
+  std::vector<HarnessPoint> points;
+};
+
+struct HarnessCard {
+  std::uint32_t line = 0;  // F.8.a
+  int vehicle = -1;        // the anchors' frame: a vehicle (0-based, deck order) or -1, the ground
+  std::vector<HarnessBeltCard> belts;
+};
+
 struct VehicleEllipsoidCard {
   std::uint32_t line = 0;
   int vehicle = 0;  // 1-based among the vehicles
@@ -158,6 +182,7 @@ struct Deck {
   std::vector<SpringCard> springs;
   std::vector<FunctionCard> functions;
   std::vector<ContactCard> contacts;
+  std::vector<HarnessCard> harnesses;
   // G.1.a I3 = 0: the reference segments start with the primary vehicle's velocity (and its
   // angular velocity, zero for the motions sled converts); else the G cards give them.
   bool velocities_from_vehicle = true;

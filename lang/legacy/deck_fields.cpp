@@ -97,4 +97,11 @@ void DeckFields::Invalid(const Card& card, int first, int last, std::string what
             std::move(help));
 }
 
+void DeckFields::Approximated(const Card& card, int first, int last, std::string what) {
+  r_.Report(DiagnosticKind::kDeckApproximated, card, first, last,
+            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
+            "sled's model differs here from ATB's: compare the converted scenario's results with "
+            "the deck's before trusting them");
+}
+
 }  // namespace sled::lang::legacy

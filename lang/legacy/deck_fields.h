@@ -1,8 +1,9 @@
 // The helpers every card group's reader shares: fields read by their declared columns through a
 // DeckSource into the Deck being filled, with the diagnostics of docs/legacy.md (refused fields
 // E0507, invalid values E0512, counts out of range E0505, unverified fields W0501, fields ATB
-// ignores W0503). deck_reader.cpp reads groups A to H with them; the restraint groups that take
-// many cards (harnesses, airbags, constraints) have files of their own.
+// ignores W0503, fields converted to sled's nearest model W0504). deck_reader.cpp reads groups A to
+// H with them; the restraint groups that take many cards (harnesses, airbags, constraints) have
+// files of their own.
 #pragma once
 
 #include <string>
@@ -41,6 +42,7 @@ class DeckFields {
   void Unverified(const Card& card, int first, int last, std::string what);
   void Ignored(const Card& card, int first, int last, std::string what, std::string help);
   void Invalid(const Card& card, int first, int last, std::string what, std::string help);
+  void Approximated(const Card& card, int first, int last, std::string what);
 
  protected:
   DeckSource& r_;

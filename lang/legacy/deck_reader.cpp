@@ -1,6 +1,7 @@
 #include "lang/legacy/deck_reader.h"
 
 #include "lang/legacy/deck_fields.h"
+#include "lang/legacy/restraint_readers.h"
 
 #include <algorithm>
 #include <cctype>
@@ -21,6 +22,7 @@ constexpr int kMaxFunction = 98;
 constexpr int kMaxVehicles = 6;
 constexpr int kMaxOutputs = 20;
 constexpr int kMaxContacts = 200;
+constexpr int kMaxHarnesses = 5;
 
 std::string Upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -402,6 +404,7 @@ class DeckReader : public DeckFields {
         Count(d1, 19, 24, "NELP, the number of extra ellipsoids", kMaxEllipsoids);
     const int constraints = r_.Integer(d1, 25, 30, "NQ, the number of constraints");
     const int springs = Count(d1, 31, 36, "NSD, the number of spring-dampers", kMaxSprings);
+    harnesses_ = Count(d1, 37, 42, "NHRNSS, the number of harnesses", kMaxHarnesses);
     struct Unsupported {
       int first;
       const char* what;
@@ -411,7 +414,6 @@ class DeckReader : public DeckFields {
         {13, "NBAG (airbags)", "convert the airbags into `airbag` blocks by hand (docs/legacy.md)"},
         {25, "NQ (constraints)",
          "the KQTYPE codes of D.6 are not documented; write `constraint` blocks by hand"},
-        {37, "NHRNSS (harnesses)", "convert the harness into a `harness` block by hand"},
         {43, "NWINDF (wind forces)", "sled has no wind forces"},
         {49, "NJNTF (obsolete joint functions)",
          "ATB V.3 requires 0; define joint functions as E functions named by a negative B.4 "
@@ -706,6 +708,7 @@ class DeckReader : public DeckFields {
         break;
       }
     }
+    if (harnesses_ > 0 && !r_.truncated()) ReadHarnesses(*this, harnesses_, 0);
   }
 
   void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
@@ -879,6 +882,8 @@ class DeckReader : public DeckFields {
     }
     deck_.outputs.push_back(std::move(output));
   }
+
+  int harnesses_ = 0;  // D.1.a NHRNSS
 };
 
 }  // namespace

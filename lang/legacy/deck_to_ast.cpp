@@ -509,11 +509,7 @@ class Mapper {
   void MapRestraints(ast::Block& scenario) {
     for (std::size_t b = 0; b < deck_.belts.size(); ++b) {
       const BeltCard& card = deck_.belts[b];
-      if (card.contact_line == 0) {
-        Ref where{0, {}, "D.3"};
-        (void)where;
-        continue;  // the F.2.b card was missing: reported by the reader
-      }
+      if (card.contact_line == 0) continue;  // the F.2.b card was missing: reported by the reader
       const std::string segment = Segment(card.segment, "segment");
       auto force = FunctionFor(card.force, Use::kBelt);
       const auto friction = Friction(card.friction);
@@ -526,13 +522,11 @@ class Mapper {
       path.push_back(Vector(card.anchor_a, L));
       path.push_back(Path(segment));
       path.push_back(Vector(card.anchor_b, L));
-      Add(belt, Attribute("path", ast::MakeArrow(std::move(path))));
-      Add(belt, Attribute("force", std::move(*force)));
-      if (card.slack > 0) Add(belt, Attribute("slack", Number(card.slack, L)));
-      if (*friction != 0) Add(belt, Attribute("friction", Number(*friction)));
+      AddBeltAttributes(belt, std::move(path), std::move(*force), card.slack, *friction);
       if (card.output) belt_outputs_.push_back(belts_[b]);
       scenario.statements.push_back(std::move(belt));
     }
+    MapHarnesses(scenario);
     for (std::size_t s = 0; s < deck_.springs.size(); ++s) {
       const SpringCard& card = deck_.springs[s];
       const std::string first = Segment(card.first, "segment M");
@@ -585,6 +579,89 @@ class Mapper {
       Add(symmetry, std::move(pair));
     }
     if (!symmetry.block->statements.empty()) scenario.statements.push_back(std::move(symmetry));
+  }
+
+  void AddBeltAttributes(ast::Statement& belt, std::vector<ast::Expr> path, ast::Expr force,
+                         double slack, double friction) {
+    Add(belt, Attribute("path", ast::MakeArrow(std::move(path))));
+    Add(belt, Attribute("force", std::move(force)));
+    if (slack > 0) Add(belt, Attribute("slack", Number(slack, L)));
+    if (friction != 0) Add(belt, Attribute("friction", Number(friction)));
+  }
+
+  // One friction coefficient for several points that each name a friction function; empty after
+  // reporting a point whose coefficient differs from the first's.
+  std::optional<double> CommonFriction(const std::vector<const Ref*>& refs, std::string_view what) {
+    std::optional<double> common;
+    const Ref* first = nullptr;
+    for (const Ref* ref : refs) {
+      const auto friction = Friction(*ref);
+      if (!friction) return std::nullopt;
+      if (!common) {
+        common = friction;
+        first = ref;
+      } else if (*friction != *common) {
+        Report(DiagnosticKind::kDeckNotExpressible, *ref,
+               fmt::format("card {}: a friction of {} here and {} at {}", ref->card, *friction,
+                           *common, first->card),
+               fmt::format("sled takes one friction for {}; give its points the same "
+                           "friction function",
+                           what));
+        return std::nullopt;
+      }
+    }
+    return common.value_or(0.0);
+  }
+
+  // F.8: `harness NAME on FRAME { friction  belt NAME { path ... } }`, the harness friction from
+  // its tie points, each belt's friction from the points it wraps.
+  void MapHarnesses(ast::Block& scenario) {
+    for (std::size_t h = 0; h < deck_.harnesses.size(); ++h) {
+      const HarnessCard& card = deck_.harnesses[h];
+      if (card.belts.empty()) continue;  // no belt with points: nothing acts in ATB either
+      ast::Statement harness =
+          Declaration("harness", Path(NameOf(fmt::format("harness_{}", h + 1), "harness", taken_)),
+                      CardComment("F.8.a", card.line));
+      if (card.vehicle >= 0) {
+        harness.clauses.push_back(
+            {"on", {}, Path(vehicles_[static_cast<std::size_t>(card.vehicle)])});
+      }
+      std::vector<const Ref*> tie_friction;
+      for (const HarnessBeltCard& belt : card.belts) {
+        for (const HarnessPoint* end : {&belt.points.front(), &belt.points.back()}) {
+          if (end->tie != 0) tie_friction.push_back(&end->friction);
+        }
+      }
+      const auto friction = CommonFriction(tie_friction, "a harness's tie points");
+      if (!friction) continue;
+      if (*friction != 0) Add(harness, Attribute("friction", Number(*friction)));
+      bool complete = true;
+      for (std::size_t b = 0; b < card.belts.size(); ++b) {
+        const HarnessBeltCard& belt = card.belts[b];
+        if (belt.points.size() < 3) continue;  // reported by the reader
+        std::vector<ast::Expr> path;
+        std::vector<const Ref*> wrap_friction;
+        path.push_back(Vector(belt.points.front().anchor, L));
+        for (std::size_t k = 1; k + 1 < belt.points.size(); ++k) {
+          const std::string segment = Segment(belt.points[k].segment, "segment KS");
+          if (segment.empty()) complete = false;
+          path.push_back(Path(segment));
+          wrap_friction.push_back(&belt.points[k].friction);
+        }
+        path.push_back(Vector(belt.points.back().anchor, L));
+        auto force = FunctionFor(belt.force, Use::kBelt);
+        const auto wrap = CommonFriction(wrap_friction, "a belt's wrapped segments");
+        if (!force || !wrap || !complete) {
+          complete = false;
+          continue;
+        }
+        ast::Statement out = Declaration("belt", Path(fmt::format("belt_{}", b + 1)),
+                                         CardComment("F.8.c", belt.line));
+        AddBeltAttributes(out, std::move(path), std::move(*force), belt.slack, *wrap);
+        Add(harness, std::move(out));
+      }
+      if (complete) scenario.statements.push_back(std::move(harness));
+    }
   }
 
   void MapFunctions(ast::Block& scenario) {

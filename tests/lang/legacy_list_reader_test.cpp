@@ -17,81 +17,27 @@
 #include "lang/format/formatter.h"
 #include "lang/legacy/convert.h"
 #include "lang/source/source_manager.h"
+#include "tests/lang/legacy_test_deck.h"
 
 namespace sled::lang::legacy {
 namespace {
 
 namespace fs = std::filesystem;
+using namespace deck_testing;  // NOLINT: the deck helpers
 
 const fs::path kLegacy = fs::path(SLED_SOURCE_ROOT) / "examples/legacy";
 
-struct Converted {
-  std::string text;
-  std::vector<std::string> diagnostics;
-  int errors = 0;
-  bool Has(std::string_view needle) const {
-    return std::any_of(diagnostics.begin(), diagnostics.end(),
-                       [&](const std::string& d) { return d.find(needle) != std::string::npos; });
-  }
-  std::string All() const {
-    std::string all;
-    for (const auto& d : diagnostics) all += d + "\n";
-    return all;
-  }
-};
-
 Converted Convert(const std::string& text, DeckFormat format, const std::string& name) {
-  SourceManager sources;
-  DiagnosticCollector collector;
-  const FileId id = sources.Add(name, text);
   ConvertOptions options;
-  options.diagnostics = &collector;
   options.format = format;
-  const ast::File file = ConvertDeck(sources, id, options);
-  Converted out;
-  if (!collector.has_errors()) out.text = Format(file);
-  collector.SortByPosition();
-  for (const Diagnostic& d : collector.diagnostics())
-    out.diagnostics.push_back(RenderCompact(sources, d));
-  out.errors = collector.error_count();
-  return out;
+  return ConvertText(text, options, name);
 }
 
 Converted ConvertLin(const std::string& text) {
   return Convert(text, DeckFormat::kList, "deck.lin");
 }
 
-std::string Read(const fs::path& path) {
-  auto text = ReadFile(path.string());
-  EXPECT_TRUE(text.has_value()) << path;
-  return text.value_or("");
-}
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    lines.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return lines;
-}
-
-std::string Join(const std::vector<std::string>& lines, std::size_t count) {
-  std::string text;
-  for (std::size_t i = 0; i < count && i < lines.size(); ++i) text += lines[i] + "\n";
-  return text;
-}
-
-std::size_t LineStarting(const std::vector<std::string>& lines, std::string_view prefix) {
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (lines[i].rfind(prefix, 0) == 0) return i + 1;
-  }
-  ADD_FAILURE() << "no line starts with " << prefix;
-  return 1;
-}
+std::string Read(const fs::path& path) { return ReadDeckFile(path.string()); }
 
 std::string CorpusLin() { return Read(kLegacy / "seated_occupant.lin"); }
 

@@ -17,76 +17,22 @@
 #include "lang/legacy/fortran_field.h"
 #include "lang/source/source_manager.h"
 #include "lang/syntax/parser.h"
+#include "tests/lang/legacy_test_deck.h"
 
 namespace sled::lang::legacy {
 namespace {
 
-const std::string kRoot = SLED_SOURCE_ROOT;
-const std::string kDeck = kRoot + "/examples/legacy/seated_occupant.ain";
+using namespace deck_testing;  // NOLINT: the deck helpers
 
-struct Converted {
-  std::string text;                      // the formatted scenario, empty on errors
-  std::vector<std::string> diagnostics;  // compact renderings
-  int errors = 0;
-  int warnings = 0;
-  bool Has(std::string_view needle) const {
-    for (const auto& d : diagnostics) {
-      if (d.find(needle) != std::string::npos) return true;
-    }
-    return false;
-  }
-};
+const std::string kDeck = kLegacyDir + "seated_occupant.ain";
 
 Converted Convert(const std::string& text, BlankMode blanks = BlankMode::kIgnore) {
-  SourceManager sources;
-  DiagnosticCollector collector;
-  const FileId id = sources.Add("deck.ain", text);
   ConvertOptions options;
-  options.diagnostics = &collector;
   options.blanks = blanks;
-  const ast::File file = ConvertDeck(sources, id, options);
-  Converted out;
-  if (!collector.has_errors()) out.text = Format(file);
-  collector.SortByPosition();
-  for (const Diagnostic& d : collector.diagnostics())
-    out.diagnostics.push_back(RenderCompact(sources, d));
-  out.errors = collector.error_count();
-  out.warnings = collector.warning_count();
-  return out;
+  return ConvertText(text, options);
 }
 
-std::string CorpusDeck() {
-  auto text = ReadFile(kDeck);
-  EXPECT_TRUE(text.has_value()) << kDeck;
-  return text.value_or("");
-}
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    lines.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return lines;
-}
-
-std::string Join(const std::vector<std::string>& lines, std::size_t count) {
-  std::string text;
-  for (std::size_t i = 0; i < count && i < lines.size(); ++i) text += lines[i] + "\n";
-  return text;
-}
-
-// The 1-based line of the first card starting with `prefix`.
-std::size_t LineStarting(const std::vector<std::string>& lines, std::string_view prefix) {
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (lines[i].rfind(prefix, 0) == 0) return i + 1;
-  }
-  ADD_FAILURE() << "no line starts with " << prefix;
-  return 0;
-}
+std::string CorpusDeck() { return ReadDeckFile(kDeck); }
 
 TEST(FortranField, ReadsRealsAsFormattedReadsDo) {
   EXPECT_EQ(ReadRealField("  26.6", BlankMode::kIgnore).number, 26.6);

@@ -1,0 +1,14 @@
+// The readers of the restraint card groups that take many cards, each in a file of its own:
+// harnesses (F.8), with more to come. They read through DeckFields into the Deck and report what
+// sled cannot express where they read it.
+#pragma once
+
+#include "lang/legacy/deck_fields.h"
+
+namespace sled::lang::legacy {
+
+// F.8.a to F.8.d for D.1's NHRNSS harnesses; `bags` is D.1's NBAG (airbags take segment numbers
+// between the vehicles and the ground).
+void ReadHarnesses(DeckFields& fields, int harnesses, int bags);
+
+}  // namespace sled::lang::legacy

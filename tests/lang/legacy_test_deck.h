@@ -1,0 +1,89 @@
+// Helpers of the legacy-deck tests: convert a deck given as text and keep its compact
+// diagnostics, and edit a deck line by line.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lang/diagnostics/diagnostic.h"
+#include "lang/diagnostics/render.h"
+#include "lang/format/formatter.h"
+#include "lang/legacy/convert.h"
+#include "lang/source/source_manager.h"
+
+namespace sled::lang::legacy::deck_testing {
+
+inline const std::string kLegacyDir = std::string(SLED_SOURCE_ROOT) + "/examples/legacy/";
+
+struct Converted {
+  std::string text;                      // the formatted scenario, empty on errors
+  std::vector<std::string> diagnostics;  // compact renderings, sorted by position
+  int errors = 0;
+  int warnings = 0;
+  bool Has(std::string_view needle) const {
+    return std::any_of(diagnostics.begin(), diagnostics.end(),
+                       [&](const std::string& d) { return d.find(needle) != std::string::npos; });
+  }
+  std::string All() const {
+    std::string all;
+    for (const auto& d : diagnostics) all += d + "\n";
+    return all;
+  }
+};
+
+inline Converted ConvertText(const std::string& text, ConvertOptions options = {},
+                             const std::string& name = "deck.ain") {
+  SourceManager sources;
+  DiagnosticCollector collector;
+  const FileId id = sources.Add(name, text);
+  options.diagnostics = &collector;
+  const ast::File file = ConvertDeck(sources, id, options);
+  Converted out;
+  if (!collector.has_errors()) out.text = Format(file);
+  collector.SortByPosition();
+  for (const Diagnostic& d : collector.diagnostics())
+    out.diagnostics.push_back(RenderCompact(sources, d));
+  out.errors = collector.error_count();
+  out.warnings = collector.warning_count();
+  return out;
+}
+
+inline std::string ReadDeckFile(const std::string& path) {
+  auto text = ReadFile(path);
+  EXPECT_TRUE(text.has_value()) << path;
+  return text.value_or("");
+}
+
+inline std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+inline std::string Join(const std::vector<std::string>& lines,
+                        std::size_t count = std::string::npos) {
+  std::string text;
+  for (std::size_t i = 0; i < count && i < lines.size(); ++i) text += lines[i] + "\n";
+  return text;
+}
+
+// The 1-based line of the first line starting with `prefix`.
+inline std::size_t LineStarting(const std::vector<std::string>& lines, std::string_view prefix) {
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i].rfind(prefix, 0) == 0) return i + 1;
+  }
+  ADD_FAILURE() << "no line starts with " << prefix;
+  return 1;
+}
+
+}  // namespace sled::lang::legacy::deck_testing
