@@ -85,6 +85,22 @@ struct BeltCard {
   bool output = false;
 };
 
+// A frame named by an ATB segment number: a body segment (1-based), a vehicle (0-based, deck
+// order) or the ground.
+struct DeckFrame {
+  enum class Kind { kSegment, kVehicle, kGround } kind = Kind::kGround;
+  int index = 0;
+};
+
+// D.6: a constraint between a point of one frame and a point of another (KQTYPE 1: the points
+// held together; 2: held at their initial distance).
+struct ConstraintCard {
+  std::uint32_t line = 0;
+  enum class Kind { kFixedPoint, kFixedDistance } kind = Kind::kFixedPoint;
+  DeckFrame first, second;
+  Vec3 at_first{}, at_second{};
+};
+
 // F.8: a harness (D.1 NHRNSS), belts through points. A belt's first and last points are anchors in
 // the harness's frame, the points between them are body segments whose ellipsoid the webbing
 // wraps.
@@ -180,6 +196,7 @@ struct Deck {
   std::uint32_t symmetry_line = 0;
   std::vector<Ref> symmetry;  // per segment
   std::vector<SpringCard> springs;
+  std::vector<ConstraintCard> constraints;
   std::vector<FunctionCard> functions;
   std::vector<ContactCard> contacts;
   std::vector<HarnessCard> harnesses;

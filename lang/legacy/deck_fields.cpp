@@ -62,6 +62,28 @@ void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Re
   *friction = Reference(card, first + 16, first + 19, "the friction function");
 }
 
+std::optional<DeckFrame> DeckFields::FrameOf(const Card& card, int first, int last, int number,
+                                             int bags, std::string_view what) {
+  const int segments = static_cast<int>(deck_.segments.size());
+  const int vehicles = static_cast<int>(deck_.vehicles.size());
+  if (number >= 1 && number <= segments) return DeckFrame{DeckFrame::Kind::kSegment, number};
+  if (number > segments && number <= segments + vehicles) {
+    return DeckFrame{DeckFrame::Kind::kVehicle, number - segments - 1};
+  }
+  if (number == segments + vehicles + bags + 1) return DeckFrame{DeckFrame::Kind::kGround, 0};
+  if (number > segments + vehicles && number <= segments + vehicles + bags) {
+    Refuse(card, first, last, fmt::format("{} is {}: an airbag", what, number),
+           "sled's airbags are not frames; name a body segment, a vehicle or the ground");
+    return std::nullopt;
+  }
+  r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, first, last,
+            fmt::format("card {}, {} ({}): segment {} does not exist", card.label,
+                        r_.Where(card, first, last), what, number),
+            fmt::format("body segments are 1 to {}, vehicles {} to {}, the ground {}", segments,
+                        segments + 1, segments + vehicles, segments + vehicles + bags + 1));
+  return std::nullopt;
+}
+
 void DeckFields::Refuse(const Card& card, int first, int last, std::string what, std::string help) {
   r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
             fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),

@@ -6,6 +6,7 @@
 // files of their own.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,12 @@ class DeckFields {
   // Five function numbers from `first` (force-deflection, inertial spike, R factor, G factor,
   // friction, 4 columns each): the three whose meaning is not documented are refused when set.
   void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction);
+
+  // The frame ATB segment number `number` names (columns first..last of `card`): a body
+  // segment, a vehicle or the ground. Airbags (between the vehicles and the ground, `bags` of
+  // them) and numbers outside the deck are reported as `what` and give nothing.
+  std::optional<DeckFrame> FrameOf(const Card& card, int first, int last, int number, int bags,
+                                   std::string_view what);
 
   void Refuse(const Card& card, int first, int last, std::string what, std::string help);
   void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,

@@ -23,6 +23,7 @@ constexpr int kMaxVehicles = 6;
 constexpr int kMaxOutputs = 20;
 constexpr int kMaxContacts = 200;
 constexpr int kMaxHarnesses = 5;
+constexpr int kMaxConstraints = 12;
 
 std::string Upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -402,7 +403,7 @@ class DeckReader : public DeckFields {
     const int bags = r_.Integer(d1, 13, 18, "NBAG, the number of airbags");
     const int ellipsoids =
         Count(d1, 19, 24, "NELP, the number of extra ellipsoids", kMaxEllipsoids);
-    const int constraints = r_.Integer(d1, 25, 30, "NQ, the number of constraints");
+    const int constraints = Count(d1, 25, 30, "NQ, the number of constraints", kMaxConstraints);
     const int springs = Count(d1, 31, 36, "NSD, the number of spring-dampers", kMaxSprings);
     harnesses_ = Count(d1, 37, 42, "NHRNSS, the number of harnesses", kMaxHarnesses);
     struct Unsupported {
@@ -412,8 +413,6 @@ class DeckReader : public DeckFields {
     };
     static constexpr Unsupported kUnsupported[] = {
         {13, "NBAG (airbags)", "convert the airbags into `airbag` blocks by hand (docs/legacy.md)"},
-        {25, "NQ (constraints)",
-         "the KQTYPE codes of D.6 are not documented; write `constraint` blocks by hand"},
         {43, "NWINDF (wind forces)", "sled has no wind forces"},
         {49, "NJNTF (obsolete joint functions)",
          "ATB V.3 requires 0; define joint functions as E functions named by a negative B.4 "
@@ -423,7 +422,6 @@ class DeckReader : public DeckFields {
         {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
     };
     (void)bags;
-    (void)constraints;
     for (const Unsupported& field : kUnsupported) {
       const int value = r_.Integer(d1, field.first, field.first + 5, field.what);
       if (value != 0) {
@@ -434,6 +432,7 @@ class DeckReader : public DeckFields {
     for (int p = 0; p < planes; ++p) ReadPlane(p + 1);
     for (int b = 0; b < belts; ++b) ReadBelt(b + 1);
     for (int e = 0; e < ellipsoids; ++e) ReadEllipsoid(e + 1);
+    ReadConstraints(*this, constraints, 0);
     ReadSymmetry();
     for (int s = 0; s < springs; ++s) ReadSpring(s + 1);
   }

@@ -538,12 +538,7 @@ class Mapper {
       chain.push_back(Path(first));
       chain.push_back(Path(second));
       spring.clauses.push_back({":", {}, ast::MakeArrow(std::move(chain))});
-      ast::Statement at_first = Attribute("at", Vector(card.at_first, L));
-      at_first.target = Path(first);
-      ast::Statement at_second = Attribute("at", Vector(card.at_second, L));
-      at_second.target = Path(second);
-      Add(spring, std::move(at_first));
-      Add(spring, std::move(at_second));
+      AddAttachments(spring, first, card.at_first, second, card.at_second);
       std::vector<std::pair<std::string, ast::Expr>> coefficients;
       coefficients.emplace_back("", Number(0));
       coefficients.emplace_back("", Number(card.linear, F + "/" + L));
@@ -555,6 +550,7 @@ class Mapper {
       if (card.free_length != 0) Add(spring, Attribute("free_length", Number(card.free_length, L)));
       scenario.statements.push_back(std::move(spring));
     }
+    MapConstraints(scenario);
     // D.7: mutual pairs become mirror pairs.
     ast::Statement symmetry =
         Declaration("symmetry", Path("mirror"), CardComment("D.7", deck_.symmetry_line));
@@ -579,6 +575,47 @@ class Mapper {
       Add(symmetry, std::move(pair));
     }
     if (!symmetry.block->statements.empty()) scenario.statements.push_back(std::move(symmetry));
+  }
+
+  // `at FIRST = ...` and `at SECOND = ...` of a spring or constraint.
+  void AddAttachments(ast::Statement& statement, const std::string& first, const Vec3& at_first,
+                      const std::string& second, const Vec3& at_second) {
+    for (const auto& [frame, at] : {std::pair{&first, &at_first}, std::pair{&second, &at_second}}) {
+      ast::Statement attachment = Attribute("at", Vector(*at, L));
+      attachment.target = Path(*frame);
+      Add(statement, std::move(attachment));
+    }
+  }
+
+  std::string FrameName(const DeckFrame& frame) const {
+    switch (frame.kind) {
+      case DeckFrame::Kind::kSegment:
+        return body_ + "." + segments_[static_cast<std::size_t>(frame.index - 1)];
+      case DeckFrame::Kind::kVehicle:
+        return vehicles_[static_cast<std::size_t>(frame.index)];
+      case DeckFrame::Kind::kGround:
+        break;
+    }
+    return "ground";
+  }
+
+  // D.6: `constraint constraint_N : fixed_point(A -> B) { at A = ...  at B = ... }`.
+  void MapConstraints(ast::Block& scenario) {
+    for (std::size_t c = 0; c < deck_.constraints.size(); ++c) {
+      const ConstraintCard& card = deck_.constraints[c];
+      const std::string first = FrameName(card.first), second = FrameName(card.second);
+      ast::Statement constraint = Declaration(
+          "constraint", Path(NameOf(fmt::format("constraint_{}", c + 1), "constraint", taken_)),
+          CardComment("D.6", card.line));
+      std::vector<ast::Expr> chain;
+      chain.push_back(Path(first));
+      chain.push_back(Path(second));
+      const char* kind =
+          card.kind == ConstraintCard::Kind::kFixedPoint ? "fixed_point" : "fixed_distance";
+      constraint.clauses.push_back({":", {}, Call(kind, {{"", ast::MakeArrow(std::move(chain))}})});
+      AddAttachments(constraint, first, card.at_first, second, card.at_second);
+      scenario.statements.push_back(std::move(constraint));
+    }
   }
 
   void AddBeltAttributes(ast::Statement& belt, std::vector<ast::Expr> path, ast::Expr force,

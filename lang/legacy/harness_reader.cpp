@@ -42,7 +42,6 @@ class HarnessReader {
       : f_(fields),
         r_(fields.source()),
         segments_(static_cast<int>(fields.deck().segments.size())),
-        vehicles_(static_cast<int>(fields.deck().vehicles.size())),
         bags_(bags) {}
 
   void Read(int harnesses) {
@@ -83,7 +82,10 @@ class HarnessReader {
   // An end's frame from KS mod 100: a vehicle (0-based), -1 for the ground; nothing when it is not
   // a frame sled can anchor a harness in (reported).
   std::optional<int> AnchorFrame(const Card& card, int segment) {
-    if (segment >= 1 && segment <= segments_) {
+    const std::optional<DeckFrame> frame =
+        f_.FrameOf(card, 1, 4, segment, bags_, "KS, the point's segment");
+    if (!frame) return std::nullopt;
+    if (frame->kind == DeckFrame::Kind::kSegment) {
       f_.Refuse(card, 1, 4,
                 fmt::format("KS is {}: the belt ends on body segment {} (a buckle or a tie point "
                             "on the body)",
@@ -92,21 +94,7 @@ class HarnessReader {
                 "the vehicle, or convert the harness by hand");
       return std::nullopt;
     }
-    if (segment > segments_ && segment <= segments_ + vehicles_) return segment - segments_ - 1;
-    if (segment > segments_ + vehicles_ && segment <= segments_ + vehicles_ + bags_) {
-      f_.Refuse(card, 1, 4, fmt::format("KS is {}: the belt ends on an airbag", segment),
-                "sled's harness belts end at anchors in a vehicle or the ground");
-      return std::nullopt;
-    }
-    if (segment == segments_ + vehicles_ + bags_ + 1) return -1;
-    r_.Report(DiagnosticKind::kDeckCountOutOfRange, card, 1, 4,
-              fmt::format("card {}, {} (KS, the point's segment): segment {} does not exist",
-                          card.label, r_.Where(card, 1, 4), segment),
-              fmt::format("body segments are 1 to {}, vehicles {} to {}, the ground {}; a tie "
-                          "point adds 100 times its number",
-                          segments_, segments_ + 1, segments_ + vehicles_,
-                          segments_ + vehicles_ + bags_ + 1));
-    return std::nullopt;
+    return frame->kind == DeckFrame::Kind::kVehicle ? frame->index : -1;
   }
 
   void ReadHarness(const Card& head, int number, int belts) {
@@ -325,7 +313,7 @@ class HarnessReader {
 
   DeckFields& f_;
   DeckSource& r_;
-  int segments_, vehicles_, bags_;
+  int segments_, bags_;
 };
 
 }  // namespace

@@ -1,5 +1,5 @@
 // The readers of the restraint card groups that take many cards, each in a file of its own:
-// harnesses (F.8), with more to come. They read through DeckFields into the Deck and report what
+// harnesses (F.8) and constraints (D.6). They read through DeckFields into the Deck and report what
 // sled cannot express where they read it.
 #pragma once
 
@@ -10,5 +10,8 @@ namespace sled::lang::legacy {
 // F.8.a to F.8.d for D.1's NHRNSS harnesses; `bags` is D.1's NBAG (airbags take segment numbers
 // between the vehicles and the ground).
 void ReadHarnesses(DeckFields& fields, int harnesses, int bags);
+
+// D.6 for D.1's NQ constraints.
+void ReadConstraints(DeckFields& fields, int count, int bags);
 
 }  // namespace sled::lang::legacy

@@ -144,5 +144,34 @@ TEST_F(LegacyCorpus, AMissingJointSpringCardIsFoundWhereTheDeckRunsOutOfStep) {
       << err;
 }
 
+TEST_F(LegacyCorpus, ConvertedConstraintsCheckClean) {
+  // The seated occupant's hands held to the sled: one at its point (KQTYPE 1), one at its initial
+  // distance (KQTYPE 2), two D.6 cards before D.7.
+  std::string deck = ReadText(kSourceRoot / "examples/legacy/seated_occupant.ain");
+  const std::string counts = "     4     2     0     0     0";
+  const std::size_t at = deck.find(counts);
+  ASSERT_NE(at, std::string::npos);
+  deck.replace(at, counts.size(), "     4     2     0     0     2");
+  const std::size_t d7 = deck.find("# D.7");
+  ASSERT_NE(d7, std::string::npos);
+  deck.insert(d7,
+              "     1    13    16    0.    0.   -6.   20.    8.  -10.\n"
+              "     2    15    16    0.    0.   -6.   20.   -8.  -10.\n");
+  const fs::path path = temp() / "constrained.ain";
+  WriteText(path, deck);
+  const fs::path converted = temp() / "constrained.sled";
+  const SledResult convert = Sled({"convert", path.string(), "-o", converted.string()});
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  const std::string text = ReadText(converted);
+  EXPECT_NE(text.find("constraint constraint_1 : fixed_point(occupant.rla -> sled)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("constraint constraint_2 : fixed_distance(occupant.lla -> sled)"),
+            std::string::npos);
+  const SledResult check = Sled({"check", converted.string()});
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(check.err, "");
+}
+
 }  // namespace
 }  // namespace sled::testing
