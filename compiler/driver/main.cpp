@@ -49,11 +49,13 @@ commands:
                        tight reference: error against run time as a table, DIR/study.csv
                        and the work-precision plot DIR/study.svg (DIR defaults to FILE's
                        name with `-study`); the error of the scene's own settings
-  convert DECK [-o FILE] [--blank-zero] [--deck=ain|lin]
+  convert DECK [-o FILE] [--blank-zero] [--deck=ain|lin] [--approximate-airbags]
                        translate a CVS-III/ATB deck, fixed-column (.ain) or
                        list-directed (.lin), into a .sled scenario (standard output
                        without -o); --deck reads another extension as that format;
-                       --blank-zero reads blank columns as zeros (FORTRAN IV decks)
+                       --blank-zero reads blank columns as zeros (FORTRAN IV decks);
+                       --approximate-airbags converts D.4 airbags to sled's bag, with a
+                       warning for each approximation (else a deck with airbags is refused)
   explain CODE         the long explanation of a diagnostic code, such as E0204
 
 options for check and run:
@@ -97,6 +99,7 @@ struct Options {
   std::vector<std::pair<std::string, std::string>> overrides;
   bool iso_mme = false;
   bool blank_zero = false;
+  bool approximate_airbags = false;
   std::string deck_format;  // "ain", "lin" or empty (by the extension)
   std::vector<double> dump_times;
   double checkpoint_every = 0.0;
@@ -242,6 +245,7 @@ int RunConvert(const Options& options) {
     convert.format = *format;
     convert.blanks = options.blank_zero ? sled::lang::legacy::BlankMode::kZero
                                         : sled::lang::legacy::BlankMode::kIgnore;
+    convert.approximate_airbags = options.approximate_airbags;
     const auto ast = sled::lang::legacy::ConvertDeck(sources, *file, convert);
     if (!collector.has_errors()) text = sled::lang::Format(ast);
   }
@@ -302,6 +306,8 @@ int main(int argc, char** argv) {
       options.dump_model = true;
     } else if (arg == "--blank-zero") {
       options.blank_zero = true;
+    } else if (arg == "--approximate-airbags") {
+      options.approximate_airbags = true;
     } else if (arg.rfind("--deck=", 0) == 0) {
       options.deck_format = arg.substr(7);
       if (options.deck_format != "ain" && options.deck_format != "lin") {

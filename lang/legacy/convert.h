@@ -21,6 +21,8 @@ struct ConvertOptions {
   DiagnosticConsumer* diagnostics = nullptr;  // required
   DeckFormat format = DeckFormat::kFixed;
   BlankMode blanks = BlankMode::kIgnore;  // kZero: FORTRAN IV blanks-as-zeros (--blank-zero, .ain)
+  // Convert airbags to sled's bag, with a warning for each approximation (--approximate-airbags).
+  bool approximate_airbags = false;
 };
 
 // The format a deck's file name asks for: `.ain` fixed, `.lin` list-directed (any case); nothing

@@ -101,6 +101,24 @@ struct ConstraintCard {
   Vec3 at_first{}, at_second{};
 };
 
+// D.4 and F.6: an airbag, converted only with --approximate-airbags: held fixed at its deployment
+// point in the primary vehicle, its gas constants mapped and its cylinder tabulated.
+struct AirbagCard {
+  std::uint32_t line = 0;           // D.4.a
+  std::uint32_t cylinder_line = 0;  // D.4.d
+  std::string title;
+  Vec3 semi_axes{};
+  Vec3 orientation{};    // YB: yaw, pitch, roll of ATB's bag axes (it deploys along their -x)
+  Vec3 deploy_point{};   // in the primary vehicle
+  double deploy_at = 0;  // CYTD
+  double ambient_pressure = 0, gas_temperature = 0, gamma = 0;
+  double gas_constant = 0;  // CYR, per weight (length / temperature)
+  double vent_discharge = 0, vent_area = 0;
+  std::vector<std::pair<double, double>> inflow;  // time since CYTD -> mass flow (F * T / L)
+  std::uint32_t contact_line = 0;                 // F.6
+  std::vector<Ref> contacts;                      // F.6's segments
+};
+
 // F.8: a harness (D.1 NHRNSS), belts through points. A belt's first and last points are anchors in
 // the harness's frame, the points between them are body segments whose ellipsoid the webbing
 // wraps.
@@ -197,6 +215,7 @@ struct Deck {
   std::vector<Ref> symmetry;  // per segment
   std::vector<SpringCard> springs;
   std::vector<ConstraintCard> constraints;
+  std::vector<AirbagCard> airbags;
   std::vector<FunctionCard> functions;
   std::vector<ContactCard> contacts;
   std::vector<HarnessCard> harnesses;

@@ -24,6 +24,7 @@ constexpr int kMaxOutputs = 20;
 constexpr int kMaxContacts = 200;
 constexpr int kMaxHarnesses = 5;
 constexpr int kMaxConstraints = 12;
+constexpr int kMaxAirbags = 5;
 
 std::string Upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -32,7 +33,8 @@ std::string Upper(std::string text) {
 
 class DeckReader : public DeckFields {
  public:
-  DeckReader(DeckSource& reader, Deck& deck) : DeckFields(reader, deck) {}
+  DeckReader(DeckSource& reader, Deck& deck, bool approximate_airbags)
+      : DeckFields(reader, deck), approximate_airbags_(approximate_airbags) {}
 
   Deck Read() {
     ReadA();
@@ -400,7 +402,7 @@ class DeckReader : public DeckFields {
     const Card d1 = r_.Next("D.1.a", {"(12I6)"});
     const int planes = Count(d1, 1, 6, "NPL, the number of planes", kMaxPlanes);
     const int belts = Count(d1, 7, 12, "NBLT, the number of belts", kMaxBelts);
-    const int bags = r_.Integer(d1, 13, 18, "NBAG, the number of airbags");
+    bags_ = Count(d1, 13, 18, "NBAG, the number of airbags", kMaxAirbags);
     const int ellipsoids =
         Count(d1, 19, 24, "NELP, the number of extra ellipsoids", kMaxEllipsoids);
     const int constraints = Count(d1, 25, 30, "NQ, the number of constraints", kMaxConstraints);
@@ -412,7 +414,6 @@ class DeckReader : public DeckFields {
       const char* help;
     };
     static constexpr Unsupported kUnsupported[] = {
-        {13, "NBAG (airbags)", "convert the airbags into `airbag` blocks by hand (docs/legacy.md)"},
         {43, "NWINDF (wind forces)", "sled has no wind forces"},
         {49, "NJNTF (obsolete joint functions)",
          "ATB V.3 requires 0; define joint functions as E functions named by a negative B.4 "
@@ -421,7 +422,20 @@ class DeckReader : public DeckFields {
         {61, "NWATER (water forces)", "sled has no water forces"},
         {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
     };
-    (void)bags;
+    if (bags_ > 0 && !approximate_airbags_) {
+      Refuse(d1, 13, 18,
+             fmt::format("NBAG is {}: ATB's airbags are free rigid bodies (weight XBM, held to "
+                         "the deployment point by the spring SPRK, pushed off the reaction "
+                         "panels of D.4.g and D.4.h) with a polytropic gas fed by a cylinder "
+                         "(CYSP, CYV0, CYAT, CYCD) from CYTD and vented as the square root of "
+                         "the pressure above CYPV; sled's bag is fixed in its frame, balances "
+                         "the gas's energy, takes an inflow function and vents by isentropic "
+                         "orifice flow",
+                         bags_),
+             "convert with --approximate-airbags to carry over the gas constants, the ambient "
+             "pressure, the deployment time and the vent and approximate the rest, a warning for "
+             "each approximation (docs/legacy.md), or write the `airbag` by hand");
+    }
     for (const Unsupported& field : kUnsupported) {
       const int value = r_.Integer(d1, field.first, field.first + 5, field.what);
       if (value != 0) {
@@ -431,8 +445,9 @@ class DeckReader : public DeckFields {
     }
     for (int p = 0; p < planes; ++p) ReadPlane(p + 1);
     for (int b = 0; b < belts; ++b) ReadBelt(b + 1);
+    ReadAirbags(*this, bags_, approximate_airbags_);
     for (int e = 0; e < ellipsoids; ++e) ReadEllipsoid(e + 1);
-    ReadConstraints(*this, constraints, 0);
+    ReadConstraints(*this, constraints, bags_);
     ReadSymmetry();
     for (int s = 0; s < springs; ++s) ReadSpring(s + 1);
   }
@@ -707,7 +722,8 @@ class DeckReader : public DeckFields {
         break;
       }
     }
-    if (harnesses_ > 0 && !r_.truncated()) ReadHarnesses(*this, harnesses_, 0);
+    if (bags_ > 0 && !r_.truncated()) ReadAirbagContacts(*this, bags_);
+    if (harnesses_ > 0 && !r_.truncated()) ReadHarnesses(*this, harnesses_, bags_);
   }
 
   void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
@@ -882,14 +898,16 @@ class DeckReader : public DeckFields {
     deck_.outputs.push_back(std::move(output));
   }
 
+  bool approximate_airbags_;
   int harnesses_ = 0;  // D.1.a NHRNSS
+  int bags_ = 0;       // D.1.a NBAG
 };
 
 }  // namespace
 
-Deck ReadDeck(DeckSource& source) {
+Deck ReadDeck(DeckSource& source, bool approximate_airbags) {
   Deck deck;
-  return DeckReader(source, deck).Read();
+  return DeckReader(source, deck, approximate_airbags).Read();
 }
 
 }  // namespace sled::lang::legacy

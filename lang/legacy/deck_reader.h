@@ -10,6 +10,8 @@
 
 namespace sled::lang::legacy {
 
-Deck ReadDeck(DeckSource& source);
+// `approximate_airbags`: convert D.4 airbags to sled's model (--approximate-airbags); without
+// it a deck with airbags is refused at D.1.a's NBAG.
+Deck ReadDeck(DeckSource& source, bool approximate_airbags = false);
 
 }  // namespace sled::lang::legacy

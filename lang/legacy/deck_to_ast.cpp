@@ -527,6 +527,7 @@ class Mapper {
       scenario.statements.push_back(std::move(belt));
     }
     MapHarnesses(scenario);
+    MapAirbags(scenario);
     for (std::size_t s = 0; s < deck_.springs.size(); ++s) {
       const SpringCard& card = deck_.springs[s];
       const std::string first = Segment(card.first, "segment M");
@@ -597,6 +598,63 @@ class Mapper {
         break;
     }
     return "ground";
+  }
+
+  // D.4 and F.6 (--approximate-airbags): `airbag NAME on PRIMARY { ... }`, fixed at the
+  // deployment point, with the cylinder's flow as a named inflow table.
+  void MapAirbags(ast::Block& scenario) {
+    for (std::size_t b = 0; b < deck_.airbags.size(); ++b) {
+      const AirbagCard& card = deck_.airbags[b];
+      const std::string name = NameOf(card.title, fmt::format("airbag_{}", b + 1), taken_);
+      const std::string inflow_name = NameOf(name + "_inflow", "inflow", taken_);
+      ast::Statement inflow = Declaration("function", Path(inflow_name),
+                                          CardComment("D.4.d", card.cylinder_line) +
+                                              ": ATB's cylinder, its flow from CYTD tabulated");
+      std::vector<ast::Expr> signature;
+      signature.push_back(Path("time"));
+      signature.push_back(Path("mass_flow"));
+      inflow.has_value = true;
+      inflow.values.push_back(Call("table", {{"", ast::MakeArrow(std::move(signature))}}));
+      for (const auto& [t, flow] : card.inflow) {
+        Add(inflow, Row(Number(t, T), Number(flow, F + "*" + T + "/" + L)));
+      }
+      scenario.statements.push_back(std::move(inflow));
+
+      ast::Statement airbag = Declaration(
+          "airbag", Path(name),
+          CardComment("D.4.a", card.line) + (card.title.empty() ? "" : ": " + card.title) +
+              (card.contact_line ? fmt::format(" (F.6, line {})", card.contact_line) : ""));
+      airbag.clauses.push_back({"on", {}, Path(Primary())});
+      Add(airbag, Attribute("position", Vector(card.deploy_point, L)));
+      // ATB's bag deploys along its -x; sled's along its x: turn the axes half a turn about z.
+      double yaw = card.orientation[0] + 180;
+      if (yaw > 180) yaw -= 360;
+      const Vec3 orientation{yaw, -card.orientation[1], -card.orientation[2]};
+      if (!IsZero(orientation)) Add(airbag, Attribute("orientation", Vector(orientation, "deg")));
+      Add(airbag, Attribute("semi_axes", Vector(card.semi_axes, L)));
+      Add(airbag, Attribute("deploy_at", Number(card.deploy_at, T)));
+      Add(airbag, Attribute("inflow", Path(inflow_name)));
+      Add(airbag, Attribute("gas_temperature", Number(card.gas_temperature, "K")));
+      Add(airbag, Attribute("gamma", Number(card.gamma)));
+      // ATB's gas constant is per weight; per mass it is times G.
+      Add(airbag,
+          Attribute("gas_constant",
+                    ast::MakeBinary('*', Number(card.gas_constant, L + "/K"), Path("deck_g"))));
+      if (card.vent_area > 0 && card.vent_discharge > 0) {
+        Add(airbag, Attribute("vent_area", Number(card.vent_area, L + "^2")));
+        Add(airbag, Attribute("discharge_coefficient", Number(card.vent_discharge)));
+      }
+      Add(airbag, Attribute("ambient_pressure", Number(card.ambient_pressure, F + "/" + L + "^2")));
+      ast::Statement contacts;
+      contacts.keyword = "contacts";
+      contacts.has_value = true;
+      for (const Ref& segment : card.contacts) {
+        const std::string path = Segment(segment, "segment");
+        if (!path.empty()) contacts.values.push_back(Path(path));
+      }
+      if (!contacts.values.empty()) Add(airbag, std::move(contacts));
+      scenario.statements.push_back(std::move(airbag));
+    }
   }
 
   // D.6: `constraint constraint_N : fixed_point(A -> B) { at A = ...  at B = ... }`.

@@ -1,7 +1,7 @@
 // D.6 constraints through `sled convert`: KQTYPE 1 and 2 become `fixed_point` and
 // `fixed_distance` constraints between segments, vehicles and the ground; the kinds that need a
 // contact, the tension element and the switched kinds are refused at KQTYPE; frames outside the
-// deck get E0505.
+// deck get E0505, an airbag E0507.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -20,12 +20,14 @@ using namespace deck_testing;  // NOLINT: the deck helpers
 // of the first of them.
 Converted WithConstraints(const std::vector<std::string>& cards, std::size_t* first = nullptr) {
   std::vector<std::string> lines = Lines(ReadDeckFile(kLegacyDir + "seated_occupant.ain"));
-  const std::size_t d1 = LineStarting(lines, "     4     2     0");
+  const std::size_t d1 = LineStarting(lines, "     4     2     1");
   lines[d1 - 1].replace(24, 6, fmt::format("{:6}", cards.size()));
   const std::size_t d7 = LineStarting(lines, "# D.7");
   lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(d7 - 1), cards.begin(), cards.end());
   if (first != nullptr) *first = d7;
-  return ConvertText(Join(lines));
+  ConvertOptions options;
+  options.approximate_airbags = true;  // the deck's airbag is segment 17; the ground is 18
+  return ConvertText(Join(lines), options);
 }
 
 TEST(LegacyConstraints, FixedPointsAndDistancesConvert) {
@@ -33,7 +35,7 @@ TEST(LegacyConstraints, FixedPointsAndDistancesConvert) {
   const Converted converted = WithConstraints(
       {"     1    13    16    0.    0.   -6.   20.    8.  -10.",   // right hand on the sled
        "     2    13    15    0.    0.   -6.    0.    0.   -6.",   // the hands a span apart
-       "     1    17     1   10.    0.    5.    0.    0.    0."},  // the ground to the pelvis
+       "     1    18     1   10.    0.    5.    0.    0.    0."},  // the ground to the pelvis
       &line);
   ASSERT_EQ(converted.errors, 0) << converted.All();
   const std::string& text = converted.text;
@@ -70,9 +72,13 @@ TEST(LegacyConstraints, WhatSledCannotExpressIsRefusedAtKqtype) {
 
 TEST(LegacyConstraints, FramesMustExistAndDiffer) {
   std::size_t line = 0;
-  EXPECT_TRUE(WithConstraints({"     1    13    18"}, &line)
+  EXPECT_TRUE(WithConstraints({"     1    13    19"}, &line)
                   .Has(fmt::format("deck.ain:{}:13-18: error[E0505]", line)));
-  EXPECT_TRUE(WithConstraints({"     1    16    17"}, &line)
+  EXPECT_TRUE(WithConstraints({"     1    13    17"}, &line)
+                  .Has(fmt::format("deck.ain:{}:13-18: error[E0507]: card D.6 (constraint 1), "
+                                   "columns 13-18: KQ2, the second segment is 17: an airbag",
+                                   line)));
+  EXPECT_TRUE(WithConstraints({"     1    16    18"}, &line)
                   .Has(fmt::format("deck.ain:{}:7-18: error[E0512]", line)));
   EXPECT_TRUE(WithConstraints({"     2     4     4"}, &line)
                   .Has(fmt::format("deck.ain:{}:7-18: error[E0512]", line)));

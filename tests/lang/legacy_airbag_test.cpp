@@ -1,0 +1,189 @@
+// D.4 and F.6 airbags through `sled convert --approximate-airbags`: ATB's cylinder tabulated as
+// sled's inflow (checked against the closed form evaluated independently, and against its
+// analytic delivered mass), the bag's attributes from the deck, a W0504 for each approximation,
+// and a located diagnostic for each field sled cannot take. Without the option the deck is
+// refused at NBAG.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "lang/legacy/airbag_inflow.h"
+#include "tests/lang/legacy_test_deck.h"
+
+namespace sled::lang::legacy {
+namespace {
+
+using namespace deck_testing;  // NOLINT: the deck helpers
+
+// The seated occupant's cylinder (D.4.d, D.4.e): 2000 psi over 14.7, 30 in^3 at 600 K, gamma 1.4,
+// R 1152.2 in/K per weight, a 1.2 in^2 throat with a discharge coefficient of 0.8; G 386.088.
+Cylinder CorpusCylinder() {
+  Cylinder c;
+  c.gamma = 1.4;
+  c.gas_constant = 1152.2;
+  c.temperature = 600;
+  c.supply_pressure = 2000;
+  c.ambient_pressure = 14.7;
+  c.volume = 30;
+  c.throat_area = 1.2;
+  c.discharge = 0.8;
+  c.g = 386.088;
+  return c;
+}
+
+TEST(AirbagInflow, TheTableIsAtbsClosedForm) {
+  const InflowTable table = TabulateCylinder(CorpusCylinder());
+  // The end at 99.9 % of the gas, steps of 0.5 ms (the end over 50, rounded down to 1-2-5).
+  EXPECT_NEAR(table.end, 0.04163796122570773, 1e-15);
+  EXPECT_EQ(table.step, 0.0005);
+  ASSERT_EQ(table.rows.size(), 85u);
+  // Values of the closed form evaluated apart from sled (a Python transcription of AIRBGG and
+  // INPUT_AIRBAGS), to 6 significant digits: W0 = 0.0874284 lb, C = 71.5950 /s.
+  EXPECT_EQ(table.rows[0], std::make_pair(0.0, 0.0810623));
+  EXPECT_EQ(table.rows[20], std::make_pair(0.01, 0.00317534));
+  EXPECT_EQ(table.rows[80], std::make_pair(0.04, 2.4363e-05));
+  EXPECT_EQ(table.rows.back(), std::make_pair(0.042, 1.95843e-05));
+  // The delivered mass: the trapezoids of the table against the analytic integral, W0 / G
+  // (1 - Q^(-5)) at the table's end (the table then stops).
+  const double w0 = 0.08742839784759592, rate = 71.5950449488969;
+  const double analytic = w0 / 386.088 * (1 - std::pow(1 + rate * 0.042, -5.0));
+  double trapezoids = 0;
+  for (std::size_t k = 1; k < table.rows.size(); ++k) {
+    trapezoids += (table.rows[k].first - table.rows[k - 1].first) *
+                  (table.rows[k].second + table.rows[k - 1].second) / 2;
+  }
+  // Linear interpolation of the convex flow A Q^-6 overshoots by the Euler-Maclaurin term
+  // h^2 / 12 |f'(0)| = h^2 / 12 * 6 C A, against the mass A / (5 C): 2.5 (h C)^2 relative.
+  const double overshoot = 2.5 * std::pow(0.0005 * rate, 2);
+  EXPECT_NEAR(trapezoids / analytic - 1, overshoot, 0.1 * overshoot);
+  EXPECT_NEAR(table.delivered, trapezoids / (w0 / 386.088), 1e-12);
+}
+
+// The seated-occupant deck, as text lines.
+std::vector<std::string> Deck() { return Lines(ReadDeckFile(kLegacyDir + "seated_occupant.ain")); }
+
+Converted Convert(const std::vector<std::string>& lines, bool approximate = true) {
+  ConvertOptions options;
+  options.approximate_airbags = approximate;
+  return ConvertText(Join(lines), options);
+}
+
+class LegacyAirbag : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    lines_ = Deck();
+    head_ = LineStarting(lines_, "DRIVER AIRBAG");
+    contacts_ = LineStarting(lines_, "   1   2 3 3 5 5");
+  }
+  // Columns first.. of the D.4 card `offset` lines after D.4.a replaced by `text`.
+  void Put(std::size_t line, int first, const std::string& text) {
+    lines_[line - 1].replace(static_cast<std::size_t>(first - 1), text.size(), text);
+  }
+  std::vector<std::string> lines_;
+  std::size_t head_ = 0, contacts_ = 0;
+};
+
+TEST_F(LegacyAirbag, TheDriverBagConverts) {
+  const Converted converted = Convert(lines_);
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  const std::string& text = converted.text;
+  EXPECT_NE(text.find("  airbag driver_airbag on sled {\n"
+                      "    position = (24, 0, -24) in\n"
+                      "    orientation = (180, 0, 0) deg\n"
+                      "    semi_axes = (7, 10, 10) in\n"
+                      "    deploy_at = 0.015 s\n"
+                      "    inflow = driver_airbag_inflow\n"
+                      "    gas_temperature = 600 K\n"
+                      "    gamma = 1.4\n"
+                      "    gas_constant = 1152.2 in/K * deck_g\n"
+                      "    vent_area = 1 in^2\n"
+                      "    discharge_coefficient = 0.65\n"
+                      "    ambient_pressure = 14.7 lbf/in^2\n"
+                      "    contacts = occupant.ut, occupant.h\n  }"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("function driver_airbag_inflow = table(time -> mass_flow) {\n"
+                      "    0 s -> 0.0810623 lbf*s/in\n"),
+            std::string::npos);
+  // One W0504 for each approximation: the cylinder's table, the gas law, the vent, the free bag
+  // and its reaction panel.
+  for (const auto& [line, columns] :
+       std::vector<std::pair<std::size_t, std::string>>{{head_ + 3, "37-72"},
+                                                        {head_ + 4, "13-36"},
+                                                        {head_ + 4, "49-72"},
+                                                        {head_ + 5, "13-60"},
+                                                        {head_ + 6, "1-72"}}) {
+    EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:{}: warning[W0504]", line, columns)))
+        << line << ":" << columns << "\n"
+        << converted.All();
+  }
+}
+
+TEST_F(LegacyAirbag, WithoutTheOptionTheDeckIsRefusedAtNbag) {
+  const Converted refused = Convert(lines_, false);
+  EXPECT_TRUE(refused.Has("error[E0507]: card D.1.a, columns 13-18: NBAG is 1")) << refused.All();
+  EXPECT_EQ(refused.errors, 1) << refused.All();
+  EXPECT_FALSE(refused.Has("W0504"));
+}
+
+TEST_F(LegacyAirbag, ATurnedBagDeploysAlongItsOwnMinusX) {
+  Put(head_ + 2, 1, "         30.         10.          5.");
+  const Converted turned = Convert(lines_);
+  ASSERT_EQ(turned.errors, 0) << turned.All();
+  // ATB's axes turned half a turn about z: yaw + 180, pitch and roll negated.
+  EXPECT_NE(turned.text.find("orientation = (-150, -10, -5) deg"), std::string::npos)
+      << turned.text;
+  EXPECT_TRUE(turned.Has(fmt::format("deck.ain:{}:1-72: warning[W0501]", head_ + 2)));
+  // A deployment point on a turned panel: the panel's yaw of 90 degrees turns it.
+  SetUp();
+  Put(head_ + 7, 37, "         90.");
+  const Converted panel = Convert(lines_);
+  ASSERT_EQ(panel.errors, 0) << panel.All();
+  EXPECT_NE(panel.text.find("position = (26"), std::string::npos) << panel.text;
+}
+
+TEST_F(LegacyAirbag, WhatSledCannotTakeIsLocated) {
+  Put(head_ + 4, 13, "         1.8");  // gamma above 5/3
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:13-24: error[E0507]", head_ + 4)));
+  SetUp();
+  Put(head_ + 1, 13, "          0.");  // a flat bag
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:13-24: error[E0512]", head_ + 1)));
+  SetUp();
+  Put(head_, 21, "   0");  // no reaction panel for the deployment point
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:21-24: error[E0512]", head_)));
+  SetUp();
+  Put(contacts_, 9, " 3 4");  // the chest's contact with the neck's ellipsoid
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:11-12: error[E0507]", contacts_)));
+  SetUp();
+  Put(contacts_, 9, "99");  // no such segment
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:9-10: error[E0505]", contacts_)));
+  SetUp();
+  Put(contacts_, 1, "   2");  // the card of bag 1 numbered 2
+  EXPECT_TRUE(Convert(lines_).Has(fmt::format("deck.ain:{}:1-4: error[E0512]", contacts_)));
+  SetUp();
+  Put(lines_.size() > 0 ? LineStarting(lines_, "     4     2     1") : 1, 13, "     6");
+  EXPECT_TRUE(Convert(lines_).Has("error[E0505]: card D.1.a, columns 13-18"));
+}
+
+TEST_F(LegacyAirbag, AClosedBagHasNoVent) {
+  Put(head_ + 5, 1, "          0.");  // CYA0
+  const Converted closed = Convert(lines_);
+  ASSERT_EQ(closed.errors, 0) << closed.All();
+  EXPECT_EQ(closed.text.find("vent_area"), std::string::npos);
+  EXPECT_FALSE(closed.Has(fmt::format("deck.ain:{}:49-72: warning[W0504]", head_ + 4)));
+}
+
+TEST_F(LegacyAirbag, EveryTruncationInTheAirbagIsReported) {
+  for (std::size_t keep = head_ - 1; keep < head_ + 8; ++keep) {
+    EXPECT_GT(Convert({lines_.begin(), lines_.begin() + static_cast<std::ptrdiff_t>(keep)}).errors,
+              0)
+        << "cut after line " << keep;
+  }
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
