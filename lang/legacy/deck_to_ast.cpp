@@ -151,9 +151,11 @@ Vec3 VehicleVelocity(const VehicleCard& vehicle) {
 // --- Names --------------------------------------------------------------------------------
 
 // A deck label as a sled name: lower case, words joined by `_`, never a word the grammar or the
-// frames reserve, unique among `taken`.
-std::string NameOf(std::string_view label, std::string_view fallback,
-                   std::set<std::string>& taken) {
+// frames reserve, unique among `taken`. A name something else already has takes the `kind` of
+// what it names (a function titled like a plane, `knee_bolster`, becomes `knee_bolster_force`),
+// and a number only if that is taken too.
+std::string NameOf(std::string_view label, std::string_view fallback, std::set<std::string>& taken,
+                   std::string_view kind = {}) {
   std::string name;
   for (const char c : label) {
     if (std::isalnum(static_cast<unsigned char>(c))) {
@@ -171,6 +173,10 @@ std::string NameOf(std::string_view label, std::string_view fallback,
   if (name.empty()) name = std::string(fallback);
   if (std::isdigit(static_cast<unsigned char>(name[0]))) name = std::string(fallback) + "_" + name;
   if (kReserved.count(name) != 0) name += "_";
+  if (taken.count(name) != 0 && !kind.empty()) {
+    while (name.back() == '_') name.pop_back();
+    name += "_" + std::string(kind);
+  }
   std::string unique = name;
   for (int n = 2; taken.count(unique) != 0; ++n) unique = fmt::format("{}_{}", name, n);
   taken.insert(unique);
@@ -242,11 +248,13 @@ class Mapper {
     }
     for (const VehicleCard& vehicle : deck_.vehicles) {
       const std::string title = vehicle.title.substr(0, vehicle.title.find_first_of(" ,;:"));
-      vehicles_.push_back(NameOf(title, "vehicle", taken_));
+      vehicles_.push_back(NameOf(title, "vehicle", taken_, "vehicle"));
     }
     for (const PlaneCard& plane : deck_.planes)
-      planes_.push_back(NameOf(plane.title, "plane", taken_));
-    for (const BeltCard& belt : deck_.belts) belts_.push_back(NameOf(belt.title, "belt", taken_));
+      planes_.push_back(NameOf(plane.title, "plane", taken_, "plane"));
+    for (const BeltCard& belt : deck_.belts) {
+      belts_.push_back(NameOf(belt.title, "belt", taken_, "belt"));
+    }
   }
 
   std::string Primary() const { return vehicles_.empty() ? "ground" : vehicles_.back(); }
@@ -280,7 +288,10 @@ class Mapper {
     auto found = function_names_.find(key);
     if (found == function_names_.end()) {
       std::string name =
-          NameOf(function->title, fmt::format("function_{}", function->number), taken_);
+          NameOf(function->title, fmt::format("function_{}", function->number), taken_,
+                 use == Use::kContact ? "force"
+                 : use == Use::kJoint ? "torque"
+                                      : "webbing");
       found = function_names_.emplace(key, name).first;
       uses_.push_back({function, use, name});
     }
@@ -605,7 +616,8 @@ class Mapper {
   void MapAirbags(ast::Block& scenario) {
     for (std::size_t b = 0; b < deck_.airbags.size(); ++b) {
       const AirbagCard& card = deck_.airbags[b];
-      const std::string name = NameOf(card.title, fmt::format("airbag_{}", b + 1), taken_);
+      const std::string name =
+          NameOf(card.title, fmt::format("airbag_{}", b + 1), taken_, "airbag");
       const std::string inflow_name = NameOf(name + "_inflow", "inflow", taken_);
       ast::Statement inflow = Declaration("function", Path(inflow_name),
                                           CardComment("D.4.d", card.cylinder_line) +

@@ -174,5 +174,37 @@ TEST_F(LegacyCorpus, ConvertedConstraintsCheckClean) {
   EXPECT_EQ(check.err, "");
 }
 
+TEST_F(LegacyCorpus, NamesThatCollideTakeTheirKindAndCheckClean) {
+  // The seated occupant's deck already names a plane and a function KNEE BOLSTER (and FLOOR);
+  // here the floor is titled like the sled, and the lumbar joint's twist is the seat foam
+  // (function 1), which the contacts also use, in other units.
+  std::string deck = ReadText(kSourceRoot / "examples/legacy/seated_occupant.ain");
+  const std::string floor = "   3    FLOOR";
+  deck.replace(deck.find(floor), floor.size(), "   3    SLED");
+  const std::string lumbar = "   60.    0.    0.   0.5         45.   40.";
+  deck.replace(deck.find(lumbar), lumbar.size(), "   60.    0.    0.   0.5         45.   -1.");
+  const fs::path path = temp() / "names.ain";
+  WriteText(path, deck);
+  const fs::path converted = temp() / "names.sled";
+  const SledResult convert =
+      Sled({"convert", path.string(), "-o", converted.string(), "--approximate-airbags"});
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  const std::string text = ReadText(converted);
+  // The first use of a function takes its plain name (here the joint's, in torque units), a
+  // later use in other units its kind.
+  for (const char* name :
+       {"  vehicle sled {", "  plane sled_plane on sled {", "  plane knee_bolster on sled {",
+        "  function knee_bolster_force = table(deflection -> force)",
+        "  function floor = polynomial(deflection -> force",
+        "  function seat_foam = table(angle -> torque)", "twist = seat_foam\n",
+        "  function seat_foam_force = table(deflection -> force)",
+        "contact occupant.rf with sled_plane {\n    force = floor\n"}) {
+    EXPECT_NE(text.find(name), std::string::npos) << name << "\n" << text;
+  }
+  const SledResult check = Sled({"check", converted.string()});
+  EXPECT_EQ(check.exit_code, 0) << check.err;
+  EXPECT_EQ(check.err, "");
+}
+
 }  // namespace
 }  // namespace sled::testing
