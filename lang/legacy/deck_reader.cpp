@@ -42,6 +42,7 @@ class DeckReader : public DeckFields {
     if (!r_.truncated()) ReadC();
     if (!r_.truncated()) ReadD();
     if (!r_.truncated()) ReadE();
+    if (unknown_layout_) return std::move(deck_);  // F.5 cards of unknown length follow
     if (!r_.truncated()) ReadF();
     if (!r_.truncated()) ReadG();
     if (!r_.truncated()) ReadH();
@@ -415,13 +416,26 @@ class DeckReader : public DeckFields {
     };
     static constexpr Unsupported kUnsupported[] = {
         {43, "NWINDF (wind forces)", "sled has no wind forces"},
-        {49, "NJNTF (obsolete joint functions)",
-         "ATB V.3 requires 0; define joint functions as E functions named by a negative B.4 "
-         "coefficient"},
         {55, "NFORCE (applied forces)", "sled has no prescribed force functions"},
         {61, "NWATER (water forces)", "sled has no water forces"},
         {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
     };
+    // The F.5 cards of CVS-III and ATB-II decks, which follow the E cards when NJNTF is set: ATB
+    // V.3 stops on them before reading any (INPUT_DCARDS, STOP 9), and neither its source nor the
+    // CVS-III paper gives their columns, so the reading ends after the E cards.
+    const int joint_functions = r_.Integer(d1, 49, 54, "NJNTF, the obsolete joint functions");
+    if (joint_functions != 0) {
+      Refuse(d1, 49, 54,
+             fmt::format("NJNTF is {}: the deck has the obsolete joint-function cards (F.5) of "
+                         "CVS-III and ATB-II, whose layout is not known: ATB V.3 stops on them "
+                         "(STOP 9) without reading one, and neither its source nor the CVS-III "
+                         "paper gives their columns; the cards after the E cards are not read",
+                         joint_functions),
+             "define each joint function as an E function (cards E.1 to E.4) and name it on its "
+             "joint's B.4 card by a negative first coefficient (-n for function n), then set "
+             "NJNTF to 0 and remove the F.5 cards, as ATB V.3 asks");
+      unknown_layout_ = true;
+    }
     if (bags_ > 0 && !approximate_airbags_) {
       Refuse(d1, 13, 18,
              fmt::format("NBAG is {}: ATB's airbags are free rigid bodies (weight XBM, held to "
@@ -899,8 +913,9 @@ class DeckReader : public DeckFields {
   }
 
   bool approximate_airbags_;
-  int harnesses_ = 0;  // D.1.a NHRNSS
-  int bags_ = 0;       // D.1.a NBAG
+  bool unknown_layout_ = false;  // the deck goes on with cards whose layout is not known
+  int harnesses_ = 0;            // D.1.a NHRNSS
+  int bags_ = 0;                 // D.1.a NBAG
 };
 
 }  // namespace

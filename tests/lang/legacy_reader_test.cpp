@@ -211,6 +211,26 @@ TEST(LegacyConvert, VehicleVelocityLiesAlongTheVehiclesXAxis) {
       << yawed.text;
 }
 
+TEST(LegacyConvert, ObsoleteJointFunctionCardsAreRefusedWithoutACascade) {
+  // A CVS-III deck: NJNTF = 2 on D.1.a and two F.5 cards of unknown layout after the E cards.
+  std::vector<std::string> lines = Lines(CorpusDeck());
+  const std::size_t d1 = LineStarting(lines, "     4     2     1");
+  lines[d1 - 1].replace(48, 6, "     2");
+  const std::size_t f_cards = LineStarting(lines, "# ---- F cards");
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(f_cards - 1),
+               {"    1    1   -1    0.5", "    2    2   -2    0.5"});
+  for (const BlankMode blanks : {BlankMode::kIgnore, BlankMode::kZero}) {
+    const Converted converted = Convert(Join(lines), blanks);
+    EXPECT_EQ(converted.errors, 1) << converted.All();
+    EXPECT_TRUE(
+        converted.Has(fmt::format("deck.ain:{}:49-54: error[E0507]: card D.1.a, columns "
+                                  "49-54: NJNTF is 2: the deck has the obsolete "
+                                  "joint-function cards (F.5)",
+                                  d1)))
+        << converted.All();
+  }
+}
+
 TEST(LegacyConvertRobustness, EveryTruncationIsReportedNeverACrash) {
   const std::vector<std::string> lines = Lines(CorpusDeck());
   const std::size_t h_cards = LineStarting(lines, "# ---- H cards");
