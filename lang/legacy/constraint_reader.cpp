@@ -5,11 +5,43 @@
 // direction from a contact (ATB's PLELP and SEGSEG) that D.6 does not name, 5 is a tension element
 // over two cards whose second card enters ATB's constraint equations, and a negative KQTYPE is a
 // constraint ATB switches on and off during the run: those are refused.
+#include <optional>
+#include <string>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "lang/legacy/restraint_readers.h"
 
 namespace sled::lang::legacy {
+namespace {
+
+// Why sled refuses a KQTYPE, and the help; nothing for the kinds it converts or that do not exist.
+std::optional<std::pair<std::string, std::string>> Refusal(int type) {
+  if (type == 3 || type == 4 || type == 6) {
+    return std::pair{fmt::format("KQTYPE {}: a constraint whose point and direction ATB takes "
+                                 "from a contact (PLELP, SEGSEG) that D.6 does not name",
+                                 type),
+                     std::string("write a `constraint ... : rolling(...)` or `sliding(...)` by "
+                                 "hand")};
+  }
+  if (type == 5) {
+    return std::pair{std::string("KQTYPE 5: a tension element, whose second D.6 card enters "
+                                 "ATB's constraint equations in a way the reference does not "
+                                 "document"),
+                     std::string("write a `tension` element (stiffness, damping, free length) "
+                                 "by hand")};
+  }
+  if (type < 0) {
+    return std::pair{fmt::format("KQTYPE {}: a constraint that ATB switches off until the run "
+                                 "turns it on",
+                                 type),
+                     std::string("sled's constraints act from the start; convert it by hand")};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 void ReadConstraints(DeckFields& fields, int count, int bags) {
   DeckSource& r = fields.source();
@@ -26,25 +58,8 @@ void ReadConstraints(DeckFields& fields, int count, int bags) {
     if (type == 1 || type == 2) {
       constraint.kind =
           type == 1 ? ConstraintCard::Kind::kFixedPoint : ConstraintCard::Kind::kFixedDistance;
-    } else if (type == 3 || type == 4 || type == 6) {
-      fields.Refuse(card, 1, 6,
-                    fmt::format("KQTYPE {}: a constraint whose point and direction ATB takes "
-                                "from a contact (PLELP, SEGSEG) that D.6 does not name",
-                                type),
-                    "write a `constraint ... : rolling(...)` or `sliding(...)` by hand");
-      continue;
-    } else if (type == 5) {
-      fields.Refuse(card, 1, 6,
-                    "KQTYPE 5: a tension element, whose second D.6 card enters ATB's constraint "
-                    "equations in a way the reference does not document",
-                    "write a `tension` element (stiffness, damping, free length) by hand");
-      continue;
-    } else if (type < 0) {
-      fields.Refuse(card, 1, 6,
-                    fmt::format("KQTYPE {}: a constraint that ATB switches off until the run "
-                                "turns it on",
-                                type),
-                    "sled's constraints act from the start; convert it by hand");
+    } else if (const auto refused = Refusal(type)) {
+      fields.Refuse(card, 1, 6, refused->first, refused->second);
       continue;
     } else {
       fields.Invalid(card, 1, 6, fmt::format("KQTYPE is {}", type),

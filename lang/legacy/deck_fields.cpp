@@ -84,10 +84,15 @@ std::optional<DeckFrame> DeckFields::FrameOf(const Card& card, int first, int la
   return std::nullopt;
 }
 
-void DeckFields::Refuse(const Card& card, int first, int last, std::string what, std::string help) {
-  r_.Report(DiagnosticKind::kDeckNotExpressible, card, first, last,
+void DeckFields::ReportField(DiagnosticKind kind, const Card& card, int first, int last,
+                             std::string_view what, std::string help) {
+  r_.Report(kind, card, first, last,
             fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
             std::move(help));
+}
+
+void DeckFields::Refuse(const Card& card, int first, int last, std::string what, std::string help) {
+  ReportField(DiagnosticKind::kDeckNotExpressible, card, first, last, what, std::move(help));
 }
 
 void DeckFields::RefuseNonZero(const Card& card, int first, int last, double value,
@@ -99,31 +104,25 @@ void DeckFields::RefuseNonZero(const Card& card, int first, int last, double val
 }
 
 void DeckFields::Unverified(const Card& card, int first, int last, std::string what) {
-  r_.Report(DiagnosticKind::kDeckUnverifiedField, card, first, last,
-            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-            "the format reference marks this unverified: compare the converted scenario with "
-            "the deck's documentation before trusting it");
+  ReportField(DiagnosticKind::kDeckUnverifiedField, card, first, last, what,
+              "the format reference marks this unverified: compare the converted scenario with "
+              "the deck's documentation before trusting it");
 }
 
 void DeckFields::Ignored(const Card& card, int first, int last, std::string what,
                          std::string help) {
-  r_.Report(DiagnosticKind::kDeckIgnoredField, card, first, last,
-            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-            std::move(help));
+  ReportField(DiagnosticKind::kDeckIgnoredField, card, first, last, what, std::move(help));
 }
 
 void DeckFields::Invalid(const Card& card, int first, int last, std::string what,
                          std::string help) {
-  r_.Report(DiagnosticKind::kDeckInvalidValue, card, first, last,
-            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-            std::move(help));
+  ReportField(DiagnosticKind::kDeckInvalidValue, card, first, last, what, std::move(help));
 }
 
 void DeckFields::Approximated(const Card& card, int first, int last, std::string what) {
-  r_.Report(DiagnosticKind::kDeckApproximated, card, first, last,
-            fmt::format("card {}, {}: {}", card.label, r_.Where(card, first, last), what),
-            "sled's model differs here from ATB's: compare the converted scenario's results with "
-            "the deck's before trusting them");
+  ReportField(DiagnosticKind::kDeckApproximated, card, first, last, what,
+              "sled's model differs here from ATB's: compare the converted scenario's results "
+              "with the deck's before trusting them");
 }
 
 }  // namespace sled::lang::legacy

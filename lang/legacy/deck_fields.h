@@ -52,6 +52,10 @@ class DeckFields {
   void Approximated(const Card& card, int first, int last, std::string what);
 
  protected:
+  // "card LABEL, COLUMNS: WHAT" at the columns, with `help`.
+  void ReportField(DiagnosticKind kind, const Card& card, int first, int last,
+                   std::string_view what, std::string help);
+
   DeckSource& r_;
   Deck& deck_;
 };

@@ -22,17 +22,15 @@ using namespace deck_testing;  // NOLINT: the deck helpers
 // The seated occupant's cylinder (D.4.d, D.4.e): 2000 psi over 14.7, 30 in^3 at 600 K, gamma 1.4,
 // R 1152.2 in/K per weight, a 1.2 in^2 throat with a discharge coefficient of 0.8; G 386.088.
 Cylinder CorpusCylinder() {
-  Cylinder c;
-  c.gamma = 1.4;
-  c.gas_constant = 1152.2;
-  c.temperature = 600;
-  c.supply_pressure = 2000;
-  c.ambient_pressure = 14.7;
-  c.volume = 30;
-  c.throat_area = 1.2;
-  c.discharge = 0.8;
-  c.g = 386.088;
-  return c;
+  return Cylinder{.gamma = 1.4,
+                  .gas_constant = 1152.2,
+                  .temperature = 600,
+                  .supply_pressure = 2000,
+                  .ambient_pressure = 14.7,
+                  .volume = 30,
+                  .throat_area = 1.2,
+                  .discharge = 0.8,
+                  .g = 386.088};
 }
 
 TEST(AirbagInflow, TheTableIsAtbsClosedForm) {

@@ -53,6 +53,12 @@ class LegacyHarness : public ::testing::Test {
     s.replace(static_cast<std::size_t>(first - 1), text.size(), text);
   }
   Converted Convert() const { return ConvertText(Join(lines_)); }
+  // Converts without errors and requires `fragment` in the scenario.
+  void ExpectScenarioHas(const std::string& fragment) const {
+    const Converted converted = Convert();
+    ASSERT_EQ(converted.errors, 0) << converted.All();
+    EXPECT_NE(converted.text.find(fragment), std::string::npos) << converted.text;
+  }
 
   std::vector<std::string> lines_;
   HarnessLines at_;
@@ -125,12 +131,9 @@ TEST_F(LegacyHarness, PointsBetweenTheEndsMustWrapABodySegment) {
   EXPECT_TRUE(Convert().Has(fmt::format("deck.ain:{}:33-36: error[E0507]", pelvis)));
   SetUp();
   Put(pelvis, 33, "   6");  // the lap belt's friction on the pelvis: 0.4
-  const Converted rough = Convert();
-  ASSERT_EQ(rough.errors, 0) << rough.All();
-  EXPECT_NE(rough.text.find("-> pilot.lt -> (1.5, 9, 3) in\n      force = harness_webbing\n"
-                            "      slack = 0.1 in\n      friction = 0.4"),
-            std::string::npos)
-      << rough.text;
+  ExpectScenarioHas(
+      "-> pilot.lt -> (1.5, 9, 3) in\n      force = harness_webbing\n"
+      "      slack = 0.1 in\n      friction = 0.4");
   SetUp();
   // ATB ignores an offset on an ellipsoid and a preferred direction without NPD.
   Put(pelvis + 1, 1, "          1.");
@@ -170,12 +173,9 @@ TEST_F(LegacyHarness, BeltAndHarnessCards) {
   EXPECT_TRUE(Convert().Has(fmt::format("deck.ain:{}:1-4: error[E0507]", at_.belt[1])));
   SetUp();
   Put(at_.belt[1], 21, "    0.000000");  // no slack: none is written
-  const Converted tight = Convert();
-  ASSERT_EQ(tight.errors, 0) << tight.All();
-  EXPECT_NE(tight.text.find("-> pilot.ut -> (1.5, 9, 3) in\n      force = harness_webbing\n      "
-                            "friction = 0.2"),
-            std::string::npos)
-      << tight.text;
+  ExpectScenarioHas(
+      "-> pilot.ut -> (1.5, 9, 3) in\n      force = harness_webbing\n      "
+      "friction = 0.2");
   SetUp();
   Put(at_.head + 1, 5, "   2");  // the right strap with two points: nothing on the body
   EXPECT_GT(Convert().errors, 0);
