@@ -308,7 +308,8 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
     std::copy(y1_.begin(), y1_.end(), y_project_.begin());
     system_->Project(t1, y1_);
     for (std::size_t i = 0; i < y1_.size(); ++i) y_project_[i] = y1_[i] - y_project_[i];
-    if (ErrorNorm(y_project_) > kProjectionReevaluation) {
+    const double moved = ErrorNorm(y_project_);
+    if (moved > kProjectionReevaluation || (moved > 0.0 && !ToleratesProjectedStart())) {
       if (!Evaluate(t1, y1_, f1_) || !AllFinite(f1_)) {
         ++stats_.rejected;
         return Fail(Failure::kEvaluation, h, error);

@@ -52,6 +52,10 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // True when TryStep also leaves f(t_ + h, y1_) in f1_ (FSAL); otherwise the loop evaluates it
   // after the error test passes, and it becomes the next step's f0_.
   virtual bool HasEndDerivative() const { return false; }
+  // True when the next step may start from the end derivative of a state that the projection
+  // then moved by less than kProjectionReevaluation of the tolerance. A method whose stages or
+  // difference Jacobian rely on f0_ being exactly f(t_, y_) says false.
+  virtual bool ToleratesProjectedStart() const { return true; }
   // What the method itself carries between steps (decay rates, a Jacobian), for Serialize.
   virtual void SerializeHistory(Archive& archive) { (void)archive; }
   // Told after each accepted or rejected attempt.

@@ -87,7 +87,6 @@ void Rosenbrock::ResizeWorkspace(std::size_t size) {
   rhs_.setZero(n);
   stage_.setZero(n);
   f_stage_.setZero(n);
-  f_base_.setZero(n);
   error_.setZero(n);
   jacobian_row_major_.assign(size * size, 0.0);
   RestartHistory();
@@ -107,12 +106,6 @@ bool Rosenbrock::FormJacobian(double h) {
   const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   ++mutable_stats().jacobians;
   jacobian_valid_ = false;  // until it is complete
-
-  // The differences below are taken against f evaluated here rather than f0_: f0_ may be the
-  // derivative before the step's projection (kept when the projection moved the state by far
-  // less than the tolerance), and an inconsistency of that size over an increment of sqrt(eps)
-  // would spoil the Jacobian.
-  if (!Evaluate(t_, y_, std::span<double>(f_base_.data(), n))) return false;
 
   if (system().Jacobian(t_, y_, jacobian_row_major_)) {
     for (Eigen::Index i = 0; i < ni; ++i) {
@@ -144,7 +137,7 @@ bool Rosenbrock::FormJacobian(double h) {
       if (!ok) return false;
       const auto col = static_cast<Eigen::Index>(j);
       for (Eigen::Index i = 0; i < ni; ++i) {
-        jacobian_(i, col) = (f_stage_(i) - f_base_(i)) / delta;
+        jacobian_(i, col) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / delta;
       }
     }
   }
@@ -154,7 +147,7 @@ bool Rosenbrock::FormJacobian(double h) {
   const double dt = sqrt_eps * std::max(std::abs(t_), h);
   if (Evaluate(t_ + dt, y_, std::span<double>(f_stage_.data(), n)) && f_stage_.allFinite()) {
     for (Eigen::Index i = 0; i < ni; ++i) {
-      time_derivative_(i) = (f_stage_(i) - f_base_(i)) / dt;
+      time_derivative_(i) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / dt;
     }
   } else {
     time_derivative_.setZero();
