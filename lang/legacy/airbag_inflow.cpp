@@ -41,6 +41,10 @@ InflowTable TabulateCylinder(const Cylinder& c) {
   };
   InflowTable table;
   table.end = (std::pow(1 - kDeliveredShare, -k1 / 2) - 1) / rate;
+  // Extreme deck values (a vanishing throat, G = 0, overflow) give no time to tabulate over.
+  if (!std::isfinite(table.end) || !(table.end > 0) || !std::isnormal(table.end / kIntervals)) {
+    return table;
+  }
   table.step = RoundStep(table.end / kIntervals);
   const int rows = static_cast<int>(std::ceil(table.end / table.step - 1e-9)) + 1;
   double mass = 0;
@@ -53,6 +57,8 @@ InflowTable TabulateCylinder(const Cylinder& c) {
     }
   }
   table.delivered = mass / (weight / c.g);
+  table.valid = std::isfinite(table.delivered);
+  for (const auto& [t, f] : table.rows) table.valid = table.valid && std::isfinite(f);
   return table;
 }
 

@@ -32,6 +32,7 @@ struct Cylinder {
 // cylinder's gas (ATB delivers all of it, as t grows) that the table, interpolated linearly and
 // zero after its last row, delivers.
 struct InflowTable {
+  bool valid = false;  // false when the deck's values give no finite, positive flow to tabulate
   double step = 0;
   double end = 0;
   double delivered = 0;

@@ -130,6 +130,13 @@ class AirbagReader {
                       "unfolds as its gas fills it (docs/runtime.md)");
     }
     const InflowTable table = TabulateCylinder(cylinder);
+    if (!table.valid) {
+      f_.Invalid(d, 37, 72,
+                 "ATB's cylinder formula gives no finite inflow for these values (CYSP, CYV0, "
+                 "CYAT, CYCD with CYK, CYR, CYT0 and A.3's G)",
+                 "check the cylinder's values and their units against A.3's unit labels");
+      return;
+    }
     airbag.inflow = table.rows;
     f_.Approximated(d, 37, 72,
                     fmt::format("ATB's cylinder (CYSP, CYV0 and the throat's CYAT and CYCD) "

@@ -167,6 +167,26 @@ TEST_F(LegacyAirbag, WhatSledCannotTakeIsLocated) {
   EXPECT_TRUE(Convert(lines_).Has("error[E0505]: card D.1.a, columns 13-18"));
 }
 
+// Values that pass the field checks but leave the cylinder no finite time to empty (a throat
+// of 1e-320 square inches: the throat's length overflows and the flow constant is 0; G = 0)
+// give a located error, never a table of infinities or an undefined conversion.
+TEST(AirbagInflow, ACylinderThatNeverEmptiesGivesNoTable) {
+  Cylinder cylinder = CorpusCylinder();
+  cylinder.throat_area = 1e-320;
+  EXPECT_FALSE(TabulateCylinder(cylinder).valid);
+  cylinder = CorpusCylinder();
+  cylinder.g = 0;
+  EXPECT_FALSE(TabulateCylinder(cylinder).valid);
+  EXPECT_TRUE(TabulateCylinder(CorpusCylinder()).valid);
+}
+
+TEST_F(LegacyAirbag, ACylinderThatNeverEmptiesIsLocated) {
+  Put(head_ + 4, 37, "     1.E-320");  // CYAT
+  const Converted converted = Convert(lines_);
+  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:37-72: error[E0512]", head_ + 3)))
+      << converted.All();
+}
+
 TEST_F(LegacyAirbag, AClosedBagHasNoVent) {
   Put(head_ + 5, 1, "          0.");  // CYA0
   const Converted closed = Convert(lines_);
