@@ -309,7 +309,8 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
     system_->Project(t1, y1_);
     for (std::size_t i = 0; i < y1_.size(); ++i) y_project_[i] = y1_[i] - y_project_[i];
     const double moved = ErrorNorm(y_project_);
-    if (moved > kProjectionReevaluation || (moved > 0.0 && !ToleratesProjectedStart())) {
+    // (Written so that a NaN difference re-evaluates, and the non-finite result is reported.)
+    if (!(moved <= kProjectionReevaluation) || (moved > 0.0 && !ToleratesProjectedStart())) {
       if (!Evaluate(t1, y1_, f1_) || !AllFinite(f1_)) {
         ++stats_.rejected;
         return Fail(Failure::kEvaluation, h, error);
