@@ -10,25 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "tests/compiler/sled_process.h"
+#include "tests/compiler/legacy_twin.h"
 
 namespace sled::testing {
 namespace {
 
-// The rows of a CSV file without its header line (the twins name their columns differently).
-std::string ValuesOf(const std::string& csv) {
-  const std::size_t end = csv.find('\n');
-  return end == std::string::npos ? std::string() : csv.substr(end + 1);
-}
-
-std::size_t Count(const std::string& text, const std::string& what) {
-  std::size_t count = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-    ++count;
-  return count;
-}
-
-class LegacyCorpus : public SledProcessTest {
+class LegacyCorpus : public LegacyTwinTest {
  protected:
   // Converts examples/legacy/NAME.ain, requires exactly the W0501 (unverified) and W0504
   // (approximated) warnings `expected` (each a "LINE:COLUMNS: warning[W05..]: card ..." prefix)
@@ -52,24 +39,7 @@ class LegacyCorpus : public SledProcessTest {
           << convert.err;
     }
 
-    const SledResult check = Sled({"check", converted.string()});
-    EXPECT_EQ(check.exit_code, 0) << check.err;
-    EXPECT_EQ(check.err, "") << "the converted scenario has diagnostics";
-
-    const SledResult format = Sled({"fmt", "--check", converted.string()});
-    EXPECT_EQ(format.exit_code, 0) << format.out << format.err;
-
-    const SledResult run_converted =
-        Sled({"run", converted.string(), "-o", (temp() / "converted").string()});
-    ASSERT_EQ(run_converted.exit_code, 0) << run_converted.err;
-    const SledResult run_twin =
-        Sled({"run", "examples/legacy/" + name + ".sled", "-o", (temp() / "twin").string()});
-    ASSERT_EQ(run_twin.exit_code, 0) << run_twin.err;
-    const std::string a = ReadText(temp() / "converted" / "timeseries.csv");
-    const std::string b = ReadText(temp() / "twin" / "timeseries.csv");
-    ASSERT_FALSE(ValuesOf(a).empty());
-    EXPECT_TRUE(ValuesOf(a) == ValuesOf(b)) << "the converted deck and its twin differ";
-    EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), rows + 1);  // the header and the rows
+    ExpectMatchesTwin(converted, "examples/legacy/" + name + ".sled", rows);
   }
 
   // Writes `deck` as NAME.ain, converts it with --approximate-airbags and returns the scenario,

@@ -7,18 +7,12 @@
 #include <algorithm>
 #include <string>
 
-#include "tests/compiler/sled_process.h"
+#include "tests/compiler/legacy_twin.h"
 
 namespace sled::testing {
 namespace {
 
-// The rows of a CSV file without its header line.
-std::string ValuesOf(const std::string& csv) {
-  const std::size_t end = csv.find('\n');
-  return end == std::string::npos ? std::string() : csv.substr(end + 1);
-}
-
-class LegacyRoundTrip : public SledProcessTest {};
+class LegacyRoundTrip : public LegacyTwinTest {};
 
 TEST_F(LegacyRoundTrip, SeatedOccupantDeckMatchesItsTwin) {
   const fs::path converted = temp() / "seated_occupant.sled";
@@ -28,33 +22,12 @@ TEST_F(LegacyRoundTrip, SeatedOccupantDeckMatchesItsTwin) {
   EXPECT_NE(convert.err.find("warning[W0501]"), std::string::npos) << convert.err;
   // The airbag's approximations: the cylinder's table, the gas law, the vent and the free bag
   // held fixed (with its reaction panel).
-  std::size_t approximations = 0;
-  for (std::size_t at = convert.err.find("warning[W0504]"); at != std::string::npos;
-       at = convert.err.find("warning[W0504]", at + 1)) {
-    ++approximations;
-  }
-  EXPECT_EQ(approximations, 5u) << convert.err;
+  EXPECT_EQ(Count(convert.err, "warning[W0504]"), 5u) << convert.err;
   EXPECT_NE(convert.err.find("85 rows every 0.0005 s up to 0.04164 s"), std::string::npos)
       << convert.err;
 
-  const SledResult check = Sled({"check", converted.string()});
-  EXPECT_EQ(check.exit_code, 0) << check.err;
-  EXPECT_EQ(check.err, "") << "the converted scenario has diagnostics";
-
-  const SledResult format = Sled({"fmt", "--check", converted.string()});
-  EXPECT_EQ(format.exit_code, 0) << format.out << format.err;
-
-  const SledResult run_converted = Sled({"run", converted.string(), "-o", (temp() / "a").string()});
-  ASSERT_EQ(run_converted.exit_code, 0) << run_converted.err;
-  const SledResult run_twin =
-      Sled({"run", "examples/legacy/seated_occupant.sled", "-o", (temp() / "b").string()});
-  ASSERT_EQ(run_twin.exit_code, 0) << run_twin.err;
-  const std::string a = ReadText(temp() / "a" / "timeseries.csv");
-  const std::string b = ReadText(temp() / "b" / "timeseries.csv");
-  ASSERT_FALSE(ValuesOf(a).empty());
-  EXPECT_TRUE(ValuesOf(a) == ValuesOf(b)) << "the converted deck and its twin differ";
-  // A.4: 300 output steps of 0.5 ms, so 301 rows after the header.
-  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 302);
+  // A.4: 300 output steps of 0.5 ms, so 301 rows.
+  ExpectMatchesTwin(converted, "examples/legacy/seated_occupant.sled", 301);
 }
 
 TEST_F(LegacyRoundTrip, MangledDeckFailsWithALocatedDiagnostic) {
