@@ -211,34 +211,29 @@ const ListReader::Item* ListReader::ItemAt(const Card& card, int first, int last
   return &items_[card.first_item + static_cast<std::uint32_t>(number)];
 }
 
-double ListReader::Real(const Card& card, int first, int last, std::string_view what) {
+double ListReader::Number(const Card& card, int first, int last, std::string_view what,
+                          bool integer) {
   const Item* item = ItemAt(card, first, last);
   if (item == nullptr) return 0.0;
   if (item->state == Item::State::kString) {
     ReportBadNumber(card, first, last, what, fmt::format("\"{}\"", item->text),
-                    FieldProblem::kNotANumber, false);
+                    FieldProblem::kNotANumber, integer);
     return 0.0;
   }
   if (item->state != Item::State::kValue) return 0.0;
-  const FieldValue value = ReadRealField(item->text, BlankMode::kIgnore);
+  const FieldValue value = integer ? ReadIntegerField(item->text, BlankMode::kIgnore)
+                                   : ReadRealField(item->text, BlankMode::kIgnore);
   if (value.problem == FieldProblem::kNone) return value.number;
-  ReportBadNumber(card, first, last, what, item->text, value.problem, false);
+  ReportBadNumber(card, first, last, what, item->text, value.problem, integer);
   return 0.0;
 }
 
+double ListReader::Real(const Card& card, int first, int last, std::string_view what) {
+  return Number(card, first, last, what, false);
+}
+
 int ListReader::Integer(const Card& card, int first, int last, std::string_view what) {
-  const Item* item = ItemAt(card, first, last);
-  if (item == nullptr) return 0;
-  if (item->state == Item::State::kString) {
-    ReportBadNumber(card, first, last, what, fmt::format("\"{}\"", item->text),
-                    FieldProblem::kNotANumber, true);
-    return 0;
-  }
-  if (item->state != Item::State::kValue) return 0;
-  const FieldValue value = ReadIntegerField(item->text, BlankMode::kIgnore);
-  if (value.problem == FieldProblem::kNone) return static_cast<int>(value.number);
-  ReportBadNumber(card, first, last, what, item->text, value.problem, true);
-  return 0;
+  return static_cast<int>(Number(card, first, last, what, true));
 }
 
 std::string ListReader::Text(const Card& card, int first, int last) {

@@ -51,6 +51,9 @@ class ListReader final : public DeckSource {
   // The 0-based item of the field at these columns (-1 when the field is not an item).
   int ItemNumber(const Card& card, int field) const;
   const Item* ItemAt(const Card& card, int first, int last);
+  // The item of the field as a number (a whole one when `integer`); a bad one is reported and
+  // reads as zero, an empty one as zero.
+  double Number(const Card& card, int first, int last, std::string_view what, bool integer);
   // The items whose fields lie within `first`..`last`, as 0-based numbers [low, high].
   bool ItemsWithin(const Card& card, int first, int last, int* low, int* high) const;
 

@@ -162,15 +162,7 @@ TEST(LinMangled, AWordWhereANumberBelongs) {
 }
 
 TEST(LinRobustness, EveryTruncationIsReportedNeverACrash) {
-  const std::vector<std::string> lines = Lines(CorpusLin());
-  const std::size_t h_cards = LineStarting(lines, "# ---- H cards");
-  for (std::size_t keep = 0; keep < lines.size(); ++keep) {
-    const Converted converted = ConvertLin(Join(lines, keep));
-    if (keep + 1 < h_cards) {
-      EXPECT_GT(converted.errors, 0) << "cut after line " << keep;
-      EXPECT_TRUE(converted.Has("error[E0501]")) << "cut after line " << keep;
-    }
-  }
+  ExpectEveryCutIsReported(CorpusLin(), ConvertLin, true);
   // Cut inside a line: the READ lacks items.
   const std::string text = CorpusLin();
   const Converted cut = ConvertLin(text.substr(0, text.find("\"OCCUPANT\"")));

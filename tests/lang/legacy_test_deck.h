@@ -86,4 +86,23 @@ inline std::size_t LineStarting(const std::vector<std::string>& lines, std::stri
   return 1;
 }
 
+// Cuts `deck` after every line and converts each cut with `convert`: before the H cards a cut
+// deck always lacks a card it announced, so it must report an error (E0501 when
+// `expect_end_of_deck`); no cut may crash.
+template <typename ConvertFunction>
+void ExpectEveryCutIsReported(const std::string& deck, ConvertFunction convert,
+                              bool expect_end_of_deck) {
+  const std::vector<std::string> lines = Lines(deck);
+  const std::size_t h_cards = LineStarting(lines, "# ---- H cards");
+  for (std::size_t keep = 0; keep < lines.size(); ++keep) {
+    const Converted converted = convert(Join(lines, keep));
+    if (keep + 1 < h_cards) {
+      EXPECT_GT(converted.errors, 0) << "cut after line " << keep;
+      if (expect_end_of_deck) {
+        EXPECT_TRUE(converted.Has("error[E0501]")) << "cut after line " << keep;
+      }
+    }
+  }
+}
+
 }  // namespace sled::lang::legacy::deck_testing
