@@ -388,9 +388,11 @@ CheckedScenario Checker::Run(const ast::File& file) {
   }
   CheckBodyDetails();
   CheckSceneElements();
+  scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();
   CheckOutputs();
+  EvaluateUnusedParameters();
   if (options_.lints) RunLints();
   return std::move(scenario_);
 }

@@ -32,6 +32,17 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
                fmt::format("the output step {:g} s is longer than the run ({:g} s)",
                            run.output_every, run.end - run.start),
                "longer than the run", "choose an output step shorter than the run");
+      } else if (run.output_every > 0 && run.end > 0 &&
+                 (run.end - run.start) / run.output_every > kMaxOutputRows) {
+        // Every row is kept in memory (time series, animation frames) until the run ends.
+        Report(DiagnosticKind::kInvalidRunSettings, One(bound, "output_every")->range,
+               fmt::format("the output step {:g} s gives {:.3g} rows over the {:g} s run, more "
+                           "than the {:.0f} rows sled keeps",
+                           run.output_every, (run.end - run.start) / run.output_every,
+                           run.end - run.start, kMaxOutputRows),
+               "too many output rows",
+               fmt::format("choose an output step of at least {:g} s",
+                           (run.end - run.start) / kMaxOutputRows));
       }
     } else if (keyword == "integrator") {
       static const std::vector<std::string> kMethods = {"exponential", "dopri5", "rosenbrock"};

@@ -140,6 +140,29 @@ const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
   return &statement.values[0];
 }
 
+std::optional<Value> Checker::ValueOf(Parameter& parameter) {
+  if (parameter.state == Parameter::State::kPending) {
+    parameter.state = Parameter::State::kEvaluating;
+    const ast::Expr& definition =
+        parameter.override_expr ? *parameter.override_expr : *parameter.expr;
+    auto value = Evaluate(*parameter.scope, definition);
+    if (parameter.state == Parameter::State::kFailed || !value) {
+      parameter.state = Parameter::State::kFailed;
+      return std::nullopt;
+    }
+    parameter.value = *value;
+    parameter.state = Parameter::State::kDone;
+  }
+  if (parameter.state == Parameter::State::kFailed) return std::nullopt;
+  return parameter.value;
+}
+
+void Checker::EvaluateUnusedParameters() {
+  // Parameters are evaluated when used; one that nothing uses must still be a valid value (a
+  // wrong dimension in it is a mistake the checker can find).
+  for (std::size_t i = 0; i < parameters_.size(); ++i) ValueOf(*parameters_[i]);
+}
+
 std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
   switch (expr.kind) {
     case ast::ExprKind::kNumber: {
@@ -237,20 +260,7 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
         parameter.state = Parameter::State::kFailed;
         return std::nullopt;
       }
-      if (parameter.state == Parameter::State::kPending) {
-        parameter.state = Parameter::State::kEvaluating;
-        const ast::Expr& definition =
-            parameter.override_expr ? *parameter.override_expr : *parameter.expr;
-        auto value = Evaluate(*parameter.scope, definition);
-        if (parameter.state == Parameter::State::kFailed || !value) {
-          parameter.state = Parameter::State::kFailed;
-          return std::nullopt;
-        }
-        parameter.value = *value;
-        parameter.state = Parameter::State::kDone;
-      }
-      if (parameter.state == Parameter::State::kFailed) return std::nullopt;
-      return parameter.value;
+      return ValueOf(parameter);
     }
     case ast::ExprKind::kParen:
       return Evaluate(scope, expr.operands.at(0));

@@ -308,6 +308,10 @@ struct Criterion {
 enum class IntegratorMethod { kExponential, kDormandPrince, kRosenbrock };
 enum class Symmetry { kNone, kPlanar, kMirror };
 
+// The most output rows a run may have: every row stays in memory (time series, animation frames)
+// until the run ends, so a million rows of a full occupant already take about a gigabyte.
+inline constexpr double kMaxOutputRows = 1e6;
+
 struct RunSettings {
   double start = 0.0;
   double end = 0.0;
@@ -327,6 +331,9 @@ struct RunSettings {
 };
 
 struct CheckedScenario {
+  // False for a file without a `scenario` block: a module for `import`, which can be checked
+  // but not run.
+  bool has_scenario = false;
   std::string title;
   RunSettings run;
   std::vector<Function> functions;

@@ -109,6 +109,9 @@ class Checker {
 
   // --- values (check_values.cpp)
   std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);
+  // The value of a parameter, evaluated on first use.
+  std::optional<Value> ValueOf(Parameter& parameter);
+  void EvaluateUnusedParameters();
   std::optional<double> ExpectQuantity(Scope& scope, const ast::Expr& expr, Dimension dimension,
                                        std::string_view what);
   std::optional<Vec3> ExpectVector(Scope& scope, const ast::Expr& expr, Dimension dimension,

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/check.h"
+#include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/explain_pages.h"
 #include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
@@ -25,6 +26,8 @@
 
 namespace {
 
+using sled::driver::LoadUserFile;
+using sled::driver::PrintDiagnostics;
 using sled::lang::DiagnosticCollector;
 using sled::lang::SourceManager;
 
@@ -115,42 +118,13 @@ int UsageError(const std::string& message) {
 
 bool ColorWanted() { return isatty(STDERR_FILENO) && std::getenv("NO_COLOR") == nullptr; }
 
-void PrintDiagnostics(const SourceManager& sources, DiagnosticCollector& collector, bool compact) {
-  collector.SortByPosition();
-  const sled::lang::RenderOptions render{ColorWanted()};
-  for (const auto& diagnostic : collector.diagnostics()) {
-    if (compact) {
-      std::cerr << sled::lang::RenderCompact(sources, diagnostic) << '\n';
-    } else {
-      std::cerr << sled::lang::RenderRich(sources, diagnostic, render) << '\n';
-    }
-  }
-  if (!compact && (collector.error_count() > 0 || collector.warning_count() > 0)) {
-    std::cerr << fmt::format("{} error{}, {} warning{}\n", collector.error_count(),
-                             collector.error_count() == 1 ? "" : "s", collector.warning_count(),
-                             collector.warning_count() == 1 ? "" : "s");
-  }
-}
-
-// Loads a file, or reports E0107 and returns nullopt.
-std::optional<sled::lang::FileId> LoadFile(SourceManager& sources, const std::string& path,
-                                           DiagnosticCollector& collector) {
-  if (auto id = sources.Load(path)) return id;
-  auto diagnostic = sled::lang::MakeDiagnostic(sled::lang::DiagnosticKind::kFileUnreadable, {},
-                                               fmt::format("cannot read `{}`", path));
-  diagnostic.labels.clear();
-  diagnostic.help = "check the path and the file's permissions";
-  collector.Consume(std::move(diagnostic));
-  return std::nullopt;
-}
-
 int RunCheck(const Options& options) {
   if (options.files.empty()) return UsageError("`check` needs at least one file");
   bool errors = false;
   for (const std::string& path : options.files) {
     SourceManager sources;
     DiagnosticCollector collector;
-    if (auto file = LoadFile(sources, path, collector)) {
+    if (auto file = LoadUserFile(sources, path, collector)) {
       sled::lang::ParseOptions parse_options;
       parse_options.diagnostics = &collector;
       const auto ast = sled::lang::Parse(sources, *file, parse_options);
@@ -172,7 +146,7 @@ int RunCheck(const Options& options) {
         for (const std::string& note : lowered.notes) std::cerr << note << '\n';
       }
     }
-    PrintDiagnostics(sources, collector, options.compact);
+    PrintDiagnostics(sources, collector, options.compact, ColorWanted());
     errors |= collector.has_errors();
   }
   return errors ? kExitInputErrors : kExitOk;
@@ -184,9 +158,9 @@ int RunFormat(const Options& options) {
   for (const std::string& path : options.files) {
     SourceManager sources;
     DiagnosticCollector collector;
-    auto file = LoadFile(sources, path, collector);
+    auto file = LoadUserFile(sources, path, collector);
     if (!file) {
-      PrintDiagnostics(sources, collector, options.compact);
+      PrintDiagnostics(sources, collector, options.compact, ColorWanted());
       changed_or_failed = true;
       continue;
     }
@@ -195,7 +169,7 @@ int RunFormat(const Options& options) {
     const auto ast = sled::lang::Parse(sources, *file, parse_options);
     if (collector.has_errors()) {
       // Statements the parser skipped are not in the tree: formatting would lose them.
-      PrintDiagnostics(sources, collector, options.compact);
+      PrintDiagnostics(sources, collector, options.compact, ColorWanted());
       std::cerr << fmt::format("sled: `{}` has syntax errors and was left unchanged\n", path);
       changed_or_failed = true;
       continue;
@@ -237,7 +211,7 @@ int RunConvert(const Options& options) {
   }
   SourceManager sources;
   DiagnosticCollector collector;
-  const auto file = LoadFile(sources, options.files[0], collector);
+  const auto file = LoadUserFile(sources, options.files[0], collector);
   std::string text;
   if (file) {
     sled::lang::legacy::ConvertOptions convert;
@@ -249,7 +223,7 @@ int RunConvert(const Options& options) {
     const auto ast = sled::lang::legacy::ConvertDeck(sources, *file, convert);
     if (!collector.has_errors()) text = sled::lang::Format(ast);
   }
-  PrintDiagnostics(sources, collector, options.compact);
+  PrintDiagnostics(sources, collector, options.compact, ColorWanted());
   if (collector.has_errors()) return kExitInputErrors;
   if (options.output_directory.empty()) {
     std::cout << text;

@@ -11,9 +11,9 @@
 #include <fmt/format.h>
 
 #include "compiler/check/check.h"
+#include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/report_command.h"
 #include "compiler/lower/lower.h"
-#include "lang/diagnostics/render.h"
 #include "lang/syntax/parser.h"
 #include "runtime/checkpoint.h"
 #include "runtime/export/animation_glb.h"
@@ -71,16 +71,6 @@ std::string TestName(const std::string& file) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
   }
   return name.empty() ? "sled" : name;
-}
-
-void PrintDiagnostics(const lang::SourceManager& sources, lang::DiagnosticCollector& collector,
-                      const RunCommandOptions& options) {
-  collector.SortByPosition();
-  for (const auto& diagnostic : collector.diagnostics()) {
-    std::cerr << (options.compact_diagnostics
-                      ? lang::RenderCompact(sources, diagnostic) + "\n"
-                      : lang::RenderRich(sources, diagnostic, {options.color}) + "\n");
-  }
 }
 
 void ShowProgress(double fraction, void* context) {
@@ -167,9 +157,9 @@ bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::st
 std::optional<CompiledScene> CompileScene(const RunCommandOptions& options) {
   lang::SourceManager sources;
   lang::DiagnosticCollector collector;
-  const auto file = sources.Load(options.file);
+  const auto file = LoadUserFile(sources, options.file, collector);
   if (!file) {
-    std::cerr << fmt::format("sled: cannot read `{}`\n", options.file);
+    PrintDiagnostics(sources, collector, options.compact_diagnostics, options.color);
     return std::nullopt;
   }
   compiler::CheckOptions check_options;
@@ -178,7 +168,17 @@ std::optional<CompiledScene> CompileScene(const RunCommandOptions& options) {
   check_options.overrides = options.overrides;
   CompiledScene compiled;
   compiled.scenario = compiler::ParseAndCheck(sources, *file, check_options);
-  PrintDiagnostics(sources, collector, options);
+  if (!compiled.scenario.has_scenario && !collector.has_errors()) {
+    // A module for `import` checks clean but holds nothing to simulate.
+    auto diagnostic = lang::MakeDiagnostic(
+        lang::DiagnosticKind::kMissingAttribute, lang::SourceRange{*file, 0, 0},
+        fmt::format("`{}` has no `scenario` to run", options.file), "no `scenario` block");
+    diagnostic.help =
+        "a file to run holds `scenario \"name\" { ... }`; a file without one is a module that "
+        "scenarios `import`";
+    collector.Consume(std::move(diagnostic));
+  }
+  PrintDiagnostics(sources, collector, options.compact_diagnostics, options.color);
   if (collector.has_errors()) return std::nullopt;
 
   compiler::LowerOptions lower_options;

@@ -2,28 +2,19 @@
 
 #include <fstream>
 #include <optional>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "compiler/report/report_page.h"
+#include "lang/source/source_manager.h"
 
 namespace sled::report {
 namespace {
 
-std::optional<std::string> ReadFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return text.str();
-}
-
 // A channel file, or nullopt with a note saying what went wrong.
 std::optional<ChannelTable> ReadChannels(const std::filesystem::path& path,
                                          std::vector<std::string>& notes) {
-  const std::optional<std::string> text = ReadFile(path);
+  const std::optional<std::string> text = lang::ReadFile(path.string());
   if (!text) {
     notes.push_back(fmt::format("{} is missing: its plots are left out", path.filename().string()));
     return std::nullopt;
@@ -43,7 +34,7 @@ ReportResult WriteReport(const std::filesystem::path& directory,
                          const std::filesystem::path& output) {
   ReportResult result;
   const std::filesystem::path summary_path = directory / "summary.json";
-  const std::optional<std::string> summary_text = ReadFile(summary_path);
+  const std::optional<std::string> summary_text = lang::ReadFile(summary_path.string());
   if (!summary_text) {
     result.error = fmt::format("cannot read `{}`: is `{}` the output folder of `sled run`?",
                                summary_path.string(), directory.string());
@@ -62,7 +53,7 @@ ReportResult WriteReport(const std::filesystem::path& directory,
   if (inputs.raw) {
     inputs.filtered = ReadChannels(directory / "timeseries_filtered.csv", inputs.notes);
   }
-  if (std::optional<std::string> glb = ReadFile(directory / "animation.glb")) {
+  if (std::optional<std::string> glb = lang::ReadFile((directory / "animation.glb").string())) {
     inputs.glb = std::move(*glb);
   } else {
     inputs.notes.emplace_back("animation.glb is missing: the page has no animation");

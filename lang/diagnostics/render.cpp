@@ -40,6 +40,44 @@ std::uint32_t CharacterWidth(std::string_view text) {
   return width;
 }
 
+// A source line wider than this is shown as a window of it around the label, so that a
+// diagnostic in a generated or mangled file with very long lines stays readable.
+constexpr std::uint32_t kWidestShownLine = 120;
+constexpr std::uint32_t kShownBeforeLabel = 40;
+
+// The byte offset of the character at index `n` (0-based) of UTF-8 text, or its size.
+std::size_t ByteOfCharacter(std::string_view text, std::uint32_t n) {
+  std::uint32_t seen = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if ((static_cast<unsigned char>(text[i]) & 0xC0u) != 0x80u && seen++ == n) return i;
+  }
+  return text.size();
+}
+
+// What is shown of a source line, and how far right of its column the label's marks start.
+struct ShownLine {
+  std::string text;
+  std::uint32_t marks_at = 0;  // characters before the first mark
+  std::uint32_t room = 0;      // characters shown from the first mark on
+};
+
+ShownLine ShowLine(const std::string& line, std::uint32_t column) {
+  const std::uint32_t characters = CharacterWidth(line);
+  const std::uint32_t before = column - 1;
+  if (characters <= kWidestShownLine) return {line, before, std::max(characters, column) - before};
+  const std::uint32_t first = before > kShownBeforeLabel ? before - kShownBeforeLabel : 0;
+  const std::uint32_t last = std::min(characters, first + kWidestShownLine);
+  const std::string_view whole(line);
+  const std::size_t from = ByteOfCharacter(whole, first);
+  ShownLine shown;
+  shown.text = std::string(first > 0 ? "..." : "") +
+               std::string(whole.substr(from, ByteOfCharacter(whole, last) - from)) +
+               (last < characters ? "..." : "");
+  shown.marks_at = before - first + (first > 0 ? 3 : 0);
+  shown.room = std::max(last, column) - before;
+  return shown;
+}
+
 std::string Paint(const std::string& text, const char* code, bool color) {
   return color ? fmt::format("\x1b[{}m{}\x1b[0m", code, text) : text;
 }
@@ -100,10 +138,12 @@ std::string RenderRich(const SourceManager& sources, const Diagnostic& diagnosti
               : std::max<std::uint32_t>(
                     1, CharacterWidth(buffer.text().substr(
                            label.range.begin, std::min(span_end, line_end) - label.range.begin)));
-      out +=
-          fmt::format("{:>{}} {} {}\n", start.line, gutter.size(), Paint("|", "1;34", color), line);
-      const std::string marks(width, label.primary ? '^' : '-');
-      std::string underline = std::string(start.column - 1, ' ') + marks;
+      const ShownLine shown = ShowLine(line, start.column);
+      out += fmt::format("{:>{}} {} {}\n", start.line, gutter.size(), Paint("|", "1;34", color),
+                         shown.text);
+      const std::string marks(std::max<std::uint32_t>(1, std::min(width, shown.room)),
+                              label.primary ? '^' : '-');
+      std::string underline = std::string(shown.marks_at, ' ') + marks;
       if (!label.message.empty()) underline += " " + label.message;
       out += fmt::format("{} {} {}\n", gutter, Paint("|", "1;34", color),
                          Paint(underline, label.primary ? severity_color : "1;34", color));

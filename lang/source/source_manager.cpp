@@ -1,6 +1,7 @@
 #include "lang/source/source_manager.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -97,6 +98,10 @@ std::string_view SourceManager::Text(const SourceRange& range) const {
 }
 
 std::optional<std::string> ReadFile(const std::string& path) {
+  // A directory opens as a stream on Linux and reads as empty text, which would pass for an
+  // empty file.
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   std::ostringstream contents;

@@ -464,6 +464,7 @@ class Converter {
   }
 
   ast::Expr ConvertExpr(const Node& node) {
+    const DepthGuard guard(expression_depth_, 1);
     ast::Expr expr;
     expr.range = Range(node);
     switch (node.type) {
@@ -549,8 +550,40 @@ class Converter {
   }
 
  private:
+  // The deepest expression tree the conversion builds. The grammar limits nesting, but a chain
+  // `a + b + c ...` becomes a tree as deep as the chain is long, and every later pass (checker,
+  // formatter, destructor) walks expressions recursively.
+  static constexpr int kMaxExpressionDepth = 1000;
+
+  struct DepthGuard {
+    DepthGuard(int& depth, int by) : depth_(depth), by_(by) { depth_ += by_; }
+    ~DepthGuard() { depth_ -= by_; }
+    DepthGuard(const DepthGuard&) = delete;
+    DepthGuard& operator=(const DepthGuard&) = delete;
+    int& depth_;
+    int by_;
+  };
+
   // a op b op c ... as ((a op b) op c).
   ast::Expr ConvertLeftAssociative(const Node& node) {
+    const int operators = static_cast<int>(node.children.size() / 2);
+    if (expression_depth_ + operators > kMaxExpressionDepth) {
+      diagnostics_.Consume([&] {
+        auto d = MakeDiagnostic(
+            DiagnosticKind::kNestingTooDeep, {file_, node.begin, node.begin + 1},
+            fmt::format("an expression is more than {} operations deep", kMaxExpressionDepth),
+            fmt::format("{} operations chained here", operators));
+        d.help = "split the expression into several `let`s";
+        return d;
+      }());
+      ast::Expr nothing;  // a number the checker skips, as for an out-of-range number
+      nothing.kind = ast::ExprKind::kNumber;
+      nothing.range = Range(node);
+      nothing.text = std::string(Text(node));
+      nothing.number = std::numeric_limits<double>::quiet_NaN();
+      return nothing;
+    }
+    const DepthGuard chain(expression_depth_, operators);
     ast::Expr left = ConvertExpr(*node.children.at(0));
     for (std::size_t i = 1; i + 1 < node.children.size(); i += 2) {
       ast::Expr combined;
@@ -641,6 +674,7 @@ class Converter {
   std::string_view text_;
   FileId file_;
   DiagnosticConsumer& diagnostics_;
+  int expression_depth_ = 0;
 };
 
 // --- Trivia: comments and blank lines -------------------------------------------------------

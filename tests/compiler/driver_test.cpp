@@ -108,6 +108,32 @@ TEST_F(DriverTest, MissingFileReportsE0107) {
   EXPECT_NE(result.err.find("tests/golden/no_such_file.sled"), std::string::npos) << result.err;
 }
 
+TEST_F(DriverTest, AFolderGivenAsAFileReportsE0107ForEveryCommand) {
+  // A folder opens as a stream and reads as empty text: it must not pass for an empty scenario.
+  for (const char* command : {"check", "fmt", "run", "study"}) {
+    const SledResult result = Sled({command, "tests/golden", "--diagnostics=compact"});
+    EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
+    EXPECT_NE(result.err.find("error[E0107]: cannot read `tests/golden`: it is a folder"),
+              std::string::npos)
+        << command << ": " << result.err;
+  }
+}
+
+TEST_F(DriverTest, RunningAModuleWithoutAScenarioIsAnInputError) {
+  // stdlib modules check clean but hold nothing to simulate.
+  const fs::path module = temp() / "module.sled";
+  WriteText(module, "let seat_height = 300 mm\n");
+  for (const char* command : {"run", "study"}) {
+    const SledResult result =
+        Sled({command, module.string(), "-o", (temp() / "out").string(), "--diagnostics=compact"});
+    EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
+    EXPECT_NE(result.err.find("module.sled:1:1: error[E0206]: `" + module.string() +
+                              "` has no `scenario` to run"),
+              std::string::npos)
+        << command << ": " << result.err;
+  }
+}
+
 TEST_F(DriverTest, FmtCheckAcceptsAFormattedFile) {
   // Format a copy first: whatever the formatter writes must then pass `--check` (idempotence).
   const fs::path copy = temp() / "formatted.sled";

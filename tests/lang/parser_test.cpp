@@ -737,6 +737,13 @@ TEST(DidYouMean, SuggestsTheClosestCandidateWithinAThirdOfTheLength) {
   EXPECT_EQ(DidYouMean("qq", {"kg", "g", "m"}), "");
 }
 
+TEST(DidYouMean, CountsTwoSwappedLettersAsOneEdit) {
+  // "widht" is two substitutions from "width" but one swap; a third of five letters allows one.
+  EXPECT_EQ(ClosestMatch("widht", {"width", "depth"}), "width");
+  EXPECT_EQ(ClosestMatch("plevis", {"pelvis", "thorax"}), "pelvis");
+  EXPECT_EQ(ClosestMatch("tdiwh", {"width"}), std::nullopt);  // a swap is of neighbours only
+}
+
 // --- Sources ----------------------------------------------------------------------------------
 
 TEST(SourceBuffer, LocateCountsLinesAndColumnsFromOne) {
