@@ -127,6 +127,10 @@ struct Block {
   std::vector<Comment> closing_comments;  // comments after the last statement
   SourceRange range;                      // from `{` to `}`
   bool had_syntax_errors = false;         // a statement inside was skipped by recovery
+  // Layout, like comments, and left out of Dump: `{` and `}` were on one line in the source, so
+  // the formatter keeps the block on one line where it can (`time { end = 1 s  output_every = 1 ms
+  // }`).
+  bool one_line = false;
 };
 
 struct File {

@@ -2,6 +2,7 @@
 #include "lang/syntax/lexical.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -141,10 +142,17 @@ void AppendExpr(const ast::Expr& expr, std::string& out) {
       const int level = LevelOf(expr);
       const int left = level == kPowerPrecedence ? kPrimaryPrecedence : level;
       const int right = level == kPowerPrecedence ? kUnaryPrecedence : level + 1;
+      // `^` binds tightest and is written tight, as in `length^2`, except after a unit, where
+      // `2 m^2` would read as the unit m^2.
+      const ast::Expr& base = expr.operands[0];
+      const bool spaced =
+          level != kPowerPrecedence ||
+          ((base.kind == ast::ExprKind::kNumber || base.kind == ast::ExprKind::kVector) &&
+           base.unit.has_value());
       AppendOperand(expr.operands[0], left, out);
-      out += ' ';
+      if (spaced) out += ' ';
       out += expr.op;
-      out += ' ';
+      if (spaced) out += ' ';
       AppendOperand(expr.operands[1], right, out);
       return;
     }
@@ -217,18 +225,52 @@ class Printer {
     }
     const bool has_body = statement.kind == ast::StatementKind::kHeader && statement.block &&
                           !IsEmpty(*statement.block);
+    if (has_body && statement.block->one_line) {
+      if (auto inside = OneLineBody(*statement.block);
+          inside && Columns(line) + 1 + Columns(*inside) + 2 <= kColumnLimit) {
+        line += ' ' + *inside + " }";
+        AppendTrailingComment(statement, line);
+        out_ += line + '\n';
+        return;
+      }
+    }
     if (has_body) {
       out_ += line;
       out_ += '\n';
       PrintBlockBody(*statement.block, depth + 1);
       line = indent + "}";
     }
-    if (statement.trailing_comment) {
-      line += "  //";
-      line += statement.trailing_comment->text;
-    }
+    AppendTrailingComment(statement, line);
     out_ += line;
     out_ += '\n';
+  }
+
+  static void AppendTrailingComment(const ast::Statement& statement, std::string& line) {
+    if (!statement.trailing_comment) return;
+    line += "  //";
+    line += statement.trailing_comment->text;
+  }
+
+  // The statements of a block on one line, two spaces apart (`end = 1 s  output_every = 1 ms`),
+  // or nullopt when one of them cannot share a line: it has a comment or a block of its own, or
+  // its value list wraps.
+  static std::optional<std::string> OneLineBody(const ast::Block& block) {
+    if (!block.closing_comments.empty()) return std::nullopt;
+    std::string inside;
+    for (const ast::Statement& statement : block.statements) {
+      if (!statement.leading_comments.empty() || statement.trailing_comment ||
+          (statement.block && !IsEmpty(*statement.block))) {
+        return std::nullopt;
+      }
+      Printer alone;
+      alone.PrintStatement(statement, 0);
+      std::string text = alone.Take();
+      text.pop_back();  // the newline
+      if (text.find('\n') != std::string::npos) return std::nullopt;
+      if (!inside.empty()) inside += "  ";
+      inside += text;
+    }
+    return inside;
   }
 
   // Appends `keyword target clause... = values {` to `line`, flushing whole lines to the output

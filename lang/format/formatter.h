@@ -2,10 +2,13 @@
 // translator reuse the expression printer to quote values in messages and generated files.
 //
 // Canonical form: two spaces per block level, one statement per line, `}` on its own line and
-// `{}` for an empty block; numbers keep their spelling and units their factor order; binary
-// operators and `->` are spaced, unary minus is not; comments stay where they were attached and
-// at most one blank line separates statements; a value list longer than 100 columns wraps after
-// its commas with a 4-space continuation indent; the text ends with exactly one newline.
+// `{}` for an empty block; a block written on one line (ast::Block::one_line) stays on one line,
+// statements two spaces apart, when it fits in 100 columns and holds no comment and no block that
+// is not empty; numbers keep their spelling and units their factor order; binary operators and
+// `->` are spaced, except `^` (tight unless its base has a unit) and unary minus; comments stay
+// where they were attached and at most one blank line separates statements; a value list longer
+// than 100 columns wraps after its commas with a 4-space continuation indent; the text ends with
+// exactly one newline.
 //
 // Any tree the parser produced formats to text that parses back to the same tree (equal
 // ast::Dump), and formatting is idempotent. A synthetic tree gets parentheses where precedence

@@ -404,6 +404,7 @@ class Converter {
   std::unique_ptr<ast::Block> ConvertBlock(const Node& node) {
     auto block = std::make_unique<ast::Block>();
     block->range = Range(node);
+    block->one_line = Text(node).find('\n') == std::string_view::npos;
     ConvertBlockItems(node, *block);
     return block;
   }

@@ -318,7 +318,7 @@ TEST(BuilderFormat, ArithmeticGetsTheParenthesesTheTextNeeds) {
     EXPECT_EQ(ast::Dump(*parsed), ast::Dump(expr)) << text;
   }
   EXPECT_EQ(lang::Format(((a + b) * 3).ToExpr()), "(1 m + 2 m) * 3");
-  EXPECT_EQ(lang::Format(build::Pow(-a, 2).ToExpr()), "(-1 m) ^ 2");
+  EXPECT_EQ(lang::Format(build::Pow(-a, 2).ToExpr()), "(-1 m)^2");
 }
 
 TEST(BuilderValues, UnitsAndNumbersAreWhatTheParserMakes) {

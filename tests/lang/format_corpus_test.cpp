@@ -2,6 +2,7 @@
 // printed and parsed again; the trees must be equal and a second formatting must change nothing
 // (issue 2: parse(print(ast)) == ast for every file in examples/ and stdlib/).
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -14,9 +15,10 @@
 namespace sled::lang {
 namespace {
 
-std::vector<std::string> CorpusFiles() {
+std::vector<std::string> CorpusFiles(
+    std::initializer_list<const char*> folders = {"examples", "stdlib", "tests/golden"}) {
   std::vector<std::string> files;
-  for (const char* folder : {"examples", "stdlib", "tests/golden"}) {
+  for (const char* folder : folders) {
     const std::filesystem::path root = std::filesystem::path(SLED_SOURCE_ROOT) / folder;
     std::error_code error;
     for (auto it = std::filesystem::recursive_directory_iterator(root, error);
@@ -60,6 +62,20 @@ TEST(FormatCorpus, EveryFileRoundTripsThroughTheFormatter) {
     ++checked;
   }
   EXPECT_GT(checked, 0);
+}
+
+TEST(FormatCorpus, ExamplesAndTheStandardLibraryAreInCanonicalForm) {
+  // What users copy from should be what `sled fmt` writes: `sled fmt --check` passes on them.
+  int checked = 0;
+  for (const std::string& path : CorpusFiles({"examples", "stdlib"})) {
+    auto text = ReadFile(path);
+    ASSERT_TRUE(text.has_value()) << path;
+    const Parsed parsed = ParseText(path, *text);
+    ASSERT_EQ(parsed.errors, 0) << path;
+    EXPECT_EQ(Format(parsed.file), *text) << path << " is not in canonical form; run sled fmt";
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
 }
 
 }  // namespace

@@ -231,7 +231,7 @@ TEST(FormatTest, DropsBlankLinesAtTheStartOfABlockAndTheFile) {
 }
 
 TEST(FormatTest, SplitsSharedLinesAndSemicolons) {
-  EXPECT_EQ(FormatText("time { end = 200 ms  output_every = 0.1 ms }\nt = 1; u = 2;; v = 3\n"),
+  EXPECT_EQ(FormatText("time {\n  end = 200 ms  output_every = 0.1 ms\n}\nt = 1; u = 2;; v = 3\n"),
             "time {\n"
             "  end = 200 ms\n"
             "  output_every = 0.1 ms\n"
@@ -241,9 +241,25 @@ TEST(FormatTest, SplitsSharedLinesAndSemicolons) {
             "v = 3\n");
 }
 
+TEST(FormatTest, KeepsABlockWrittenOnOneLineOnOneLine) {
+  // Statements two spaces apart, one space inside the braces, a trailing comment after them.
+  EXPECT_EQ(FormatText("time {end=200 ms;output_every=0.1 ms}  // short\n"
+                       "ellipsoid { semi_axes = (1,2,3) mm }\n"),
+            "time { end = 200 ms  output_every = 0.1 ms }  // short\n"
+            "ellipsoid { semi_axes = (1, 2, 3) mm }\n");
+}
+
+TEST(FormatTest, BreaksAOneLineBlockThatCannotStayOnOneLine) {
+  // Past the column limit, around a comment, or around a block that is not empty.
+  const std::string long_values = "a { b = " + std::string(90, 'x') + "  c = 1 }\n";
+  EXPECT_EQ(FormatText(long_values), "a {\n  b = " + std::string(90, 'x') + "\n  c = 1\n}\n");
+  EXPECT_EQ(FormatText("a { b = 1  // why\n}\n"), "a {\n  b = 1  // why\n}\n");
+  EXPECT_EQ(FormatText("a { b { c = 1 }  d = 2 }\n"), "a {\n  b { c = 1 }\n  d = 2\n}\n");
+}
+
 TEST(FormatTest, PutsEachTableRowOnItsOwnLine) {
   EXPECT_EQ(FormatText("belt lap {\n"
-                       "force = table(strain -> force) { 0 -> 0 N  0.1 -> 8 kN }\n"
+                       "force = table(strain -> force) {\n 0 -> 0 N  0.1 -> 8 kN\n}\n"
                        "}\n"),
             "belt lap {\n"
             "  force = table(strain -> force) {\n"
@@ -251,20 +267,28 @@ TEST(FormatTest, PutsEachTableRowOnItsOwnLine) {
             "    0.1 -> 8 kN\n"
             "  }\n"
             "}\n");
+  // A table written on one line stays so.
+  EXPECT_EQ(FormatText("f = table(strain -> force) { 0 -> 0 N  0.1 -> 8 kN }\n"),
+            "f = table(strain -> force) { 0 -> 0 N  0.1 -> 8 kN }\n");
 }
 
 TEST(FormatTest, IndentsNestedBlocksAndPrintsEmptyBlocksOnOneLine) {
-  EXPECT_EQ(FormatText("a { b { c {   } } d { } }"),
+  EXPECT_EQ(FormatText("a {\n b {\n c {   }\n }\n d { }\n}"),
             "a {\n"
             "  b {\n"
             "    c {}\n"
             "  }\n"
             "  d {}\n"
             "}\n");
+  EXPECT_EQ(FormatText("a { b { c {   } } d { } }"),
+            "a {\n"
+            "  b { c {} }\n"
+            "  d {}\n"
+            "}\n");
 }
 
 TEST(FormatTest, PrintsHeadersWithTargetsAndClauses) {
-  EXPECT_EQ(FormatText("joint   lumbar:ball(pelvis->abdomen){at pelvis=(0,0,120)mm}\n"
+  EXPECT_EQ(FormatText("joint   lumbar:ball(pelvis->abdomen){\nat pelvis=(0,0,120)mm}\n"
                        "import std.humans.male50   as occupant\n"
                        "scenario \"s\" on a with b at (1,2,3) mm as c = 1,2\n"),
             "joint lumbar : ball(pelvis -> abdomen) {\n"
@@ -295,15 +319,21 @@ TEST(FormatTest, WritesNegativeUnitExponents) {
             "d = 1 m*s^2\n");
 }
 
-TEST(FormatTest, SpacesOperatorsButNotUnaryMinus) {
+TEST(FormatTest, SpacesOperatorsButNotPowersOrUnaryMinus) {
   EXPECT_EQ(FormatText("a = 2*b+c/d-e^2\nb = - x\nc = 2^-3\nd = a--b\ne = (a+b)*(c)\n"
                        "f = a->b->-c\n"),
-            "a = 2 * b + c / d - e ^ 2\n"
+            "a = 2 * b + c / d - e^2\n"
             "b = -x\n"
-            "c = 2 ^ -3\n"
+            "c = 2^-3\n"
             "d = a - -b\n"
             "e = (a + b) * (c)\n"
             "f = a -> b -> -c\n");
+}
+
+TEST(FormatTest, SpacesAPowerOfAQuantityWithAUnit) {
+  // `2 m^2` would be two square metres: the power of `2 m` keeps its spaces.
+  EXPECT_EQ(FormatText("a = 2 m ^ 2\nb = (2 m)^2\nc = x^2 m\n"),
+            "a = 2 m ^ 2\nb = (2 m)^2\nc = x^2 m\n");
 }
 
 TEST(FormatTest, PrintsCallsVectorsAndTrailingCommas) {
@@ -321,7 +351,7 @@ TEST(FormatTest, ReescapesStrings) {
 }
 
 TEST(FormatTest, KeepsATrailingCommentAfterTheClosingBrace) {
-  EXPECT_EQ(FormatText("x { a = 1 }  // after\ny {} // empty\n"),
+  EXPECT_EQ(FormatText("x {\n a = 1 }  // after\ny {} // empty\n"),
             "x {\n"
             "  a = 1\n"
             "}  // after\n"
@@ -404,7 +434,7 @@ TEST(FormatTest, AcceptsWindowsLineEndings) {
 TEST(FormatExprTest, PrintsParsedValuesCanonically) {
   EXPECT_EQ(Format(ParseValueClean("(0,0,-9.81)m/s^2")), "(0, 0, -9.81) m/s^2");
   EXPECT_EQ(Format(ParseValueClean("table(a->b)")), "table(a -> b)");
-  EXPECT_EQ(Format(ParseValueClean("-(1+2)*3^-x")), "-(1 + 2) * 3 ^ -x");
+  EXPECT_EQ(Format(ParseValueClean("-(1+2)*3^-x")), "-(1 + 2) * 3^-x");
   EXPECT_EQ(Format(ParseValueClean("\"a\\\"b\"")), "\"a\\\"b\"");
 }
 
@@ -452,11 +482,11 @@ TEST(FormatExprTest, AddsParenthesesASyntheticTreeNeeds) {
     out.emplace_back(ast::MakeBinary('-', ast::MakeBinary('-', Name("a"), Name("b")), Name("c")),
                      "a - b - c");
     out.emplace_back(ast::MakeBinary('^', ast::MakeBinary('^', Name("a"), Name("b")), Name("c")),
-                     "(a ^ b) ^ c");
+                     "(a^b)^c");
     out.emplace_back(ast::MakeBinary('^', Name("a"), ast::MakeBinary('^', Name("b"), Name("c"))),
-                     "a ^ b ^ c");
-    out.emplace_back(ast::MakeBinary('^', ast::MakeNegation(Name("a")), Name("b")), "(-a) ^ b");
-    out.emplace_back(ast::MakeBinary('^', Name("a"), ast::MakeNegation(Name("b"))), "a ^ -b");
+                     "a^b^c");
+    out.emplace_back(ast::MakeBinary('^', ast::MakeNegation(Name("a")), Name("b")), "(-a)^b");
+    out.emplace_back(ast::MakeBinary('^', Name("a"), ast::MakeNegation(Name("b"))), "a^-b");
     out.emplace_back(ast::MakeNegation(ast::MakeBinary('+', Name("a"), Name("b"))), "-(a + b)");
     out.emplace_back(ast::MakeBinary('*', Name("a"), Arrow(Name("b"), Name("c"))), "a * (b -> c)");
     out.emplace_back(Arrow(Arrow(Name("a"), Name("b")), Name("c")), "(a -> b) -> c");
@@ -475,7 +505,7 @@ TEST(FormatExprTest, AddsParenthesesASyntheticTreeNeeds) {
 TEST(FormatExprTest, SignsANegativeNumberWithoutSpellingAsUnaryMinus) {
   // It reads back as unary minus on a positive number: the same value, not the same tree.
   EXPECT_EQ(Format(Number(-2)), "-2");
-  EXPECT_EQ(Format(ast::MakeBinary('^', Number(-2), Number(2, "2"))), "(-2) ^ 2");
+  EXPECT_EQ(Format(ast::MakeBinary('^', Number(-2), Number(2, "2"))), "(-2)^2");
   EXPECT_EQ(Format(ast::MakeBinary('-', Name("a"), Number(-2))), "a - -2");
 }
 
