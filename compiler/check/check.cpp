@@ -97,8 +97,7 @@ void Checker::DedupingConsumer::Consume(lang::Diagnostic diagnostic) {
   const lang::SourceRange* range = diagnostic.primary_range();
   auto key = std::make_tuple(range ? range->file.value : 0u, range ? range->begin : 0u,
                              diagnostic.message);
-  if (std::find(seen_.begin(), seen_.end(), key) != seen_.end()) return;
-  seen_.push_back(std::move(key));
+  if (!seen_.insert(std::move(key)).second) return;
   next_.Consume(std::move(diagnostic));
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -207,7 +208,7 @@ class Checker {
 
    private:
     lang::DiagnosticConsumer& next_;
-    std::vector<std::tuple<std::uint32_t, std::uint32_t, std::string>> seen_;
+    std::set<std::tuple<std::uint32_t, std::uint32_t, std::string>> seen_;
   };
   DedupingConsumer dedupe_;
   lang::DiagnosticConsumer& diagnostics_;
