@@ -74,6 +74,22 @@ std::vector<std::string> ModulesUnder(const std::string& root, const std::string
   return names;
 }
 
+// "Did you mean" for an import, or else the modules there are (a few of them).
+std::string ModuleHelp(const std::string& wanted, std::vector<std::string> modules) {
+  std::string help = lang::DidYouMean(wanted, modules);
+  if (!help.empty()) return help;
+  if (modules.empty()) {
+    return "`import std.a.b` reads stdlib/a/b.sled; `import a.b` reads a/b.sled next to the scene";
+  }
+  std::sort(modules.begin(), modules.end());
+  constexpr std::size_t kListed = 6;
+  std::string listed;
+  for (std::size_t i = 0; i < std::min(modules.size(), kListed); ++i) {
+    listed += (i > 0 ? ", `" : "`") + modules[i] + "`";
+  }
+  return fmt::format("modules here: {}{}", listed, modules.size() > kListed ? ", ..." : "");
+}
+
 }  // namespace
 
 std::string_view EntityKindName(EntityKind kind) {
@@ -205,6 +221,7 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
         diagnostic.labels.push_back({found->range, "declared here", false});
       }
       diagnostic.help = lang::DidYouMean(path.PathText(), NamesOfKinds(scope, kinds));
+      if (diagnostic.help.empty()) diagnostic.help = fmt::format("name a {} here", expected);
       diagnostics_.Consume(std::move(diagnostic));
     }
     return nullptr;
@@ -263,8 +280,8 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
       Report(DiagnosticKind::kUnknownModule, statement.target->range,
              fmt::format("no module `{}`", statement.target->PathText()),
              fmt::format("`{}` does not exist", file_path),
-             lang::DidYouMean(statement.target->PathText(),
-                              standard ? ModulesUnder(root, "std.") : ModulesUnder(root, "")));
+             ModuleHelp(statement.target->PathText(),
+                        standard ? ModulesUnder(root, "std.") : ModulesUnder(root, "")));
       return;
     }
     lang::ParseOptions parse_options;

@@ -197,7 +197,8 @@ void Checker::CheckBodyDetails() {
       Report(DiagnosticKind::kJointToItself, arrow.range,
              fmt::format("joint `{}` connects `{}` to itself", joint.name,
                          arrow.operands[0].PathText()),
-             "the same segment twice");
+             "the same segment twice",
+             "a joint connects a parent to another segment: (parent -> child)");
       continue;
     }
     joint.parent = parent->index;

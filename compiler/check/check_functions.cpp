@@ -142,7 +142,7 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
            fmt::format("`{}` expects a function {}, a constant {}{}, found {}", what,
                        Signature(argument, result), DescribeDimension(result), slope,
                        DescribeDimension(value->dimension)),
-           "wrong dimension", MismatchHelp(result / argument, value->dimension));
+           "wrong dimension", DimensionHelp(result / argument, value->dimension));
     return std::nullopt;
   }
   if (statement.block) {

@@ -110,7 +110,9 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       if (name.empty()) continue;
       if (statement->values.size() != 1 || !statement->clauses.empty() || statement->block) {
         Report(DiagnosticKind::kMalformedStatement, statement->range,
-               fmt::format("write `{} {} = value`", keyword, name), "not a single value");
+               fmt::format("write `{} {} = value`", keyword, name), "not a single value",
+               fmt::format("a `{}` names one value; declare several with one `{}` each", keyword,
+                           keyword));
         continue;
       }
       auto parameter = std::make_unique<Parameter>();
@@ -278,7 +280,8 @@ CallArguments ReadArguments(Checker& checker, const ast::Expr& call,
     if (!result.named.count(name)) {
       checker.Report(DiagnosticKind::kMissingArgument, call.range,
                      fmt::format("`{}` needs the argument `{}`", call.PathText(), name),
-                     fmt::format("`{}` missing", name));
+                     fmt::format("`{}` missing", name),
+                     fmt::format("add `{} = ...` to the call", name));
       result.ok = false;
     }
   }

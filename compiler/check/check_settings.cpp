@@ -26,7 +26,7 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
       if (run.end > 0 && !(run.start < run.end)) {
         Report(DiagnosticKind::kInvalidRunSettings, statement->range,
                fmt::format("the run starts at {:g} s but ends at {:g} s", run.start, run.end),
-               "start not before end");
+               "start not before end", "make `start` earlier than `end`, or leave it out (0 s)");
       } else if (run.output_every > 0 && run.end > 0 && run.output_every > run.end - run.start) {
         Report(DiagnosticKind::kInvalidRunSettings, One(bound, "output_every")->range,
                fmt::format("the output step {:g} s is longer than the run ({:g} s)",

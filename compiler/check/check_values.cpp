@@ -294,7 +294,10 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
           Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
                  fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
                              DescribeMismatch(left->dimension, right->dimension)),
-                 "dimensions differ", MismatchHelp(left->dimension, right->dimension));
+                 "dimensions differ",
+                 MismatchHelp(left->dimension, right->dimension).empty()
+                     ? "both sides of `+` and `-` need the same dimension; check their units"
+                     : MismatchHelp(left->dimension, right->dimension));
           return std::nullopt;
         }
         result.dimension = left_zero ? right->dimension : left->dimension;
@@ -319,7 +322,8 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
         const double scalar = right_vector ? left->components[0] : right->components[0];
         if (expr.op == '/' && scalar == 0.0) {
           Report(DiagnosticKind::kDivisionByZero, expr.operands[1].range,
-                 "division by zero in a constant expression", "this is zero");
+                 "division by zero in a constant expression", "this is zero",
+                 "the divisor evaluates to zero; check the value and the names it uses");
           return std::nullopt;
         }
         result.dimension = expr.op == '*' ? left->dimension * right->dimension
@@ -347,7 +351,11 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
                power.status == ArithmeticStatus::kDivisionByZero
                    ? "zero raised to a negative power"
                    : "a quantity with a unit can only be raised to a whole power up to 9",
-               "invalid power");
+               "invalid power",
+               power.status == ArithmeticStatus::kDivisionByZero
+                   ? "a negative power of zero is infinite; check the base"
+                   : "raise a quantity with a unit to a whole number from -9 to 9; a plain "
+                     "number may take any power");
         return std::nullopt;
       }
       result.components = {power.quantity.value};
@@ -396,7 +404,7 @@ std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& exp
     Report(DiagnosticKind::kDimensionMismatch, expr.range,
            fmt::format("`{}` expects {}, found {}", what, DescribeDimension(dimension),
                        DescribeDimension(value->dimension)),
-           value->bare ? "no unit" : "wrong dimension", MismatchHelp(dimension, value->dimension));
+           value->bare ? "no unit" : "wrong dimension", DimensionHelp(dimension, value->dimension));
     return std::nullopt;
   }
   if (!std::isfinite(value->components[0])) {
@@ -422,7 +430,7 @@ std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, D
     Report(DiagnosticKind::kDimensionMismatch, expr.range,
            fmt::format("`{}` expects {}, found {}", what, DescribeDimension(dimension),
                        DescribeDimension(value->dimension)),
-           value->bare ? "no unit" : "wrong dimension", MismatchHelp(dimension, value->dimension));
+           value->bare ? "no unit" : "wrong dimension", DimensionHelp(dimension, value->dimension));
     return std::nullopt;
   }
   for (double component : value->components) {

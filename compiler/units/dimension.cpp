@@ -123,4 +123,11 @@ std::string MismatchHelp(Dimension expected, Dimension found) {
   return {};
 }
 
+std::string DimensionHelp(Dimension expected, Dimension found) {
+  std::string help = MismatchHelp(expected, found);
+  if (!help.empty()) return help;
+  return fmt::format("give a value in {}; check its unit and the names it uses",
+                     DescribeDimension(expected));
+}
+
 }  // namespace sled::compiler

@@ -91,4 +91,7 @@ std::string DescribeMismatch(Dimension a, Dimension b);
 // nothing useful to add: it points out a missing unit or a missing or extra angle unit.
 std::string MismatchHelp(Dimension expected, Dimension found);
 
+// MismatchHelp, or else a general hint naming the expected dimension: never empty.
+std::string DimensionHelp(Dimension expected, Dimension found);
+
 }  // namespace sled::compiler
