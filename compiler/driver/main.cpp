@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -183,13 +182,10 @@ int RunFormat(const Options& options) {
       }
       continue;
     }
-    if (differs) {
-      std::ofstream out(path, std::ios::binary | std::ios::trunc);
-      out << formatted;
-      if (!out) {
-        std::cerr << fmt::format("sled: cannot write `{}`\n", path);
-        changed_or_failed = true;
-      }
+    std::string why;
+    if (differs && !sled::lang::ReplaceFile(path, formatted, &why)) {
+      std::cerr << fmt::format("sled: cannot write `{}` ({}); it was left unchanged\n", path, why);
+      changed_or_failed = true;
     }
   }
   return changed_or_failed ? kExitInputErrors : kExitOk;
@@ -229,10 +225,9 @@ int RunConvert(const Options& options) {
     std::cout << text;
     return kExitOk;
   }
-  std::ofstream out(options.output_directory, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) {
-    std::cerr << fmt::format("sled: cannot write `{}`\n", options.output_directory);
+  std::string why;
+  if (!sled::lang::ReplaceFile(options.output_directory, text, &why)) {
+    std::cerr << fmt::format("sled: cannot write `{}` ({})\n", options.output_directory, why);
     return kExitInputErrors;
   }
   return kExitOk;

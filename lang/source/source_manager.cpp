@@ -97,6 +97,37 @@ std::string_view SourceManager::Text(const SourceRange& range) const {
   return text.substr(range.begin, range.end - range.begin);
 }
 
+bool ReplaceFile(const std::string& path, std::string_view text, std::string* error) {
+  namespace fs = std::filesystem;
+  std::error_code code;
+  fs::path target(path);
+  if (fs::is_symlink(target, code)) target = fs::canonical(target, code);
+  if (code) {
+    *error = code.message();
+    return false;
+  }
+  const fs::path temporary = target.string() + ".sled-tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.close();
+    if (!out) {
+      fs::remove(temporary, code);
+      *error = "the text could not be written";
+      return false;
+    }
+  }
+  const fs::file_status existing = fs::status(target, code);
+  if (!code && fs::exists(existing)) fs::permissions(temporary, existing.permissions(), code);
+  fs::rename(temporary, target, code);
+  if (code) {
+    *error = code.message();
+    fs::remove(temporary, code);
+    return false;
+  }
+  return true;
+}
+
 std::optional<std::string> ReadFile(const std::string& path) {
   // A directory opens as a stream on Linux and reads as empty text, which would pass for an
   // empty file.

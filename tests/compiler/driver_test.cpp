@@ -134,6 +134,25 @@ TEST_F(DriverTest, RunningAModuleWithoutAScenarioIsAnInputError) {
   }
 }
 
+TEST_F(DriverTest, FmtReplacesTheFileBehindALinkAndKeepsItsPermissions) {
+  // fmt writes a temporary file and renames it over the original, so a failed write cannot
+  // leave a half-written scenario; the rename must not replace a link or widen permissions.
+  const fs::path file = temp() / "scene.sled";
+  const fs::path link = temp() / "link.sled";
+  WriteText(file, "let a = 2*b\n");
+  fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  fs::create_symlink(file, link);
+  const SledResult result = Sled({"fmt", link.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(ReadText(file), "let a = 2 * b\n");
+  EXPECT_EQ(fs::status(file).permissions() & fs::perms::all,
+            fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+  for (const auto& entry : fs::directory_iterator(temp())) {
+    EXPECT_EQ(entry.path().string().find(".sled-tmp"), std::string::npos) << entry.path();
+  }
+}
+
 TEST_F(DriverTest, FmtCheckAcceptsAFormattedFile) {
   // Format a copy first: whatever the formatter writes must then pass `--check` (idempotence).
   const fs::path copy = temp() / "formatted.sled";
