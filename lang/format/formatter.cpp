@@ -251,6 +251,16 @@ class Printer {
     line += statement.trailing_comment->text;
   }
 
+  // Whether a statement can follow another on one line without its start reading as part of the
+  // other's value: `b = 100  ms` is `b = 100 ms`, and `5  -1 -> 2` is `5 - 1`. A `name = value`
+  // attribute and a row that starts with a digit cannot.
+  static bool StartsApart(const ast::Statement& statement, std::string_view text) {
+    if (statement.kind == ast::StatementKind::kRow) {
+      return !text.empty() && text[0] >= '0' && text[0] <= '9';
+    }
+    return !statement.target && statement.clauses.empty() && statement.has_value;
+  }
+
   // The statements of a block on one line, two spaces apart (`end = 1 s  output_every = 1 ms`),
   // or nullopt when one of them cannot share a line: it has a comment or a block of its own, or
   // its value list wraps.
@@ -267,6 +277,7 @@ class Printer {
       std::string text = alone.Take();
       text.pop_back();  // the newline
       if (text.find('\n') != std::string::npos) return std::nullopt;
+      if (!inside.empty() && !StartsApart(statement, text)) return std::nullopt;
       if (!inside.empty()) inside += "  ";
       inside += text;
     }

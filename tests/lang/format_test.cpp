@@ -255,6 +255,11 @@ TEST(FormatTest, BreaksAOneLineBlockThatCannotStayOnOneLine) {
   EXPECT_EQ(FormatText(long_values), "a {\n  b = " + std::string(90, 'x') + "\n  c = 1\n}\n");
   EXPECT_EQ(FormatText("a { b = 1  // why\n}\n"), "a {\n  b = 1  // why\n}\n");
   EXPECT_EQ(FormatText("a { b { c = 1 }  d = 2 }\n"), "a {\n  b { c = 1 }\n  d = 2\n}\n");
+  // Or where the next statement would read as part of the value before it (fuzzer finding:
+  // `end = 100 ;ms` joined by spaces is `end = 100 ms`), or a row starts with a minus.
+  EXPECT_EQ(FormatText("a { b = 100 ;ms }\n"), "a {\n  b = 100\n  ms\n}\n");
+  EXPECT_EQ(FormatText("t { 0 -> 5;-1 -> 2 }\n"), "t {\n  0 -> 5\n  -1 -> 2\n}\n");
+  EXPECT_EQ(FormatText("a { b = 1 m  output x }\n"), "a {\n  b = 1 m\n  output x\n}\n");
 }
 
 TEST(FormatTest, PutsEachTableRowOnItsOwnLine) {
