@@ -101,10 +101,13 @@ bool ReplaceFile(const std::string& path, std::string_view text, std::string* er
   namespace fs = std::filesystem;
   std::error_code code;
   fs::path target(path);
-  if (fs::is_symlink(target, code)) target = fs::canonical(target, code);
-  if (code) {
-    *error = code.message();
-    return false;
+  // A path that does not exist yet (a new file) is no link; is_symlink would report it missing.
+  if (fs::is_symlink(fs::symlink_status(target, code))) {
+    target = fs::canonical(target, code);
+    if (code) {
+      *error = code.message();
+      return false;
+    }
   }
   const fs::path temporary = target.string() + ".sled-tmp";
   {
