@@ -1,5 +1,7 @@
 #include "runtime/energy.h"
 
+#include <cmath>
+
 #include "runtime/constraints.h"
 
 namespace sled::runtime {
@@ -36,6 +38,7 @@ SegmentPower PowerIntoSegments(const Model& model, const Data& data) {
     const auto va = static_cast<std::size_t>(model.v_address[s]);
     const auto dof = static_cast<std::size_t>(model.v_count[s]);
     for (std::size_t k = va; k < va + dof; ++k) joint += data.generalized_force[k] * data.v[k];
+    const double before = power.elements + power.constraints;
     power.elements += MirrorWeight(model, s) * (applied.dot(data.velocity[s]) + joint);
     // A root jointed to a moving vehicle: the joint's reaction (the wrench the vehicle transmits)
     // works on the vehicle's motion at the segment; its part along the joint's free axes is the
@@ -55,6 +58,10 @@ SegmentPower PowerIntoSegments(const Model& model, const Data& data) {
     if (data.constraints) {
       power.constraints +=
           MirrorWeight(model, s) * data.constraints->segment_wrench[s].dot(data.velocity[s]);
+    }
+    if (power.not_finite < 0 && std::isfinite(before) &&
+        !std::isfinite(power.elements + power.constraints)) {
+      power.not_finite = static_cast<std::ptrdiff_t>(s);
     }
   }
   return power;

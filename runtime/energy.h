@@ -5,6 +5,8 @@
 // integration error; the residual measures it.
 #pragma once
 
+#include <cstddef>
+
 #include "runtime/data.h"
 #include "runtime/energy_balance.h"
 
@@ -25,6 +27,7 @@ double PotentialEnergy(const Model& model, const Data& data);
 struct SegmentPower {
   double elements = 0.0;     // force elements and joint characteristics
   double constraints = 0.0;  // constraints, and root joints on vehicles (ideal: they absorb none)
+  std::ptrdiff_t not_finite = -1;  // the first segment whose power is not finite, for a failure
 };
 SegmentPower PowerIntoSegments(const Model& model, const Data& data);
 

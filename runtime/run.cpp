@@ -10,6 +10,7 @@
 #include "runtime/energy.h"
 #include "runtime/integrate/make_integrator.h"
 #include "runtime/outputs.h"
+#include "runtime/state_owner.h"
 #include "runtime/system.h"
 
 namespace sled::runtime {
@@ -112,6 +113,9 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     if (result.status != IntegratorStatus::kOk) {
       fail(system.failure(), result.t);
       if (summary.failure.cause.empty()) summary.failure.cause = result.reason;
+      if (result.component >= 0) {
+        NameStateOwner(model, static_cast<std::size_t>(result.component), summary.failure);
+      }
       return false;
     }
     if (!Forward(model, data, &failure)) {

@@ -14,6 +14,7 @@
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/restraint/belts.h"
+#include "runtime/state_owner.h"
 
 namespace sled::runtime {
 
@@ -83,10 +84,17 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
   rates[0] = power.elements;
   rates[1] = power.constraints;
   rates[2] = data_.vehicle_power;
-  for (double value : dy) {
-    if (!std::isfinite(value)) {
+  for (std::size_t i = 0; i < dy.size(); ++i) {
+    if (!std::isfinite(dy[i])) {
       failure_.time = t;
       failure_.cause = "the state derivative is not finite";
+      NameStateOwner(model_, i, failure_);
+      if (failure_.where.empty() && power.not_finite >= 0) {
+        const auto s = static_cast<std::size_t>(power.not_finite);
+        failure_.where = model_.segment_name[s];
+        failure_.source = model_.segment_source[s];
+        failure_.cause = "the power the forces deliver to it is not finite";
+      }
       return false;
     }
   }

@@ -188,6 +188,27 @@ std::optional<CompiledScene> CompileScene(const RunCommandOptions& options) {
   return compiled;
 }
 
+void LocateFailure(const runtime::Model& model, runtime::Failure& failure) {
+  if (failure.where.empty()) return;
+  for (std::size_t s = 0; s < model.nsegment() && failure.source.file.empty(); ++s) {
+    if (model.segment_name[s] == failure.where) {
+      failure.source = model.segment_source[s];
+    } else if (model.joint_name[s] == failure.where) {
+      failure.source = model.joint_source[s];
+    }
+  }
+}
+
+std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure) {
+  LocateFailure(model, failure);
+  return fmt::format(
+      "at t = {:.6g} s{}: {}{}", failure.time,
+      failure.where.empty() ? "" : fmt::format(" in `{}`", failure.where), failure.cause,
+      failure.source.file.empty() ? ""
+                                  : fmt::format(" ({}:{}:{})", failure.source.file,
+                                                failure.source.line, failure.source.column));
+}
+
 int RunCommand(const RunCommandOptions& options) {
   std::optional<CompiledScene> compiled = CompileScene(options);
   if (!compiled) return kExitInputErrors;
@@ -264,16 +285,7 @@ int RunCommand(const RunCommandOptions& options) {
   if (!resume.empty()) run_options.resume = &checkpoint;
   runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
   if (options.progress) std::fprintf(stderr, "\r%30s\r", "");
-  // Name the scenario line of the segment or joint that failed.
-  if (summary.failed) {
-    for (std::size_t s = 0; s < model.nsegment(); ++s) {
-      if (model.segment_name[s] == summary.failure.where) {
-        summary.failure.source = model.segment_source[s];
-      } else if (model.joint_name[s] == summary.failure.where) {
-        summary.failure.source = model.joint_source[s];
-      }
-    }
-  }
+  if (summary.failed) LocateFailure(model, summary.failure);
 
   // Filtered channels and injury criteria, from the rows there are (up to a failure).
   runtime::post::FilteredChannels filtered =
@@ -317,15 +329,9 @@ int RunCommand(const RunCommandOptions& options) {
   if (options.report && ReportCommand(directory, "") != kExitOk) return kExitInputErrors;
   PrintCriteria(criteria);
   if (summary.failed) {
-    const runtime::Failure& f = summary.failure;
     std::cerr << fmt::format(
-        "sled: the simulation failed at t = {:.6g} s{}: {}{}\n  outputs up to the failure are in "
-        "`{}`\n",
-        f.time, f.where.empty() ? "" : fmt::format(" in `{}`", f.where), f.cause,
-        f.source.file.empty()
-            ? ""
-            : fmt::format(" ({}:{}:{})", f.source.file, f.source.line, f.source.column),
-        directory);
+        "sled: the simulation failed {}\n  outputs up to the failure are in `{}`\n",
+        DescribeFailure(model, summary.failure), directory);
     return kExitNumericalFailure;
   }
   std::cerr << fmt::format(

@@ -14,6 +14,7 @@
 
 #include "compiler/check/checked_scenario.h"
 #include "compiler/lower/lower.h"
+#include "runtime/data.h"
 
 namespace sled::driver {
 
@@ -55,6 +56,11 @@ struct CompiledScene {
   compiler::Lowered lowered;
 };
 std::optional<CompiledScene> CompileScene(const RunCommandOptions& options);
+
+// Sets a failure's scene line from the segment or joint it names, when the runtime gave none.
+void LocateFailure(const runtime::Model& model, runtime::Failure& failure);
+// A numerical failure in one line: `at t = 0.0638 s in `ball.sphere`: why (scene.sled:6:13)`.
+std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure);
 
 int RunCommand(const RunCommandOptions& options);
 

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "compiler/report/svg_plot.h"
+#include "runtime/output_writer.h"
 #include "runtime/post/injury_criteria.h"
 #include "runtime/post/series_error.h"
 #include "runtime/run.h"
@@ -20,6 +21,7 @@ namespace {
 
 constexpr int kExitOk = 0;
 constexpr int kExitInputErrors = 1;
+constexpr int kExitNumericalFailure = 3;
 
 // One run of the scene with a method and a relative tolerance (the absolute tolerance keeps
 // the scene's ratio to it).
@@ -72,15 +74,15 @@ std::string Measure(double value, double floor = 0.0) {
   return fmt::format("{:.2e}", value);
 }
 
-std::string Row(const Sample& s, double floor) {
+std::string Row(const runtime::Model& model, const Sample& s, double floor) {
   return fmt::format("{:<12} {:>8.0e} {:>9.4f} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}{}",
                      s.method, s.tolerance, s.wall_seconds, s.summary.stats.steps,
                      s.summary.stats.rejected, s.summary.stats.evaluations,
                      Measure(s.error.overall, floor), Measure(s.error.position, floor),
                      Measure(s.error.peak_acceleration), Measure(s.error.criteria),
-                     s.summary.failed ? fmt::format("  failed at {:.4g} s: {}",
-                                                    s.summary.failure.time, s.summary.failure.cause)
-                                      : "");
+                     s.summary.failed
+                         ? fmt::format("  failed {}", DescribeFailure(model, s.summary.failure))
+                         : "");
 }
 
 // The work-precision plot: log10 of the error against log10 of the run time, one line per
@@ -139,10 +141,25 @@ int StudyCommand(const StudyOptions& options) {
   const double tightest = ladder.back() / 100;
   std::cerr << fmt::format("sled: reference: dopri5 at {:.0e}\n", tightest);
   const Sample reference = RunSample(scene, "dopri5", tightest);
+  std::string directory = options.scene.output_directory;
+  if (directory.empty()) {
+    directory = std::filesystem::path(options.scene.file).stem().string() + "-study";
+  }
   if (reference.summary.failed) {
-    std::cerr << fmt::format("sled: the reference run failed at t = {:.6g} s: {}\n",
-                             reference.summary.failure.time, reference.summary.failure.cause);
-    return kExitInputErrors;
+    // Nothing to measure against: a numerical failure of the scene itself. Its rows up to the
+    // failure are kept for a look at what went wrong.
+    std::cerr << fmt::format("sled: the reference run failed {}\n",
+                             DescribeFailure(scene, reference.summary.failure));
+    std::error_code code;
+    std::filesystem::create_directories(directory, code);
+    const std::string path = (std::filesystem::path(directory) / "reference.csv").string();
+    std::string error;
+    if (code || !runtime::WriteTimeSeriesCsv(path, reference.series, &error)) {
+      std::cerr << fmt::format("sled: cannot write into `{}`\n", directory);
+      return kExitInputErrors;
+    }
+    std::cerr << fmt::format("  its outputs up to the failure are in `{}`\n", path);
+    return kExitNumericalFailure;
   }
   Sample check = RunSample(scene, "exponential", tightest);
   Compare(scene, check, reference);
@@ -162,7 +179,7 @@ int StudyCommand(const StudyOptions& options) {
                            "method", "tol", "time [s]", "steps", "rej", "evals", "all", "position",
                            "peak acc", "criteria");
   const double floor = check.error.overall;
-  for (const Sample& s : samples) std::cout << Row(s, floor) << '\n';
+  for (const Sample& s : samples) std::cout << Row(scene, s, floor) << '\n';
   std::cout << fmt::format(
       "\nerrors are relative: a channel's largest deviation from the reference over the largest "
       "range of its kind (all channels, positions), a peak's or a criterion's relative error\n"
@@ -175,10 +192,6 @@ int StudyCommand(const StudyOptions& options) {
       own.method, own.tolerance, Measure(own.error.overall, floor), Measure(own.error.criteria),
       own.wall_seconds, own.summary.stats.accumulated_error);
 
-  std::string directory = options.scene.output_directory;
-  if (directory.empty()) {
-    directory = std::filesystem::path(options.scene.file).stem().string() + "-study";
-  }
   std::error_code code;
   std::filesystem::create_directories(directory, code);
   std::ofstream csv(std::filesystem::path(directory) / "study.csv");

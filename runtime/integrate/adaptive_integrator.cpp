@@ -22,6 +22,16 @@ bool AllFinite(std::span<const double> values) {
   return true;
 }
 
+// The index of the first value of `first`, else of `second`, that is not finite; -1 if none.
+std::ptrdiff_t FirstNotFinite(std::span<const double> first, std::span<const double> second) {
+  for (const std::span<const double> values : {first, second}) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!std::isfinite(values[i])) return static_cast<std::ptrdiff_t>(i);
+    }
+  }
+  return -1;
+}
+
 // Stretch the step by up to 1% to land on the target rather than leave a sliver (dopri5.f).
 constexpr double kLandingStretch = 1.01;
 
@@ -48,10 +58,10 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   SerializeHistory(archive);
 }
 
-double AdaptiveIntegrator::ErrorNorm(std::span<const double> error) const {
+double AdaptiveIntegrator::ErrorNorm(std::span<const double> error) {
   return WeightedRmsNorm(error.first(controlled_), std::span<const double>(y_).first(controlled_),
                          std::span<const double>(y1_).first(controlled_),
-                         options_.relative_tolerance, options_.absolute_tolerance);
+                         options_.relative_tolerance, options_.absolute_tolerance, &largest_);
 }
 
 void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const double> y0,
@@ -176,6 +186,7 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   if (!AllFinite(y_)) {
     result->status = IntegratorStatus::kNotFinite;
     result->reason = "the state is not finite";
+    result->component = FirstNotFinite(y_, {});
     return false;
   }
   if (!Evaluate(t_, y_, f0_)) {
@@ -186,6 +197,7 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   if (!AllFinite(f0_)) {
     result->status = IntegratorStatus::kNotFinite;
     result->reason = "the derivative is not finite at the start";
+    result->component = FirstNotFinite(f0_, {});
     return false;
   }
   controller_.Restart();
@@ -213,6 +225,10 @@ AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) 
     case Failure::kNotFinite:
       result.status = IntegratorStatus::kNotFinite;
       result.reason = "the state or its derivative became NaN or infinite";
+      result.component = FirstNotFinite(y1_, f1_);
+      if (result.component < 0 && std::isnan(largest_.weighted)) {
+        result.component = static_cast<std::ptrdiff_t>(largest_.index);
+      }
       break;
     case Failure::kErrorTest:
     case Failure::kNone:
@@ -220,6 +236,7 @@ AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) 
       result.reason = fmt::format(
           "the error test failed at the minimum step (step {:.3g}, weighted error {:.3g})", h,
           error);
+      if (largest_.weighted >= 0) result.component = static_cast<std::ptrdiff_t>(largest_.index);
       break;
   }
   return result;
@@ -253,6 +270,7 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
 
     double error = 0.0;
     Failure failure = Failure::kNone;
+    largest_ = {};
     if (!TryStep(h, &error)) {
       failure = Failure::kEvaluation;
     } else if (!AllFinite(y1_) || std::isnan(error)) {

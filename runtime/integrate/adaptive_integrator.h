@@ -73,7 +73,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
 
   // The weighted RMS norm (error_norm.h) of a local error estimate for the step from y_ to
   // y1_, over the components the system's error control measures (ControlledSize).
-  double ErrorNorm(std::span<const double> error) const;
+  // Also notes the component with the largest weighted error of the attempt, for a failure.
+  double ErrorNorm(std::span<const double> error);
 
   // Calls Derivative and counts it.
   bool Evaluate(double t, std::span<const double> y, std::span<double> dy);
@@ -115,6 +116,7 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   bool restart_pending_ = true;
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state
+  LargestComponent largest_;       // of the error estimates of the attempt under way
 };
 
 }  // namespace sled::runtime

@@ -13,7 +13,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0,
                        std::span<const double> y1, double relative_tolerance,
-                       double absolute_tolerance) {
+                       double absolute_tolerance, LargestComponent* largest) {
   const std::size_t n = error.size();
   if (n == 0) return 0.0;
   double sum = 0.0;
@@ -25,6 +25,10 @@ double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0
     const double scaled =
         weight > 0.0 ? error[i] / weight : (error[i] == 0.0 ? 0.0 : error[i] * kInfinity);
     sum += scaled * scaled;
+    if (largest != nullptr && !std::isnan(largest->weighted) &&
+        (std::isnan(scaled) || std::abs(scaled) > largest->weighted)) {
+      *largest = {i, std::abs(scaled)};
+    }
   }
   return std::sqrt(sum / static_cast<double>(n));
 }

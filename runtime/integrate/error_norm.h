@@ -2,6 +2,7 @@
 // and one PI controller, so the methods differ only in how they estimate the local error.
 #pragma once
 
+#include <cstddef>
 #include <span>
 
 namespace sled::runtime {
@@ -9,9 +10,15 @@ namespace sled::runtime {
 // sqrt(mean_i (e_i / w_i)^2) with w_i = atol + rtol * max(|y0_i|, |y1_i|): the error of a step
 // from y0 to y1 measured in units of the tolerance (1 = exactly the tolerance). Hairer's norm.
 // NaN in the error or the states yields NaN, which every caller treats as a failed test.
+// With `largest`, also the component whose weighted error |e_i / w_i| is largest (a NaN one
+// counts as largest), so a failed step can say where it failed.
+struct LargestComponent {
+  std::size_t index = 0;
+  double weighted = -1.0;  // |e_i / w_i| (NaN when the component's error is NaN)
+};
 double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0,
                        std::span<const double> y1, double relative_tolerance,
-                       double absolute_tolerance);
+                       double absolute_tolerance, LargestComponent* largest = nullptr);
 
 // The RMS of the weights w_i above: the absolute size of "one tolerance" for the state y, used
 // to turn the weighted local errors back into an absolute accumulated-error estimate.

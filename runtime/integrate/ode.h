@@ -98,6 +98,9 @@ struct AdvanceResult {
   IntegratorStatus status = IntegratorStatus::kOk;
   double t = 0.0;  // where the integration stopped (the target time when kOk)
   std::string reason;
+  // On a failure, the state component it is in when the integrator can tell (the largest
+  // weighted error at the minimum step, the first value that is not finite); -1 otherwise.
+  std::ptrdiff_t component = -1;
 };
 
 // One interface for every method. Advance integrates from the current (t, y) to t_end, taking

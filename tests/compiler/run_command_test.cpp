@@ -84,6 +84,55 @@ TEST_F(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {
   EXPECT_THAT(ReadText(out / "summary.json"), HasSubstr("\"status\": \"failed\""));
 }
 
+// A ball dropped 20 mm onto a floor whose contact stiffness is `stiffness`, with `integrator`.
+std::string StiffFloor(const std::string& stiffness, const std::string& integrator) {
+  return R"(scenario "stiff floor" {
+  time { end = 100 ms  output_every = 1 ms }
+  )" + integrator +
+         R"(
+  plane floor on ground { corners = (-1, -1, 0) m, (1, -1, 0) m, (-1, 1, 0) m }
+  body ball {
+    segment sphere {
+      mass = 1 kg
+      inertia = (0.001, 0.001, 0.001) kg*m^2
+      ellipsoid { semi_axes = (50, 50, 50) mm }
+    }
+  }
+  contact ball.sphere with floor { force = )" +
+         stiffness + R"( }
+  initial ball { position = (0, 0, 70) mm }
+  output { position ball.sphere }
+}
+)";
+}
+
+TEST_F(RunCommand, AFailureAtTheMinimumStepNamesTheSegmentWhoseErrorIsLargest) {
+  // A contact far too stiff for a 0.1 ms minimum step: the error test fails at first touch
+  // (after 20 mm of free fall, t = 63.9 ms), and the state the error is in is the ball's.
+  WriteText(temp() / "stiff.sled",
+            StiffFloor("1e12 N/m", "integrator dopri5 { tolerance = 1e-6  min_step = 0.1 ms }"));
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "stiff.sled").string(), "-o", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("failed at t = 0.063"));
+  EXPECT_THAT(result.err, HasSubstr("in `ball.sphere`: the error test failed at the minimum step"));
+  EXPECT_THAT(result.err, HasSubstr("stiff.sled:6:"));
+  const std::string csv = ReadText(out / "timeseries.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 65);  // the header and 0 to 63 ms
+}
+
+TEST_F(RunCommand, APowerThatOverflowsNamesTheSegment) {
+  // A stiffness of 1e300 N/m: the contact force stays finite, its power does not.
+  WriteText(temp() / "overflow.sled", StiffFloor("1e300 N/m", "integrator dopri5 {}"));
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "overflow.sled").string(), "-o", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_THAT(result.err,
+              HasSubstr("in `ball.sphere`: the power the forces deliver to it is not finite"));
+  EXPECT_THAT(result.err, HasSubstr("overflow.sled:6:"));
+  EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+}
+
 TEST_F(RunCommand, InputErrorsExitWithOne) {
   WriteText(temp() / "bad.sled", "scenario \"x\" { time { end = 1 kg  output_every = 1 ms } }\n");
   const SledResult result =

@@ -1,6 +1,7 @@
 // `sled study`: the tolerance ladder of every integrator against a tight reference. On the double
 // pendulum the errors fall as the tolerance tightens, the files hold one row per run and a plot
 // line per method, and bad ladders are usage errors.
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -57,6 +58,36 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
   for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
     EXPECT_THAT(svg, HasSubstr(method));
   }
+}
+
+TEST_F(Study, AReferenceThatFailsIsANumericalFailureWithItsRowsKept) {
+  // A contact far too stiff for the scene's 0.1 ms minimum step: every run, the reference too,
+  // fails at first touch (after 20 mm of free fall, t = 63.9 ms).
+  WriteText(temp() / "stiff.sled", R"(scenario "stiff floor" {
+  time { end = 100 ms  output_every = 1 ms }
+  integrator dopri5 { min_step = 0.1 ms }
+  plane floor on ground { corners = (-1, -1, 0) m, (1, -1, 0) m, (-1, 1, 0) m }
+  body ball {
+    segment sphere {
+      mass = 1 kg
+      inertia = (0.001, 0.001, 0.001) kg*m^2
+      ellipsoid { semi_axes = (50, 50, 50) mm }
+    }
+  }
+  contact ball.sphere with floor { force = 1e12 N/m }
+  initial ball { position = (0, 0, 70) mm }
+  output { position ball.sphere }
+}
+)");
+  const fs::path out = temp() / "study";
+  const SledResult result =
+      Sled({"study", (temp() / "stiff.sled").string(), "--tolerances", "1e-3", "-o", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("the reference run failed at t = 0.063"));
+  EXPECT_THAT(result.err, HasSubstr("in `ball.sphere`: the error test failed at the minimum step"));
+  EXPECT_THAT(result.err, HasSubstr("stiff.sled:6:"));
+  const std::string rows = ReadText(out / "reference.csv");
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 65);  // the header and 0 to 63 ms
 }
 
 TEST_F(Study, ABadLadderIsAUsageError) {
