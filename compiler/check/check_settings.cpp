@@ -2,12 +2,20 @@
 // output requests.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
 
 namespace sled::compiler::internal {
+namespace {
+
+// The shortest output step, as a fraction of the end time: a step then spans at least 1e10
+// of the time's rounding steps.
+constexpr double kTimeResolution = 1e-10;
+
+}  // namespace
 
 void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
   RunSettings& run = scenario_.run;
@@ -43,6 +51,17 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
                "too many output rows",
                fmt::format("choose an output step of at least {:g} s",
                            (run.end - run.start) / kMaxOutputRows));
+      } else if (run.output_every > 0 && run.output_every < kTimeResolution * run.end) {
+        // Times are doubles: at t they are resolved to about 2.2e-16 t, and output times (and
+        // the integrator's smallest step, 4.4e-16 t) need that to be a small part of a step.
+        Report(DiagnosticKind::kInvalidRunSettings, One(bound, "output_every")->range,
+               fmt::format("the output step {:g} s is too short for times up to {:g} s, which "
+                           "are resolved only to about {:.2g} s",
+                           run.output_every, run.end,
+                           run.end * std::numeric_limits<double>::epsilon()),
+               "too short for the run's times",
+               fmt::format("start the run near 0 s, or choose an output step of at least {:g} s",
+                           kTimeResolution * run.end));
       }
     } else if (keyword == "integrator") {
       static const std::vector<std::string> kMethods = {"exponential", "dopri5", "rosenbrock"};
