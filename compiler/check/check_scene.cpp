@@ -14,7 +14,7 @@ Vec3 Subtract(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], 
 Vec3 Cross(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double Norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+double Norm(const Vec3& a) { return std::hypot(a[0], a[1], a[2]); }
 
 // The name a declaration gives, or empty after reporting that it has none.
 std::string NameOf(Checker& checker, const ast::Statement& statement) {
@@ -476,7 +476,16 @@ void Checker::CheckSceneElements() {
     if (ok) {
       const Vec3 normal = Cross(Subtract(plane.corners[1], plane.corners[0]),
                                 Subtract(plane.corners[2], plane.corners[0]));
-      if (!(Norm(normal) > 1e-12)) {
+      if (!std::isfinite(Norm(normal))) {
+        // The contact computes with the edges' squares and the area: beyond about 1e154 m
+        // they overflow, and a plane with an infinite normal would never be touched.
+        Report(DiagnosticKind::kValueOutOfRange, corners->range,
+               fmt::format("the corners of plane `{}` are so far apart that its area ({:g} by "
+                           "{:g} m) cannot be computed",
+                           plane.name, Norm(Subtract(plane.corners[1], plane.corners[0])),
+                           Norm(Subtract(plane.corners[2], plane.corners[0]))),
+               "too far apart", "give corners a realistic distance apart");
+      } else if (!(Norm(normal) > 1e-12)) {
         Report(DiagnosticKind::kZeroVector, corners->range,
                fmt::format("the corners of plane `{}` lie on one line", plane.name), "no normal",
                "P1, P2 and P3 must span a parallelogram");

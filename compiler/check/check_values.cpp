@@ -469,8 +469,9 @@ std::optional<Vec3> Checker::ExpectDirection(Scope& scope, const ast::Expr& expr
   }
   auto vector = ExpectVector(scope, expr, dim::kDimensionless, what);
   if (!vector) return std::nullopt;
-  const double length = std::sqrt((*vector)[0] * (*vector)[0] + (*vector)[1] * (*vector)[1] +
-                                  (*vector)[2] * (*vector)[2]);
+  // hypot, not the root of the sum of squares: (1e300, 1e300, 0) is a direction too, and its
+  // squares would overflow to a length of infinity and a direction of zero.
+  const double length = std::hypot((*vector)[0], (*vector)[1], (*vector)[2]);
   if (!(length > 1e-12)) {
     Report(DiagnosticKind::kZeroVector, expr.range,
            fmt::format("`{}` is a direction and cannot be zero", what), "zero length",

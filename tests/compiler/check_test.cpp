@@ -267,6 +267,26 @@ TEST(CheckModel, FrictionAndRestitutionAreInRange) {
             2);
 }
 
+TEST(CheckModel, ADirectionOfHugeComponentsIsStillADirection) {
+  // The squares of 1e300 overflow; the axis is (1, 1, 0) / sqrt(2) all the same.
+  std::string scene = kTwoSegments;
+  scene.replace(scene.find("axis = y"), 8, "axis = (1e300, 1e300, 0)");
+  const Result r = CheckText(Scene(scene));
+  ASSERT_EQ(r.errors, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  const Vec3& axis = r.scenario.joints.at(0).axis;
+  EXPECT_NEAR(axis[0], std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(axis[1], std::sqrt(0.5), 1e-15);
+  EXPECT_EQ(axis[2], 0.0);
+}
+
+TEST(CheckModel, APlaneWhoseAreaOverflowsIsOutOfRange) {
+  const Result r = CheckText(Scene(kTwoSegments + R"(
+  plane floor { corners = (-1e300, -1e300, 0) m, (1e300, -1e300, 0) m, (-1e300, 1e300, 0) m })"));
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0409")));
+  EXPECT_THAT(r.messages,
+              Contains(HasSubstr("are so far apart that its area (2e+300 by 2e+300 m)")));
+}
+
 TEST(CheckTopology, ASegmentWithTwoParentJointsIsReported) {
   const Result r = CheckText(Scene(kTwoSegments.substr(0, kTwoSegments.size() - 4) +
                                    "    segment s3 { mass = 1 kg  inertia = (1, 1, 1) kg*m^2 }\n"
