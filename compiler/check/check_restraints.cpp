@@ -7,6 +7,13 @@
 #include "compiler/check/context.h"
 
 namespace sled::compiler::internal {
+namespace {
+
+// The range of semi-axes whose squares (and the products of two) are normal doubles.
+constexpr double kSmallestSemiAxis = 1e-150;
+constexpr double kLargestSemiAxis = 1e150;
+
+}  // namespace
 
 void Checker::ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind,
                             Ellipsoid& ellipsoid) {
@@ -17,6 +24,16 @@ void Checker::ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kin
         Report(DiagnosticKind::kNonPositiveSemiAxis, One(bound, "semi_axes")->values[0].range,
                fmt::format("ellipsoid `{}` has a semi-axis of {:g} m", ellipsoid.name, axis),
                "not positive", "every semi-axis must be greater than zero");
+        break;
+      }
+      // Contacts and belts compute with the squares of the semi-axes: a square that underflows
+      // to zero or overflows made the surface silently untouchable.
+      if (!(axis >= kSmallestSemiAxis && axis <= kLargestSemiAxis)) {
+        Report(DiagnosticKind::kValueOutOfRange, One(bound, "semi_axes")->values[0].range,
+               fmt::format("ellipsoid `{}` has a semi-axis of {:g} m, but it must be between "
+                           "{:g} m and {:g} m",
+                           ellipsoid.name, axis, kSmallestSemiAxis, kLargestSemiAxis),
+               "out of range", "the squares of semi-axes outside that range do not fit a double");
         break;
       }
     }
