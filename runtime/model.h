@@ -191,6 +191,7 @@ struct Model {
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };
   std::vector<std::string> constraint_name;
+  std::vector<SourcePosition> constraint_source;  // where the scene declares it, for failures
   std::vector<ConstraintKind> constraint_kind;
   std::vector<FrameRef> constraint_first;
   std::vector<FrameRef> constraint_second;

@@ -197,6 +197,9 @@ void LocateFailure(const runtime::Model& model, runtime::Failure& failure) {
       failure.source = model.joint_source[s];
     }
   }
+  for (std::size_t c = 0; c < model.constraint_source.size() && failure.source.file.empty(); ++c) {
+    if (model.constraint_name[c] == failure.where) failure.source = model.constraint_source[c];
+  }
 }
 
 std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure) {

@@ -107,6 +107,7 @@ void LowerConstraints(Lowering& lowering) {
       continue;
     }
     model.constraint_name.push_back(constraint.name);
+    model.constraint_source.push_back(lowering.Position(constraint.range));
     switch (constraint.kind) {
       case Constraint::Kind::kFixedPoint:
         model.constraint_kind.push_back(Model::ConstraintKind::kFixedPoint);

@@ -133,6 +133,35 @@ TEST_F(RunCommand, APowerThatOverflowsNamesTheSegment) {
   EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
 }
 
+TEST_F(RunCommand, AFailureInAConstraintNamesItsLine) {
+  // A spring whose damping of 1e300 N*s/m pulls a body along a sliding constraint: the
+  // constraint forces that hold it overflow at the start.
+  WriteText(temp() / "slider.sled", R"(scenario "slider" {
+  time { end = 100 ms  output_every = 1 ms }
+  body b { segment s { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 } }
+  spring k : b.s -> ground {
+    at b.s = (0, 0, 0) mm
+    at ground = (0, 0, 500) mm
+    stiffness = 20 kN/m
+    damping = 1e300 N*s/m
+    free_length = 400 mm
+  }
+  constraint rail : sliding(ground -> b.s) {
+    at ground = (0, 0, 0) mm
+    at b.s = (0, 0, 0) mm
+    axis = (0, 0, 1)
+  }
+  output { position b.s }
+}
+)");
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "slider.sled").string(), "-o", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_THAT(result.err, HasSubstr("failed at t = 0 s in `rail`"));
+  EXPECT_THAT(result.err, HasSubstr("slider.sled:11:"));
+  EXPECT_TRUE(fs::exists(out / "timeseries.csv"));
+}
+
 TEST_F(RunCommand, InputErrorsExitWithOne) {
   WriteText(temp() / "bad.sled", "scenario \"x\" { time { end = 1 kg  output_every = 1 ms } }\n");
   const SledResult result =
