@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/compiler/sled_process.h"
+#include "tests/compiler/stiff_floor_scene.h"
 
 namespace sled {
 namespace {
@@ -16,6 +17,7 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 using testing::ReadText;
 using testing::SledResult;
+using testing::StiffFloor;
 using testing::WriteText;
 
 using RunCommand = testing::SledProcessTest;
@@ -85,27 +87,6 @@ TEST_F(RunCommand, ANumericalFailureExitsWithThreeAndKeepsTheOutputs) {
 }
 
 // A ball dropped 20 mm onto a floor whose contact stiffness is `stiffness`, with `integrator`.
-std::string StiffFloor(const std::string& stiffness, const std::string& integrator) {
-  return R"(scenario "stiff floor" {
-  time { end = 100 ms  output_every = 1 ms }
-  )" + integrator +
-         R"(
-  plane floor on ground { corners = (-1, -1, 0) m, (1, -1, 0) m, (-1, 1, 0) m }
-  body ball {
-    segment sphere {
-      mass = 1 kg
-      inertia = (0.001, 0.001, 0.001) kg*m^2
-      ellipsoid { semi_axes = (50, 50, 50) mm }
-    }
-  }
-  contact ball.sphere with floor { force = )" +
-         stiffness + R"( }
-  initial ball { position = (0, 0, 70) mm }
-  output { position ball.sphere }
-}
-)";
-}
-
 TEST_F(RunCommand, AFailureAtTheMinimumStepNamesTheSegmentWhoseErrorIsLargest) {
   // A contact far too stiff for a 0.1 ms minimum step: the error test fails at first touch
   // (after 20 mm of free fall, t = 63.9 ms), and the state the error is in is the ball's.

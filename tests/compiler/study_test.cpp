@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/compiler/sled_process.h"
+#include "tests/compiler/stiff_floor_scene.h"
 
 namespace sled::testing {
 namespace {
@@ -63,22 +64,8 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
 TEST_F(Study, AReferenceThatFailsIsANumericalFailureWithItsRowsKept) {
   // A contact far too stiff for the scene's 0.1 ms minimum step: every run, the reference too,
   // fails at first touch (after 20 mm of free fall, t = 63.9 ms).
-  WriteText(temp() / "stiff.sled", R"(scenario "stiff floor" {
-  time { end = 100 ms  output_every = 1 ms }
-  integrator dopri5 { min_step = 0.1 ms }
-  plane floor on ground { corners = (-1, -1, 0) m, (1, -1, 0) m, (-1, 1, 0) m }
-  body ball {
-    segment sphere {
-      mass = 1 kg
-      inertia = (0.001, 0.001, 0.001) kg*m^2
-      ellipsoid { semi_axes = (50, 50, 50) mm }
-    }
-  }
-  contact ball.sphere with floor { force = 1e12 N/m }
-  initial ball { position = (0, 0, 70) mm }
-  output { position ball.sphere }
-}
-)");
+  WriteText(temp() / "stiff.sled",
+            testing::StiffFloor("1e12 N/m", "integrator dopri5 { min_step = 0.1 ms }"));
   const fs::path out = temp() / "study";
   const SledResult result =
       Sled({"study", (temp() / "stiff.sled").string(), "--tolerances", "1e-3", "-o", out.string()});

@@ -15,8 +15,8 @@
 namespace sled::lang {
 namespace {
 
-std::vector<std::string> CorpusFiles(
-    std::initializer_list<const char*> folders = {"examples", "stdlib", "tests/golden"}) {
+std::vector<std::string> CorpusFiles(std::initializer_list<const char*> folders = {
+                                         "examples", "stdlib", "tests/golden"}) {
   std::vector<std::string> files;
   for (const char* folder : folders) {
     const std::filesystem::path root = std::filesystem::path(SLED_SOURCE_ROOT) / folder;
