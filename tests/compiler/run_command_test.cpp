@@ -48,6 +48,24 @@ TEST_F(RunCommand, ThePendulumExampleRunsAndWritesItsOutputs) {
   EXPECT_THAT(summary, HasSubstr("\"wall_time_seconds\""));
 }
 
+TEST_F(RunCommand, ARunThatStartsLateKeepsItsLastRow) {
+  // 0.1 s at 1 ms from t = 1e6 s: end - start is 0.1 s less rounding (about 1.2e-10 s), which
+  // must not lose the row at the end (it gave 100 rows, not 101).
+  WriteText(temp() / "late.sled", R"(scenario "late start" {
+  time { start = 1e6 s  end = 1000000.1 s  output_every = 1 ms }
+  body ball {
+    segment sphere { mass = 1 kg  inertia = (0.001, 0.001, 0.001) kg*m^2 }
+  }
+  output { position ball.sphere }
+}
+)");
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "late.sled").string(), "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string csv = ReadText(out / "timeseries.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 102);  // the header and 101 rows
+}
+
 TEST_F(RunCommand, TheFlagshipRunsWithFiniteOutputs) {
   // Whatever the runtime simulates yet (it notes what it leaves out), the flagship, with and
   // without its driver airbag, runs its 200 ms and every value it writes is a number.
