@@ -177,7 +177,7 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
                          : path.kind == ast::ExprKind::kVector ? "a vector"
                          : path.kind == ast::ExprKind::kString ? "a string"
                                                                : "an expression"),
-             "not a name");
+             "not a name", "a name is written without quotes or a unit, such as `occupant.pelvis`");
     }
     return nullptr;
   }
@@ -197,10 +197,15 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
   if (!found) {
     if (!quiet) {
       const std::string text = path.PathText();
+      std::string help = lang::DidYouMean(text, NamesOfKinds(scope, kinds));
+      if (help.empty()) {
+        help =
+            "declare it, or check the spelling; a name inside a body or import is written "
+            "with its path, such as `occupant.pelvis`";
+      }
       Report(DiagnosticKind::kUnknownName, path.range,
              fmt::format("unknown {} `{}`", kind_text, text),
-             fmt::format("no {} named `{}`", kind_text, text),
-             lang::DidYouMean(text, NamesOfKinds(scope, kinds)));
+             fmt::format("no {} named `{}`", kind_text, text), std::move(help));
     }
     return nullptr;
   }
@@ -233,7 +238,8 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   if (!statement.target || statement.target->kind != ast::ExprKind::kPath || statement.has_value ||
       statement.block) {
     Report(DiagnosticKind::kMalformedStatement, statement.range,
-           "an import names a module: `import std.humans.male50 as occupant`", "not an import");
+           "an import names a module: `import std.humans.male50 as occupant`", "not an import",
+           "give the module's dotted path after `import`; `as NAME` names it here");
     return;
   }
   const std::vector<std::string>& parts = statement.target->path;
@@ -241,7 +247,7 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   if (const ast::Clause* as = statement.FindClause("as")) {
     if (as->value.kind != ast::ExprKind::kPath || as->value.path.size() != 1) {
       Report(DiagnosticKind::kMalformedStatement, as->value.range, "`as` takes one plain name",
-             "not a plain name");
+             "not a plain name", "the alias is one word without dots, such as `occupant`");
       return;
     }
     alias = as->value.path[0];
@@ -250,7 +256,8 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   for (const ast::Clause& clause : statement.clauses) {
     if (clause.word != "as" && clause.word != "on") {
       Report(DiagnosticKind::kMalformedStatement, clause.word_range,
-             fmt::format("an import takes no `{}` clause", clause.word), "not allowed here");
+             fmt::format("an import takes no `{}` clause", clause.word), "not allowed here",
+             "an import takes only `as NAME`");
     }
   }
 

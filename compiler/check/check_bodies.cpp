@@ -31,7 +31,8 @@ void Checker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body_sta
   PendingBody pending{&body_statement, body_scope, index, nullptr};
   if (!body_statement.block) {
     Report(DiagnosticKind::kMalformedStatement, body_statement.range,
-           "a body has a block of segments and joints: `body NAME { ... }`", "no block");
+           "a body has a block of segments and joints: `body NAME { ... }`", "no block",
+           "add `{ segment ... joint ... }` after the body's name");
   } else {
     const int saved = current_body_;
     current_body_ = index;
@@ -88,7 +89,8 @@ void Checker::CheckBodyDetails() {
           I[0] <= I[1] + I[2] + slack && I[1] <= I[0] + I[2] + slack && I[2] <= I[0] + I[1] + slack;
       if (segment.singular && (I[0] != 0 || I[1] != 0 || I[2] != 0)) {
         Report(DiagnosticKind::kInvalidInertia, range,
-               fmt::format("singular segment `{}` has inertia", segment.name), "must be zero");
+               fmt::format("singular segment `{}` has inertia", segment.name), "must be zero",
+               "a segment without mass has no inertia: remove `inertia`, or give it a mass");
       } else if (!segment.singular && !positive) {
         Report(DiagnosticKind::kInvalidInertia, range,
                fmt::format("segment `{}` has a principal moment of inertia that is not positive",
@@ -126,7 +128,8 @@ void Checker::CheckBodyDetails() {
                          child->target->range});
         } else {
           Report(DiagnosticKind::kMalformedStatement, child->target->range,
-                 "an ellipsoid's name is a plain name", "not a plain name");
+                 "an ellipsoid's name is a plain name", "not a plain name",
+                 "name it with one word, such as `ellipsoid chin { ... }`");
         }
       }
       ellipsoid.frame = {FrameRef::Kind::kSegment, pending.index};
@@ -150,7 +153,7 @@ void Checker::CheckBodyDetails() {
         !call->arguments[0].name.empty()) {
       Report(DiagnosticKind::kMalformedStatement, call ? call->range : statement.range,
              "write `joint NAME : ball(parent -> child) { ... }` (or pin, euler, slip, null)",
-             "not a joint type");
+             "not a joint type", "joint types: ball, pin, euler, slip, null");
       joint.parent = joint.child = -1;
       continue;
     }
@@ -168,7 +171,8 @@ void Checker::CheckBodyDetails() {
     joint.parent = joint.child = -1;
     if (arrow.kind != ast::ExprKind::kArrow || arrow.operands.size() != 2) {
       Report(DiagnosticKind::kMalformedStatement, arrow.range,
-             "a joint connects a parent to a child: `ball(pelvis -> abdomen)`", "not A -> B");
+             "a joint connects a parent to a child: `ball(pelvis -> abdomen)`", "not A -> B",
+             "name the parent segment, then the child, joined by `->`");
       continue;
     }
     Entity* parent = Resolve(scope, arrow.operands[0], {EntityKind::kSegment});
@@ -221,7 +225,7 @@ void Checker::CheckBodyDetails() {
         Report(DiagnosticKind::kMisplacedStatement, attribute->keyword_range,
                fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name, types, joint.name,
                            JointTypeName(joint.type)),
-               "not for this joint type");
+               "not for this joint type", "remove it, or change the joint's type");
         return false;
       }
       return attribute != nullptr;
@@ -252,7 +256,8 @@ void Checker::CheckBodyDetails() {
         if (name != "at" && name != "axes") {
           Report(DiagnosticKind::kMisplacedStatement, statements[0]->keyword_range,
                  fmt::format("`{}` has no meaning for a null joint", name),
-                 "a null joint starts a new body and carries no torque");
+                 "a null joint starts a new body and carries no torque",
+                 "remove it, or make the joint a ball, pin, euler or slip joint");
         }
       }
     }

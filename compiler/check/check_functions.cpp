@@ -96,7 +96,8 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
     if (entity->kind == EntityKind::kFunction) {
       if (statement.block) {
         Report(DiagnosticKind::kMalformedStatement, statement.block->range,
-               "a block belongs to an inline table, not to a named function", "unexpected block");
+               "a block belongs to an inline table, not to a named function", "unexpected block",
+               "rows follow a table: `function NAME = table(x -> y) { rows }`");
       }
       if (!MatchSignature(entity->index, argument, result, expr.range)) return std::nullopt;
       return entity->index;
@@ -120,7 +121,8 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
   if (!value) return std::nullopt;
   if (value->components.size() != 1) {
     Report(DiagnosticKind::kWrongValueKind, expr.range,
-           fmt::format("`{}` takes a function or a number, found a vector", what), "a vector");
+           fmt::format("`{}` takes a function or a number, found a vector", what), "a vector",
+           "give a function's name, a number with its unit, or constant/table/polynomial(...)");
     return std::nullopt;
   }
   Function function;
@@ -150,7 +152,8 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
     const BoundBlock bound = Bind(BlockKind::kTable, statement.block.get(), statement.range);
     if (!bound.rows.empty()) {
       Report(DiagnosticKind::kMisplacedStatement, bound.rows[0]->range,
-             "table rows need `table(x -> y)`", "rows without a table");
+             "table rows need `table(x -> y)`", "rows without a table",
+             "put the rows in the block of `table(x -> y) { ... }`");
     }
     function.energy_loss = ReadQuantity(scope, bound, BlockKind::kTable, "energy_loss").value_or(0);
     function.permanent_set =
@@ -172,7 +175,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     if (!argument.name.empty()) {
       Report(DiagnosticKind::kUnknownArgument, argument.name_range,
              fmt::format("`{}` takes no named argument `{}`", form, argument.name),
-             "unknown argument");
+             "unknown argument", "remove it; `sled explain E0209` lists what each form takes");
       return false;
     }
     positional.push_back(argument.value.get());
@@ -201,7 +204,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     }
     if (!ok) {
       Report(DiagnosticKind::kMalformedStatement, arrow.range,
-             "a function signature has one argument and one result: `x -> y`", "not x -> y");
+             "a function signature has one argument and one result: `x -> y`", "not x -> y",
+             "name the argument quantity, then the result: `deflection -> force`");
       return false;
     }
     signature = std::make_pair(parts[0], parts[1]);
@@ -212,7 +216,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
              fmt::format("this function maps {}, but {} is needed here",
                          Signature(signature->first, signature->second),
                          Signature(expected->first, expected->second)),
-             "wrong signature");
+             "wrong signature",
+             "use a function whose argument and result have the dimensions needed here");
       return false;
     }
   }
@@ -231,7 +236,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
   function.unload_slope = ReadQuantity(scope, bound, BlockKind::kTable, "unload_slope");
   if (form != "table" && !bound.rows.empty()) {
     Report(DiagnosticKind::kMisplacedStatement, bound.rows[0]->range,
-           fmt::format("table rows given to `{}`", form), "rows need `table(x -> y)`");
+           fmt::format("table rows given to `{}`", form), "rows need `table(x -> y)`",
+           "only `table(x -> y)` takes rows; remove them");
     return false;
   }
 
@@ -247,7 +253,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     if (!value) return false;
     if (value->components.size() != 1) {
       Report(DiagnosticKind::kWrongValueKind, positional[0]->range,
-             "`constant` takes a number, found a vector", "a vector");
+             "`constant` takes a number, found a vector", "a vector",
+             "give one number with its unit: `constant(2 kN)`");
       return false;
     }
     if (signature && !(value->dimension == signature->second) && !IsBareZero(*value)) {
@@ -268,12 +275,14 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
         call.arguments[0].value->kind != ast::ExprKind::kArrow) {
       Report(DiagnosticKind::kMissingArgument, call.range,
              "a table names its argument and result: `table(deflection -> force)`",
-             "signature missing");
+             "signature missing",
+             "name the argument and result quantities, as in `table(deflection -> force)`");
       return false;
     }
     if (!positional.empty()) {
       Report(DiagnosticKind::kUnknownArgument, positional[0]->range,
-             "`table` takes only its signature; rows go in the block after it", "extra argument");
+             "`table` takes only its signature; rows go in the block after it", "extra argument",
+             "move the rows into the block: `table(x -> y) { 0 mm -> 0 N  10 mm -> 1 kN }`");
       return false;
     }
     bool ok = true;
@@ -282,7 +291,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
       if (arrow.operands.size() != 2) {
         Report(DiagnosticKind::kMalformedStatement, arrow.range,
                fmt::format("a row of a table gives x -> y, found {} values", arrow.operands.size()),
-               "not x -> y");
+               "not x -> y", "write each row as `x -> y`");
         ok = false;
         continue;
       }
@@ -314,7 +323,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
     function.kind = Function::Kind::kPolynomial;
     if (positional.empty()) {
       Report(DiagnosticKind::kMissingArgument, call.range,
-             "a polynomial needs its coefficients: `polynomial(c0, c1, ...)`", "no coefficients");
+             "a polynomial needs its coefficients: `polynomial(c0, c1, ...)`", "no coefficients",
+             "give c0 up to c5, each with its unit: `polynomial(0 N, 50 N/mm)`");
       return false;
     }
     if (positional.size() > kMaxPolynomialDegree + 1) {
@@ -334,7 +344,8 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
       }
       if (value->components.size() != 1) {
         Report(DiagnosticKind::kWrongValueKind, coefficient->range,
-               "a coefficient is a number, found a vector", "a vector");
+               "a coefficient is a number, found a vector", "a vector",
+               "each coefficient is one number with its unit");
         ok = false;
         continue;
       }
@@ -369,7 +380,8 @@ void Checker::DefineFunction(Scope& scope, const ast::Statement& statement, int 
   bool ok = false;
   if (!value) {
     Report(DiagnosticKind::kMalformedStatement, statement.range,
-           "a function is declared as `function NAME = table(x -> y) { rows }`", "no single value");
+           "a function is declared as `function NAME = table(x -> y) { rows }`", "no single value",
+           "give the function one value after `=`");
   } else if (value->kind == ast::ExprKind::kCall) {
     function_valid_[static_cast<std::size_t>(index)] = true;  // MatchSignature may need it
     ok = BuildFunction(scope, statement, *value, std::nullopt, function, index);
@@ -382,8 +394,8 @@ void Checker::DefineFunction(Scope& scope, const ast::Statement& statement, int 
       ok = true;
     } else if (quantity) {
       Report(DiagnosticKind::kWrongValueKind, value->range,
-             "a function is a number or constant/table/polynomial(...), found a vector",
-             "a vector");
+             "a function is a number or constant/table/polynomial(...), found a vector", "a vector",
+             "give a number with its unit, or constant/table/polynomial(...)");
     }
   }
   function.name = scope.prefix + statement.target->PathText();

@@ -60,7 +60,8 @@ std::optional<std::array<FrameRef, 2>> Checker::ReadConnection(Scope& scope,
                                                                const ast::Expr& arrow) {
   if (arrow.kind != ast::ExprKind::kArrow || arrow.operands.size() != 2) {
     Report(DiagnosticKind::kMalformedStatement, arrow.range,
-           fmt::format("`{}` connects two frames: `A -> B`", statement.keyword), "expected A -> B");
+           fmt::format("`{}` connects two frames: `A -> B`", statement.keyword), "expected A -> B",
+           "name the two frames joined by `->`, as in `ground -> occupant.pelvis`");
     return std::nullopt;
   }
   auto first = ResolveFrame(scope, arrow.operands[0]);
@@ -100,13 +101,14 @@ std::array<std::optional<Vec3>, 2> Checker::ReadAtPoints(Scope& scope, const Bou
             DiagnosticKind::kMalformedStatement, statement->target->range,
             fmt::format("`{}` is not one of the two connected frames `{}` and `{}`",
                         statement->target->PathText(), FrameName(frames[0]), FrameName(frames[1])),
-            "not connected here");
+            "not connected here",
+            fmt::format("use `{}` or `{}`", FrameName(frames[0]), FrameName(frames[1])));
         continue;
       }
       if (points[static_cast<std::size_t>(side)]) {
         Report(DiagnosticKind::kDuplicateAttribute, statement->keyword_range,
                fmt::format("`{} {}` is given twice", keyword, statement->target->PathText()),
-               "given again");
+               "given again", "remove one of the two");
         continue;
       }
       const ast::Expr* value = SingleValue(*statement);
@@ -138,7 +140,8 @@ void Checker::CheckContacts() {
     if (!statement.target || !with) {
       Report(DiagnosticKind::kMalformedStatement, statement.range,
              "a contact names two surfaces: `contact occupant.head with windshield { ... }`",
-             "expected `contact A with B`");
+             "expected `contact A with B`",
+             "name a segment, then `with` and a plane, an ellipsoid or another segment");
       continue;
     }
     // Each side: a segment (all its ellipsoids), an ellipsoid or a plane.
@@ -212,8 +215,10 @@ void Checker::CheckRestraints() {
     const ast::Expr* chain = SingleValue(*path);
     if (!chain) return;
     if (chain->kind != ast::ExprKind::kArrow) {
-      Report(DiagnosticKind::kInvalidBeltPath, chain->range,
-             "a belt path runs anchor -> segment -> ... -> anchor", "not a path");
+      Report(
+          DiagnosticKind::kInvalidBeltPath, chain->range,
+          "a belt path runs anchor -> segment -> ... -> anchor", "not a path",
+          "start and end the path at anchors, with the segments the belt passes over between them");
       return;
     }
     for (const ast::Expr& element : chain->operands) {
@@ -264,7 +269,8 @@ void Checker::CheckRestraints() {
       if (!child->target || child->target->kind != ast::ExprKind::kPath ||
           child->target->path.size() != 1) {
         Report(DiagnosticKind::kMalformedStatement, child->range,
-               "a harness belt needs a plain name: `belt NAME { ... }`", "no plain name");
+               "a harness belt needs a plain name: `belt NAME { ... }`", "no plain name",
+               "name the belt with one word, such as `belt lap { ... }`");
         continue;
       }
       if (const ast::Clause* on = child->FindClause("on")) {
@@ -303,7 +309,7 @@ void Checker::CheckRestraints() {
       if (!std::all_of(semi_axes->begin(), semi_axes->end(), [](double a) { return a > 0; })) {
         Report(DiagnosticKind::kNonPositiveSemiAxis, One(bound, "semi_axes")->values[0].range,
                fmt::format("airbag `{}` has a semi-axis that is not positive", bag.name),
-               "not positive");
+               "not positive", "give each semi-axis a positive length");
       }
     }
     bag.deploy_time = ReadQuantity(scope, bound, BlockKind::kAirbag, "deploy_at").value_or(0.0);
@@ -337,7 +343,7 @@ void Checker::CheckRestraints() {
     if (!colon) {
       Report(DiagnosticKind::kMalformedStatement, pending.statement->range,
              fmt::format("write `{} NAME : A -> B {{ ... }}`", pending.statement->keyword),
-             "the two frames are missing");
+             "the two frames are missing", "add the two frames after `:`, joined by `->`");
       continue;
     }
     auto frames = ReadConnection(scope, *pending.statement, colon->value);
@@ -367,7 +373,8 @@ void Checker::CheckRestraints() {
       Report(DiagnosticKind::kMalformedStatement, call ? call->range : pending.statement->range,
              "write `constraint NAME : fixed_point(A -> B) { ... }` (or fixed_distance, rolling, "
              "sliding)",
-             "not a constraint kind");
+             "not a constraint kind",
+             "constraint kinds: fixed_point, fixed_distance, rolling, sliding");
       continue;
     }
     const std::string kind = call->PathText();

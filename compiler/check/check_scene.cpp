@@ -26,7 +26,8 @@ std::string NameOf(Checker& checker, const ast::Statement& statement) {
       DiagnosticKind::kMalformedStatement,
       statement.target ? statement.target->range : statement.keyword_range,
       fmt::format("`{}` needs a plain name: `{} NAME ...`", statement.keyword, statement.keyword),
-      statement.target ? "not a plain name" : "name missing");
+      statement.target ? "not a plain name" : "name missing",
+      "a name is one word of letters, digits and `_`");
   return {};
 }
 
@@ -99,7 +100,8 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       }
       if (!statement->block) {
         Report(DiagnosticKind::kMalformedStatement, statement->range,
-               "a scenario has a block: `scenario \"title\" { ... }`", "no block");
+               "a scenario has a block: `scenario \"title\" { ... }`", "no block",
+               "add `{ ... }` after the title");
         continue;
       }
       DeclareFileContents(scope, *statement->block, BlockKind::kScenario);
@@ -308,7 +310,8 @@ void Checker::CheckSceneElements() {
     if (call->kind != ast::ExprKind::kCall) {
       Report(DiagnosticKind::kWrongValueKind, call->range,
              "`motion` is half_sine(...), trapezoid(...) or table(time -> acceleration)",
-             "not a motion");
+             "not a motion",
+             "for example `half_sine(delta_v = 56 km/h, duration = 100 ms, axis = -x)`");
       continue;
     }
     const std::string form = call->PathText();
@@ -335,7 +338,8 @@ void Checker::CheckSceneElements() {
           ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration").value_or(0.0);
       if (!(m.duration > 0.0)) {
         Report(DiagnosticKind::kValueOutOfRange, arguments.named["duration"]->range,
-               "a pulse duration must be positive", "not positive");
+               "a pulse duration must be positive", "not positive",
+               "give the pulse a positive duration, such as `duration = 100 ms`");
       }
       read_axis(arguments);
     } else if (form == "trapezoid") {
@@ -368,7 +372,8 @@ void Checker::CheckSceneElements() {
         } else {
           Report(DiagnosticKind::kUnknownArgument,
                  argument.name.empty() ? argument.value->range : argument.name_range,
-                 "a motion table takes its signature and `axis`, `start`", "unexpected argument");
+                 "a motion table takes its signature and `axis`, `start`", "unexpected argument",
+                 "remove it; the rows go in the block after the table");
         }
       }
       if (pulse && !signature) {
@@ -404,7 +409,7 @@ void Checker::CheckSceneElements() {
         Report(DiagnosticKind::kMissingArgument, call->range,
                "a motion table is `table(time -> acceleration)` or `table(time -> acceleration "
                "-> angular_acceleration)`",
-               "signature missing or wrong");
+               "signature missing or wrong", "write `table(time -> acceleration) { rows }`");
         continue;
       }
       read_axis(arguments);
@@ -416,14 +421,17 @@ void Checker::CheckSceneElements() {
         if (arrow.operands.size() != (six_dof ? 3u : 2u)) {
           Report(DiagnosticKind::kMalformedStatement, arrow.range,
                  fmt::format("a row of this table has {} values", six_dof ? 3 : 2),
-                 "wrong number of values");
+                 "wrong number of values",
+                 six_dof ? "write rows `time -> acceleration -> angular_acceleration`"
+                         : "write rows `time -> acceleration`");
           continue;
         }
         auto t = ExpectQuantity(scope, arrow.operands[0], dim::kTime, "time");
         if (!t) continue;
         if (!(*t > previous)) {
           Report(DiagnosticKind::kTableNotMonotone, arrow.operands[0].range,
-                 "table time does not increase", "not after the previous row");
+                 "table time does not increase", "not after the previous row",
+                 "order the rows by increasing time, each time once");
           continue;
         }
         previous = *t;
@@ -442,10 +450,11 @@ void Checker::CheckSceneElements() {
       }
       if ((six_dof ? m.six_dof.size() : m.table.size()) < 2 && !rows.rows.empty()) {
         Report(DiagnosticKind::kTableTooShort, call->range, "a motion table needs two rows",
-               "too few rows");
+               "too few rows", "add a second row");
       } else if (rows.rows.empty()) {
         Report(DiagnosticKind::kTableTooShort, call->range,
-               "a motion table needs rows: `{ 0 ms -> 0 g  10 ms -> 20 g }`", "no rows");
+               "a motion table needs rows: `{ 0 ms -> 0 g  10 ms -> 20 g }`", "no rows",
+               "give the rows in a block after the table");
       }
     } else {
       Report(DiagnosticKind::kInvalidEnumValue, call->range,
@@ -464,7 +473,7 @@ void Checker::CheckSceneElements() {
     if (corners->values.size() != 3) {
       Report(DiagnosticKind::kWrongValueKind, corners->range,
              fmt::format("a plane has three corners P1, P2, P3, found {}", corners->values.size()),
-             "not three points");
+             "not three points", "give three corner points, P1, P2, P3, separated by commas");
       continue;
     }
     bool ok = true;
@@ -498,7 +507,8 @@ void Checker::CheckSceneElements() {
     const bool in_module = pending.scope->surface_frame_scope != nullptr;
     if (!in_module && !pending.statement->FindClause("on")) {
       Report(DiagnosticKind::kMalformedStatement, pending.statement->range,
-             "an ellipsoid is fixed in a frame: `ellipsoid NAME on FRAME { ... }`", "no `on`");
+             "an ellipsoid is fixed in a frame: `ellipsoid NAME on FRAME { ... }`", "no `on`",
+             "add `on FRAME` after the name: ground, a vehicle or a segment");
     } else if (auto frame = SurfaceFrame(*pending.statement, *pending.scope)) {
       ellipsoid.frame = *frame;
       if (frame->kind == FrameRef::Kind::kSegment) {

@@ -91,7 +91,7 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
         Report(DiagnosticKind::kInvalidRunSettings,
                One(bound, "min_step") ? One(bound, "min_step")->range : statement->range,
                fmt::format("min_step {:g} s exceeds max_step {:g} s", run.min_step, *run.max_step),
-               "min_step above max_step");
+               "min_step above max_step", "lower `min_step` or raise `max_step`");
       }
     } else if (keyword == "restart") {
       const BoundBlock bound = Bind(BlockKind::kRestart, statement->block.get(), statement->range);
@@ -102,7 +102,8 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
             run.resume_from = value->text;
           } else {
             Report(DiagnosticKind::kWrongValueKind, value->range,
-                   "`resume_from` is a file name in quotes", "not a string");
+                   "`resume_from` is a file name in quotes", "not a string",
+                   "write the file name in double quotes");
           }
         }
       }
@@ -129,7 +130,7 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
           if (pair->values.size() != 2) {
             Report(DiagnosticKind::kWrongValueKind, pair->range,
                    "`pair` names two segments: `pair = occupant.arm_l, occupant.arm_r`",
-                   "not two names");
+                   "not two names", "name the left segment, then its right twin");
             continue;
           }
           Entity* left = Resolve(scope, pair->values[0], {EntityKind::kSegment});
@@ -145,7 +146,8 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
       }
       if (run.symmetry == Symmetry::kPlanar && !run.mirror_pairs.empty()) {
         Report(DiagnosticKind::kInvalidRunSettings, statement->range,
-               "planar symmetry takes no mirror pairs", "pairs given");
+               "planar symmetry takes no mirror pairs", "pairs given",
+               "remove the pairs, or use `symmetry mirror`");
       }
     }
   }
@@ -164,7 +166,7 @@ void Checker::CheckInitialConditions() {
     if (!statement.target) {
       Report(DiagnosticKind::kMalformedStatement, statement.range,
              "`initial` names a body, segment, joint or vehicle: `initial occupant { ... }`",
-             "no target");
+             "no target", "name what the initial state is for after `initial`");
       continue;
     }
     Entity* entity = Resolve(
@@ -185,7 +187,9 @@ void Checker::CheckInitialConditions() {
         Report(DiagnosticKind::kMisplacedStatement, statements[0]->keyword_range,
                joint ? fmt::format("a joint's initial state is its `angles`, not `{}`", name)
                      : "`angles` sets a joint; this `initial` names a body, segment or vehicle",
-               "not for this target");
+               "not for this target",
+               joint ? "set the joint's `angles`"
+                     : "name a joint in the `initial` that sets `angles`");
       }
     }
     initial.position = ReadVector(scope, bound, BlockKind::kInitial, "position");
@@ -243,7 +247,7 @@ void Checker::CheckOutputs() {
                fmt::format("write `{} {}{}`", request->keyword,
                            spec->target_kind == "contact" ? "A with B" : "NAME",
                            spec->takes_point ? " [at (x, y, z) mm]" : ""),
-               "not an output request");
+               "not an output request", "the output requests are listed in docs/language.md §17");
         continue;
       }
       OutputRequest output;
@@ -258,7 +262,7 @@ void Checker::CheckOutputs() {
         if (!allowed) {
           Report(DiagnosticKind::kMalformedStatement, clause.word_range,
                  fmt::format("`{}` takes no `{}` clause", request->keyword, clause.word),
-                 "not allowed here");
+                 "not allowed here", "remove the clause");
         }
       }
       if (const ast::Clause* as = request->FindClause("as")) {
@@ -266,7 +270,7 @@ void Checker::CheckOutputs() {
           output.label = as->value.path[0];
         } else {
           Report(DiagnosticKind::kMalformedStatement, as->value.range, "`as` takes one plain name",
-                 "not a plain name");
+                 "not a plain name", "the column name is one word, such as `head_x`");
         }
       }
       if (const ast::Clause* filter = request->FindClause("filter")) {
@@ -279,7 +283,8 @@ void Checker::CheckOutputs() {
         const ast::Clause* with = request->FindClause("with");
         if (!with) {
           Report(DiagnosticKind::kMalformedStatement, request->range,
-                 "write `contact_force A with B`", "no `with`");
+                 "write `contact_force A with B`", "no `with`",
+                 "name the two surfaces: `contact_force occupant.head with windscreen`");
           continue;
         }
         // The request names the same two surfaces as a declared contact.
@@ -343,7 +348,7 @@ void Checker::CheckOutputs() {
             !value.arguments[0].name.empty()) {
           Report(DiagnosticKind::kWrongValueKind, value.range,
                  "a criterion is written `name(target)`, as in `hic15(occupant.head)`",
-                 "not a criterion");
+                 "not a criterion", "the criteria are listed in docs/language.md §17");
           continue;
         }
         const CriterionSpec* spec = FindCriterion(value.PathText());

@@ -84,7 +84,7 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
                fmt::format("`{}` is an attribute: write `{}`", keyword,
                            wants_target ? fmt::format("{} SEGMENT = value", keyword)
                                         : fmt::format("{} = value", keyword)),
-               "not an attribute statement");
+               "not an attribute statement", "remove what follows the value");
         continue;
       }
       auto& list = bound.attributes[keyword];
@@ -134,7 +134,7 @@ const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
         DiagnosticKind::kWrongValueKind,
         statement.values.size() > 1 ? statement.values[1].range : statement.range,
         fmt::format("`{}` takes one value, found {}", statement.keyword, statement.values.size()),
-        "extra value");
+        "extra value", "remove the extra values, or write a vector in parentheses: `(x, y, z) mm`");
     return nullptr;
   }
   return &statement.values[0];
@@ -212,7 +212,8 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
         }
         if (component->components.size() != 1) {
           Report(DiagnosticKind::kWrongValueKind, operand.range,
-                 "a vector component must be a number", "a vector inside a vector");
+                 "a vector component must be a number", "a vector inside a vector",
+                 "write each component as one number");
           failed = true;
           continue;
         }
@@ -229,7 +230,8 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
             Report(DiagnosticKind::kDimensionMismatch, operand.range,
                    fmt::format("vector components have different dimensions: {}",
                                DescribeMismatch(*common, component->dimension)),
-                   "differs from the first component");
+                   "differs from the first component",
+                   "give every component the same dimension, or write the unit once after `)`");
             failed = true;
           }
           if (!component->bare) common = component->dimension;
@@ -281,7 +283,7 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       if (expr.op == '+' || expr.op == '-') {
         if (left_vector != right_vector) {
           Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot add a vector and a number",
-                 "vector and number");
+                 "vector and number", "add a vector to a vector, a number to a number");
           return std::nullopt;
         }
         const bool left_zero =
@@ -310,12 +312,13 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       if (expr.op == '*' || expr.op == '/') {
         if (left_vector && right_vector) {
           Report(DiagnosticKind::kWrongValueKind, expr.range,
-                 "cannot multiply or divide two vectors", "two vectors");
+                 "cannot multiply or divide two vectors", "two vectors",
+                 "multiply or divide a vector by a number");
           return std::nullopt;
         }
         if (expr.op == '/' && right_vector) {
           Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot divide by a vector",
-                 "vector divisor");
+                 "vector divisor", "divide a vector by a number");
           return std::nullopt;
         }
         const Value& vector_side = right_vector ? *right : *left;
@@ -339,7 +342,8 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
       // '^': a scalar raised to a dimensionless constant power.
       if (left_vector || right_vector || !right->dimension.IsDimensionless()) {
         Report(DiagnosticKind::kInvalidExponent, expr.range,
-               "a power needs a number base and a dimensionless exponent", "invalid power");
+               "a power needs a number base and a dimensionless exponent", "invalid power",
+               "raise a number to a plain-number exponent, as in `length^2`");
         return std::nullopt;
       }
       const ArithmeticResult power = Power(Quantity{left->components[0], left->dimension},
@@ -372,7 +376,7 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
                          : expr.kind == ast::ExprKind::kString ? "a string"
                          : expr.kind == ast::ExprKind::kBool   ? "`" + expr.text + "`"
                                                                : "an arrow chain"),
-             "not a quantity");
+             "not a quantity", "write a number with its unit, or a vector `(x, y, z) unit`");
       return std::nullopt;
   }
   return std::nullopt;
@@ -409,7 +413,8 @@ std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& exp
   }
   if (!std::isfinite(value->components[0])) {
     Report(DiagnosticKind::kInvalidNumber, expr.range,
-           fmt::format("`{}` evaluates to a value that is not finite", what), "overflows");
+           fmt::format("`{}` evaluates to a value that is not finite", what), "overflows",
+           "the value passes 1e308 in SI units; check its units and the names it uses");
     return std::nullopt;
   }
   return value->components[0];
@@ -436,7 +441,8 @@ std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, D
   for (double component : value->components) {
     if (!std::isfinite(component)) {
       Report(DiagnosticKind::kInvalidNumber, expr.range,
-             fmt::format("`{}` has a component that is not finite", what), "overflows");
+             fmt::format("`{}` has a component that is not finite", what), "overflows",
+             "the value passes 1e308 in SI units; check its units and the names it uses");
       return std::nullopt;
     }
   }
@@ -446,7 +452,8 @@ std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, D
 std::optional<bool> Checker::ExpectBool(const ast::Expr& expr, std::string_view what) {
   if (expr.kind != ast::ExprKind::kBool) {
     Report(DiagnosticKind::kWrongValueKind, expr.range,
-           fmt::format("`{}` is `true` or `false`", what), "not a boolean");
+           fmt::format("`{}` is `true` or `false`", what), "not a boolean",
+           "write `true` or `false`");
     return std::nullopt;
   }
   return expr.text == "true";

@@ -97,8 +97,10 @@ class Checker {
   CheckedScenario Run(const ast::File& file);
 
   // --- diagnostics (check.cpp)
-  void Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label = {},
-              std::string help = {});
+  // Every diagnostic says what was found (message), marks it (label) and gives a hint (help);
+  // the help may be empty only when a "did you mean" search found nothing better to say.
+  void Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label,
+              std::string help);
 
   // --- scopes and names (check.cpp)
   Scope* NewScope(Scope* parent, std::string prefix, std::string directory);

@@ -74,7 +74,8 @@ void Checker::RunLints() {
                "never touched", "declare `contact SEGMENT with NAME { ... }`, or remove it");
       } else if (entity.kind == EntityKind::kParameter) {
         Report(DiagnosticKind::kUnusedParameter, entity.range,
-               fmt::format("`{}` is never used", scope->prefix + name), "unused");
+               fmt::format("`{}` is never used", scope->prefix + name), "unused",
+               "remove it, or use it in the scene");
       }
     }
   }
