@@ -71,17 +71,17 @@ std::vector<std::string> ModulesUnder(const std::string& root, const std::string
     std::replace(relative.begin(), relative.end(), '/', '.');
     names.push_back(prefix + relative);
   }
+  std::sort(names.begin(), names.end());  // directory order differs between file systems
   return names;
 }
 
 // "Did you mean" for an import, or else the modules there are (a few of them).
-std::string ModuleHelp(const std::string& wanted, std::vector<std::string> modules) {
+std::string ModuleHelp(const std::string& wanted, const std::vector<std::string>& modules) {
   std::string help = lang::DidYouMean(wanted, modules);
   if (!help.empty()) return help;
   if (modules.empty()) {
     return "`import std.a.b` reads stdlib/a/b.sled; `import a.b` reads a/b.sled next to the scene";
   }
-  std::sort(modules.begin(), modules.end());
   constexpr std::size_t kListed = 6;
   std::string listed;
   for (std::size_t i = 0; i < std::min(modules.size(), kListed); ++i) {

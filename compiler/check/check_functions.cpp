@@ -367,9 +367,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
 
   Report(DiagnosticKind::kInvalidEnumValue, call.range,
          fmt::format("unknown function form `{}`", form), "not a function form",
-         lang::DidYouMean(form, {"constant", "table", "polynomial"}).empty()
-             ? "functions are `constant(...)`, `table(x -> y) { rows }` or `polynomial(...)`"
-             : lang::DidYouMean(form, {"constant", "table", "polynomial"}));
+         lang::DidYouMean(form, {"constant", "table", "polynomial"}));
   return false;
 }
 

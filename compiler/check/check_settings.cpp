@@ -71,9 +71,7 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
         if (found == kMethods.end()) {
           Report(DiagnosticKind::kInvalidEnumValue, statement->target->range,
                  fmt::format("unknown integrator `{}`", method), "not an integrator",
-                 lang::DidYouMean(method, kMethods).empty()
-                     ? "integrators: exponential, dopri5, rosenbrock"
-                     : lang::DidYouMean(method, kMethods));
+                 lang::DidYouMean(method, kMethods));
         } else {
           run.method = static_cast<IntegratorMethod>(found - kMethods.begin());
         }

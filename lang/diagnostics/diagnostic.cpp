@@ -126,8 +126,16 @@ std::optional<std::string> ClosestMatch(std::string_view word,
 }
 
 std::string DidYouMean(std::string_view word, const std::vector<std::string>& candidates) {
-  auto match = ClosestMatch(word, candidates);
-  return match ? fmt::format("did you mean `{}`?", *match) : std::string();
+  if (auto match = ClosestMatch(word, candidates)) return fmt::format("did you mean `{}`?", *match);
+  // No close match: a short list of choices is itself the hint (joint types, integrators, axes).
+  constexpr std::size_t kListed = 8;
+  if (candidates.empty() || candidates.size() > kListed) return {};
+  std::string list;
+  for (const std::string& candidate : candidates) {
+    list += (list.empty() ? "`" : ", `") + candidate + "`";
+  }
+  return candidates.size() == 1 ? fmt::format("the only choice here is {}", list)
+                                : fmt::format("one of: {}", list);
 }
 
 }  // namespace sled::lang

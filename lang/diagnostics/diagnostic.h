@@ -98,7 +98,8 @@ class ErrorTrackingConsumer : public DiagnosticConsumer {
 // "Did you mean" support: the candidate closest to `word` by edit distance, if close enough.
 std::optional<std::string> ClosestMatch(std::string_view word,
                                         const std::vector<std::string>& candidates);
-// A help text "did you mean `x`?" or empty.
+// "did you mean `x`?" for the closest candidate; without a close one, the candidates themselves
+// when there are at most eight ("one of: `ball`, `pin`, ..."); else empty.
 std::string DidYouMean(std::string_view word, const std::vector<std::string>& candidates);
 
 }  // namespace sled::lang

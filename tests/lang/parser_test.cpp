@@ -734,7 +734,10 @@ TEST(DidYouMean, SuggestsTheClosestCandidateWithinAThirdOfTheLength) {
   EXPECT_EQ(ClosestMatch("mass", attributes), std::nullopt);  // an exact match needs no hint
   EXPECT_EQ(ClosestMatch("x", {}), std::nullopt);
   EXPECT_EQ(DidYouMean("kgg", {"kg", "g", "m"}), "did you mean `kg`?");
-  EXPECT_EQ(DidYouMean("qq", {"kg", "g", "m"}), "");
+  EXPECT_EQ(DidYouMean("qq", {"kg", "g", "m"}), "one of: `kg`, `g`, `m`");
+  EXPECT_EQ(DidYouMean("qq", {"kg"}), "the only choice here is `kg`");
+  EXPECT_EQ(DidYouMean("qq", {"a", "b", "c", "d", "e", "f", "g", "h", "i"}), "");
+  EXPECT_EQ(DidYouMean("qq", {}), "");
 }
 
 TEST(DidYouMean, CountsTwoSwappedLettersAsOneEdit) {
