@@ -261,6 +261,13 @@ class Printer {
     return !statement.target && statement.clauses.empty() && statement.has_value;
   }
 
+  // Whether another statement may follow this one on its line: the grammar allows it only after
+  // a value or a block. After a bare header the next name would read as its target (`positi  n =
+  // 1` is `positi n = 1`) or as a clause.
+  static bool EndsComplete(const ast::Statement& statement) {
+    return statement.kind == ast::StatementKind::kRow || statement.has_value || statement.block;
+  }
+
   // The statements of a block on one line, two spaces apart (`end = 1 s  output_every = 1 ms`),
   // or nullopt when one of them cannot share a line: it has a comment or a block of its own, or
   // its value list wraps.
@@ -277,6 +284,7 @@ class Printer {
       std::string text = alone.Take();
       text.pop_back();  // the newline
       if (text.find('\n') != std::string::npos) return std::nullopt;
+      if (&statement != &block.statements.back() && !EndsComplete(statement)) return std::nullopt;
       if (!inside.empty() && !StartsApart(statement, text)) return std::nullopt;
       if (!inside.empty()) inside += "  ";
       inside += text;

@@ -260,6 +260,12 @@ TEST(FormatTest, BreaksAOneLineBlockThatCannotStayOnOneLine) {
   EXPECT_EQ(FormatText("a { b = 100 ;ms }\n"), "a {\n  b = 100\n  ms\n}\n");
   EXPECT_EQ(FormatText("t { 0 -> 5;-1 -> 2 }\n"), "t {\n  0 -> 5\n  -1 -> 2\n}\n");
   EXPECT_EQ(FormatText("a { b = 1 m  output x }\n"), "a {\n  b = 1 m\n  output x\n}\n");
+  // Or after a statement with neither value nor block, whose next name would read as its target
+  // or clause (fuzzer finding: `positi;n = 1` joined by spaces is `positi n = 1`).
+  EXPECT_EQ(FormatText("a { positi;n = 1 }\n"), "a {\n  positi\n  n = 1\n}\n");
+  EXPECT_EQ(FormatText("a { b c;d = 1 }\n"), "a {\n  b c\n  d = 1\n}\n");
+  // An empty block ends its statement, so the next may follow it.
+  EXPECT_EQ(FormatText("a { c {};d = 2 }\n"), "a { c {}  d = 2 }\n");
 }
 
 TEST(FormatTest, PutsEachTableRowOnItsOwnLine) {
