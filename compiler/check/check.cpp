@@ -406,6 +406,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   }
 
   // Every name is known now: check what the declarations say.
+  EvaluateParameters();
   for (const Pending& pending : functions_) {
     DefineFunction(*pending.scope, *pending.statement, pending.index);
   }
@@ -415,7 +416,6 @@ CheckedScenario Checker::Run(const ast::File& file) {
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();
   CheckOutputs();
-  EvaluateUnusedParameters();
   if (options_.lints) RunLints();
   return std::move(scenario_);
 }

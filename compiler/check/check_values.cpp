@@ -157,13 +157,34 @@ std::optional<Value> Checker::ValueOf(Parameter& parameter) {
   return parameter.value;
 }
 
-void Checker::EvaluateUnusedParameters() {
-  // Parameters are evaluated when used; one that nothing uses must still be a valid value (a
-  // wrong dimension in it is a mistake the checker can find).
+void Checker::EvaluateParameters() {
+  // In the order of declaration, so that a long chain of `let`s, each using the one before,
+  // is evaluated one link at a time, not by recursing from its last link to its first. One that
+  // nothing uses is still checked: a wrong dimension in it is a mistake the checker can find.
   for (std::size_t i = 0; i < parameters_.size(); ++i) ValueOf(*parameters_[i]);
 }
 
 std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
+  // A value defined through later definitions (`let a = b + 1` before `let b = ...`) recurses
+  // through them; a generated chain of thousands would overflow the stack.
+  if (evaluation_depth_ >= kMaxEvaluationDepth) {
+    // Once: the rest of such a chain would report it again from each of its links.
+    if (evaluation_too_deep_) return std::nullopt;
+    evaluation_too_deep_ = true;
+    Report(DiagnosticKind::kNestingTooDeep, expr.range,
+           fmt::format("this value is defined through more than {} nested definitions and "
+                       "operations",
+                       kMaxEvaluationDepth),
+           "too deep here", "declare each `let` before the `let`s that use it");
+    return std::nullopt;
+  }
+  ++evaluation_depth_;
+  auto value = EvaluateNested(scope, expr);
+  --evaluation_depth_;
+  return value;
+}
+
+std::optional<Value> Checker::EvaluateNested(Scope& scope, const ast::Expr& expr) {
   switch (expr.kind) {
     case ast::ExprKind::kNumber: {
       // The parser marks a number it could not read as NaN, after reporting it.

@@ -112,9 +112,11 @@ class Checker {
 
   // --- values (check_values.cpp)
   std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);
+  std::optional<Value> EvaluateNested(Scope& scope, const ast::Expr& expr);  // Evaluate's body
   // The value of a parameter, evaluated on first use.
   std::optional<Value> ValueOf(Parameter& parameter);
-  void EvaluateUnusedParameters();
+  // Evaluates every parameter in the order of declaration, before anything uses them.
+  void EvaluateParameters();
   std::optional<double> ExpectQuantity(Scope& scope, const ast::Expr& expr, Dimension dimension,
                                        std::string_view what);
   std::optional<Vec3> ExpectVector(Scope& scope, const ast::Expr& expr, Dimension dimension,
@@ -224,7 +226,12 @@ class Checker {
   std::map<FunctionId, PendingPolynomial> pending_polynomials_;
   std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
   Scope* scene_scope_ = nullptr;
-  bool checking_module_ = false;  // the checked file is a module: no lints about unused names
+  // Evaluate's recursion: deep enough for the parser's longest expression (1,000 operations)
+  // inside a few hundred chained definitions, shallow enough for the stack under ASan.
+  static constexpr int kMaxEvaluationDepth = 2500;
+  int evaluation_depth_ = 0;
+  bool evaluation_too_deep_ = false;  // reported
+  bool checking_module_ = false;      // the checked file is a module: no lints about unused names
   // `--set NAME=VALUE`, parsed; consumed by the scenario's `param` declarations.
   struct Override {
     std::string name;

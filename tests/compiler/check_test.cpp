@@ -113,6 +113,35 @@ TEST(CheckUnits, ArithmeticWithParametersAndLets) {
   EXPECT_DOUBLE_EQ((*r.scenario.initial_conditions[0].position)[2], 1.0);
 }
 
+// 20,000 lets, each the one before plus a kilogram: evaluated in the order they are declared,
+// so a use of the last does not recurse through all of them (it overflowed the stack).
+TEST(CheckUnits, ALongChainOfLetsIsEvaluatedInOrder) {
+  constexpr int kLinks = 20000;
+  std::string lets = "  let x0 = 1 kg\n";
+  for (int i = 1; i < kLinks; ++i) lets += fmt::format("  let x{} = x{} + 1 kg\n", i, i - 1);
+  const Result r = CheckText(Scene(lets + fmt::format(R"(
+  body b {{
+    segment s {{ mass = x{}  inertia = (0.1, 0.1, 0.1) kg*m^2 }}
+  }})",
+                                                      kLinks - 1)));
+  ASSERT_EQ(r.errors, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  ASSERT_EQ(r.scenario.segments.size(), 1u);
+  EXPECT_DOUBLE_EQ(r.scenario.segments[0].mass, kLinks);
+}
+
+// The same chain declared backwards makes each let wait on a later one; past 2,500 levels of
+// evaluation it is E0106, reported once, where the limit was reached.
+TEST(CheckUnits, AChainOfLaterLetsTooDeepToEvaluateIsE0106Once) {
+  constexpr int kLinks = 20000;
+  std::string lets;
+  for (int i = 0; i < kLinks; ++i) lets += fmt::format("  let x{} = x{} + 1 kg\n", i, i + 1);
+  lets += fmt::format("  let x{} = 1 kg\n", kLinks);
+  const Result r = CheckText(Scene(lets));
+  EXPECT_EQ(r.errors, 1) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  EXPECT_THAT(r.messages, Contains(HasSubstr("error[E0106]: this value is defined through more "
+                                             "than 2500 nested definitions")));
+}
+
 TEST(CheckUnits, AddingALengthToATimeIsAnError) {
   const Result r =
       CheckText(Scene("  let x = 5 mm + 2 s\n  body b { segment s { mass = x  "
