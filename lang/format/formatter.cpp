@@ -106,6 +106,8 @@ void AppendExpr(const ast::Expr& expr, std::string& out) {
         if (i > 0) out += ", ";
         AppendOperand(expr.operands[i], kArrowPrecedence, out);
       }
+      // `(a,)` is a one-element vector; `(a)` would read back as a parenthesised value.
+      if (expr.operands.size() == 1 && !expr.unit) out += ',';
       out += ')';
       if (expr.unit) {
         out += ' ';

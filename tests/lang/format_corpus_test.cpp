@@ -44,6 +44,23 @@ Parsed ParseText(const std::string& path, const std::string& text) {
   return parsed;
 }
 
+// The formatter's promise for text that parses cleanly: its output parses cleanly to the same
+// tree, and formatting that again changes nothing. Returns what broke, or "" (also for text
+// with syntax errors, which the promise does not cover).
+std::string BrokenPromise(const std::string& path, const std::string& text) {
+  const Parsed original = ParseText(path, text);
+  if (original.errors > 0) return "";
+  const std::string formatted = Format(original.file);
+  const Parsed reparsed = ParseText(path + " (formatted)", formatted);
+  const char* broken = reparsed.errors > 0 ? "formats to text with syntax errors"
+                       : ast::Dump(reparsed.file) != ast::Dump(original.file)
+                           ? "formats to text that parses to a different tree"
+                       : Format(reparsed.file) != formatted ? "formats differently a second time"
+                                                            : nullptr;
+  if (!broken) return "";
+  return path + " " + broken + ":\n--- text ---\n" + text + "\n--- formatted ---\n" + formatted;
+}
+
 TEST(FormatCorpus, EveryFileRoundTripsThroughTheFormatter) {
   const std::vector<std::string> files = CorpusFiles();
   ASSERT_FALSE(files.empty()) << "no .sled files found under " << SLED_SOURCE_ROOT;
@@ -51,17 +68,34 @@ TEST(FormatCorpus, EveryFileRoundTripsThroughTheFormatter) {
   for (const std::string& path : files) {
     auto text = ReadFile(path);
     ASSERT_TRUE(text.has_value()) << path;
-    const Parsed original = ParseText(path, *text);
-    if (original.errors > 0) continue;  // files that test syntax errors
-    const std::string formatted = Format(original.file);
-    const Parsed reparsed = ParseText(path + " (formatted)", formatted);
-    EXPECT_EQ(reparsed.errors, 0) << path << " formats to text with syntax errors:\n" << formatted;
-    EXPECT_EQ(ast::Dump(reparsed.file), ast::Dump(original.file))
-        << path << ": the formatted text parses to a different tree";
-    EXPECT_EQ(Format(reparsed.file), formatted) << path << ": formatting is not idempotent";
+    if (ParseText(path, *text).errors > 0) continue;  // files that test syntax errors
+    EXPECT_EQ(BrokenPromise(path, *text), "");
     ++checked;
   }
   EXPECT_GT(checked, 0);
+}
+
+// What the parser fuzzer finds first: one character of a real file changed. Every deletion of
+// one character of an example, and every separator put in place of or before one, that still
+// parses must keep the promise (found this way: `positi;n` joined into `positi  n`, a target,
+// and `(a,)` printed as the parenthesised `(a)`).
+TEST(FormatCorpus, EverySingleSeparatorEditOfAnExampleKeepsThePromise) {
+  const std::string path = std::string(SLED_SOURCE_ROOT) + "/examples/pendulum.sled";
+  const auto text = ReadFile(path);
+  ASSERT_TRUE(text.has_value()) << path;
+  int broken = 0;
+  const auto check = [&](const std::string& edited) {
+    const std::string problem = BrokenPromise(path + " (edited)", edited);
+    if (!problem.empty() && ++broken <= 3) ADD_FAILURE() << problem;
+  };
+  for (std::size_t i = 0; i < text->size(); ++i) {
+    check(std::string(*text).erase(i, 1));
+    for (const char separator : {';', ',', '\n', ' '}) {
+      check(std::string(*text).insert(i, 1, separator));
+      if ((*text)[i] != separator) check(std::string(*text).replace(i, 1, 1, separator));
+    }
+  }
+  EXPECT_EQ(broken, 0);
 }
 
 TEST(FormatCorpus, ExamplesAndTheStandardLibraryAreInCanonicalForm) {

@@ -268,6 +268,12 @@ TEST(FormatTest, BreaksAOneLineBlockThatCannotStayOnOneLine) {
   EXPECT_EQ(FormatText("a { c {};d = 2 }\n"), "a { c {}  d = 2 }\n");
 }
 
+TEST(FormatTest, KeepsTheCommaOfAOneElementVector) {
+  // `(b,)` is a vector of one element and `(b)` a parenthesised value; with a unit the comma
+  // is not needed (a finding of a sweep of single-character edits of the examples).
+  EXPECT_EQ(FormatText("a = (b ,)\nc = (1 ,) mm\nd = (1)\n"), "a = (b,)\nc = (1) mm\nd = (1)\n");
+}
+
 TEST(FormatTest, PutsEachTableRowOnItsOwnLine) {
   EXPECT_EQ(FormatText("belt lap {\n"
                        "force = table(strain -> force) {\n 0 -> 0 N  0.1 -> 8 kN\n}\n"
