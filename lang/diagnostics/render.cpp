@@ -45,14 +45,7 @@ std::uint32_t CharacterWidth(std::string_view text) {
 constexpr std::uint32_t kWidestShownLine = 120;
 constexpr std::uint32_t kShownBeforeLabel = 40;
 
-// The byte offset of the character at index `n` (0-based) of UTF-8 text, or its size.
-std::size_t ByteOfCharacter(std::string_view text, std::uint32_t n) {
-  std::uint32_t seen = 0;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if ((static_cast<unsigned char>(text[i]) & 0xC0u) != 0x80u && seen++ == n) return i;
-  }
-  return text.size();
-}
+bool StartsCharacter(char c) { return (static_cast<unsigned char>(c) & 0xC0u) != 0x80u; }
 
 // What is shown of a source line, and how far right of its column the label's marks start.
 struct ShownLine {
@@ -61,20 +54,34 @@ struct ShownLine {
   std::uint32_t room = 0;      // characters shown from the first mark on
 };
 
-ShownLine ShowLine(const std::string& line, std::uint32_t column) {
-  const std::uint32_t characters = CharacterWidth(line);
-  const std::uint32_t before = column - 1;
-  if (characters <= kWidestShownLine) return {line, before, std::max(characters, column) - before};
-  const std::uint32_t first = before > kShownBeforeLabel ? before - kShownBeforeLabel : 0;
-  const std::uint32_t last = std::min(characters, first + kWidestShownLine);
-  const std::string_view whole(line);
-  const std::size_t from = ByteOfCharacter(whole, first);
+// The line, tabs shown as spaces, with a label starting `at` bytes into it. A line wider than
+// kWidestShownLine is cut to a window around the label, found by walking from the label, so
+// that a line of megabytes costs no more than a short one.
+ShownLine ShowLine(std::string_view line, std::size_t at) {
+  at = std::min(at, line.size());
+  std::size_t from = 0;
+  std::size_t to = line.size();
+  // A character is at most four bytes, so only a line of few bytes needs counting.
+  const bool wide = line.size() > kWidestShownLine &&
+                    (line.size() > 4 * kWidestShownLine || CharacterWidth(line) > kWidestShownLine);
+  if (wide) {
+    from = at;
+    for (std::uint32_t back = 0; from > 0 && back < kShownBeforeLabel;) {
+      if (StartsCharacter(line[--from])) ++back;
+    }
+    to = from;
+    for (std::uint32_t shown = 0; to < line.size() && shown < kWidestShownLine; ++shown) {
+      do ++to;
+      while (to < line.size() && !StartsCharacter(line[to]));
+    }
+    to = std::max(to, at);
+  }
   ShownLine shown;
-  shown.text = std::string(first > 0 ? "..." : "") +
-               std::string(whole.substr(from, ByteOfCharacter(whole, last) - from)) +
-               (last < characters ? "..." : "");
-  shown.marks_at = before - first + (first > 0 ? 3 : 0);
-  shown.room = std::max(last, column) - before;
+  shown.text = std::string(from > 0 ? "..." : "") + std::string(line.substr(from, to - from)) +
+               (to < line.size() ? "..." : "");
+  std::replace(shown.text.begin(), shown.text.end(), '\t', ' ');
+  shown.marks_at = CharacterWidth(line.substr(from, at - from)) + (from > 0 ? 3 : 0);
+  shown.room = std::max<std::uint32_t>(1, CharacterWidth(line.substr(at, to - at)));
   return shown;
 }
 
@@ -124,21 +131,19 @@ std::string RenderRich(const SourceManager& sources, const Diagnostic& diagnosti
     for (const Label& label : diagnostic.labels) {
       if (!(label.range.file == diagnostic.labels[0].range.file)) continue;
       const LineColumn start = buffer.Locate(label.range.begin);
-      std::string line(buffer.Line(start.line));
-      std::replace(line.begin(), line.end(), '\t', ' ');
-      // Underline to the end of the range or of the line, whichever comes first.
+      const std::string_view line = buffer.Line(start.line);
       const std::uint32_t line_start = buffer.OffsetOf(start.line, 1);
-      const std::uint32_t line_end =
-          line_start + static_cast<std::uint32_t>(buffer.Line(start.line).size());
-      const std::uint32_t span_end = std::min(std::max(label.range.end, label.range.begin + 1),
-                                              std::max(line_end, label.range.begin + 1));
+      const ShownLine shown = ShowLine(line, label.range.begin - line_start);
+      // Underline to the end of the range, of the line or of what is shown, whichever comes
+      // first.
+      const std::uint32_t line_end = line_start + static_cast<std::uint32_t>(line.size());
+      const std::uint32_t span_end = std::min(label.range.end, line_end);
       const std::uint32_t width =
-          label.range.begin >= line_end
+          span_end <= label.range.begin
               ? 1
-              : std::max<std::uint32_t>(
-                    1, CharacterWidth(buffer.text().substr(
-                           label.range.begin, std::min(span_end, line_end) - label.range.begin)));
-      const ShownLine shown = ShowLine(line, start.column);
+              : CharacterWidth(buffer.text().substr(
+                    label.range.begin,
+                    std::min<std::uint32_t>(span_end - label.range.begin, 4 * shown.room)));
       out += fmt::format("{:>{}} {} {}\n", start.line, gutter.size(), Paint("|", "1;34", color),
                          shown.text);
       const std::string marks(std::max<std::uint32_t>(1, std::min(width, shown.room)),

@@ -23,9 +23,21 @@ std::uint32_t CountCharacters(std::string_view text) {
 SourceBuffer::SourceBuffer(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
   line_starts_.push_back(0);
+  std::uint32_t characters = 0;
   for (std::uint32_t i = 0; i < text_.size(); ++i) {
+    if (i % kBlockBytes == 0) characters_before_block_.push_back(characters);
     if (text_[i] == '\n') line_starts_.push_back(i + 1);
+    if ((static_cast<unsigned char>(text_[i]) & 0xC0u) != 0x80u) ++characters;
   }
+  // The end of a text whose size is a whole number of blocks starts a block of its own.
+  if (text_.size() % kBlockBytes == 0) characters_before_block_.push_back(characters);
+}
+
+std::uint32_t SourceBuffer::CharactersBefore(std::uint32_t offset) const {
+  offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+  const std::uint32_t block = offset / kBlockBytes;
+  return characters_before_block_[block] + CountCharacters(std::string_view(text_).substr(
+                                               block * kBlockBytes, offset - block * kBlockBytes));
 }
 
 LineColumn SourceBuffer::Locate(std::uint32_t offset) const {
@@ -33,8 +45,7 @@ LineColumn SourceBuffer::Locate(std::uint32_t offset) const {
   auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const auto line_index = static_cast<std::uint32_t>(it - line_starts_.begin()) - 1;
   const std::uint32_t start = line_starts_[line_index];
-  return {line_index + 1,
-          CountCharacters(std::string_view(text_).substr(start, offset - start)) + 1};
+  return {line_index + 1, CharactersBefore(offset) - CharactersBefore(start) + 1};
 }
 
 std::string_view SourceBuffer::Line(std::uint32_t line) const {

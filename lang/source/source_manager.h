@@ -35,8 +35,15 @@ class SourceBuffer {
 
  private:
   std::string path_;
+  // Characters before `offset`, in time bounded by kBlockBytes whatever the line length.
+  std::uint32_t CharactersBefore(std::uint32_t offset) const;
+
+  static constexpr std::uint32_t kBlockBytes = 4096;
   std::string text_;
   std::vector<std::uint32_t> line_starts_;
+  // Characters before each kBlockBytes-aligned offset: a column in a line of megabytes (a
+  // generated file) is found without counting the whole line, once per diagnostic.
+  std::vector<std::uint32_t> characters_before_block_;
 };
 
 class SourceManager {

@@ -663,6 +663,31 @@ TEST(RenderDiagnostic, RichFormAlignsCaretsUnderUtf8AndTabs) {
             "  = help: did you mean `kg`?\n");
 }
 
+TEST(RenderDiagnostic, RichFormOfALongUtf8LineShowsAWindowWithAlignedCarets) {
+  // 5,000 two-byte characters (past the source's 4 KB column blocks), a tab, the label, more.
+  std::string before;
+  for (int i = 0; i < 5000; ++i) before += "ü";
+  const std::string text = before + "\tkgg" + std::string(300, 'x') + "\n";
+  SourceManager sources;
+  const FileId file = sources.Add("a.sled", text);
+  const auto begin = static_cast<std::uint32_t>(before.size() + 1);
+  Diagnostic diagnostic = UnknownUnitAt(file, begin, begin + 3);
+  std::string window = "...";
+  for (int i = 0; i < 39; ++i) window += "ü";
+  window += " kgg" + std::string(77, 'x') + "...";  // 120 characters in all
+  EXPECT_EQ(RenderRich(sources, diagnostic),
+            "error[E0301]: unknown unit `kgg`\n"
+            " --> a.sled:1:5002\n"
+            "  |\n"
+            "1 | " +
+                window +
+                "\n"
+                "  | " +
+                std::string(43, ' ') +
+                "^^^ not a unit sled knows\n"
+                "  = help: did you mean `kg`?\n");
+}
+
 TEST(RenderDiagnostic, RichFormOfAnEmptyRangeAtTheEndOfALineShowsOneCaret) {
   SourceManager sources;
   const FileId file = sources.Add("a.sled", "title = \"abc\n");
