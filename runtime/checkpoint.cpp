@@ -11,7 +11,11 @@
 namespace sled::runtime {
 namespace {
 
-constexpr char kMagic[] = "sled checkpoint 1\n";
+// Format 2 ends with a 16-hex-digit FNV-1a checksum of everything between the magic line and
+// it, so that a damaged file (a flipped byte, a torn write) is refused rather than resumed from.
+constexpr char kMagic[] = "sled checkpoint 2\n";
+constexpr char kMagicPrefix[] = "sled checkpoint ";
+constexpr std::size_t kChecksumDigits = 16;
 
 // FNV-1a: a stable 64-bit hash (std::hash may differ between library versions).
 std::uint64_t Fnv1a(const std::string& text) {
@@ -76,7 +80,7 @@ bool WriteCheckpoint(const std::string& path, const Checkpoint& checkpoint, std:
   archive.Resizable(copy.series.values);
   archive.Resizable(copy.state);
   std::ofstream out(path, std::ios::binary);
-  out << kMagic << archive.bytes();
+  out << kMagic << archive.bytes() << fmt::format("{:016x}", Fnv1a(archive.bytes()));
   if (!out) {
     *error = fmt::format("cannot write the checkpoint `{}`", path);
     return false;
@@ -95,11 +99,26 @@ bool ReadCheckpoint(const std::string& path, Checkpoint* checkpoint, std::string
   std::string bytes = content.str();
   const std::string magic = kMagic;
   if (!bytes.starts_with(magic)) {
-    *error = fmt::format("`{}` is not a sled checkpoint (it does not start with `{}`)", path,
-                         magic.substr(0, magic.size() - 1));
+    const std::string version = bytes.substr(0, bytes.find('\n'));
+    *error = version.starts_with(kMagicPrefix) && version.size() < 40
+                 ? fmt::format(
+                       "`{}` is a checkpoint of another format (`{}`); this sled reads "
+                       "`{}`: run the scene again to write it",
+                       path, version, magic.substr(0, magic.size() - 1))
+                 : fmt::format("`{}` is not a sled checkpoint (it does not start with `{}`)", path,
+                               magic.substr(0, magic.size() - 1));
     return false;
   }
-  Archive archive = Archive::ForReading(bytes.substr(magic.size()));
+  const std::string_view rest = std::string_view(bytes).substr(magic.size());
+  const std::string payload(rest.substr(0, rest.size() - std::min(rest.size(), kChecksumDigits)));
+  if (rest.size() < kChecksumDigits ||
+      rest.substr(payload.size()) != fmt::format("{:016x}", Fnv1a(payload))) {
+    *error = fmt::format(
+        "the checkpoint `{}` is truncated or damaged: its checksum does not match its contents",
+        path);
+    return false;
+  }
+  Archive archive = Archive::ForReading(payload);
   SerializeFingerprint(archive, checkpoint->model);
   archive.Field(checkpoint->time);
   archive.Field(checkpoint->next_row);
