@@ -12,15 +12,15 @@ namespace sled::driver {
 
 std::optional<lang::FileId> LoadUserFile(lang::SourceManager& sources, const std::string& path,
                                          lang::DiagnosticCollector& collector) {
-  if (auto id = sources.Load(path)) return id;
-  std::error_code error;
-  const bool folder = std::filesystem::is_directory(path, error);
-  auto diagnostic = lang::MakeDiagnostic(
-      lang::DiagnosticKind::kFileUnreadable, {},
-      fmt::format("cannot read `{}`{}", path, folder ? ": it is a folder" : ""));
+  std::string why;
+  if (auto id = sources.Load(path, &why)) return id;
+  auto diagnostic =
+      lang::MakeDiagnostic(lang::DiagnosticKind::kFileUnreadable, {},
+                           fmt::format("cannot read `{}`{}{}", path, why.empty() ? "" : ": ", why));
   diagnostic.labels.clear();
-  diagnostic.help =
-      folder ? "name a scenario file, not a folder" : "check the path and the file's permissions";
+  diagnostic.help = why.empty()               ? "check the path and the file's permissions"
+                    : why == "it is a folder" ? "name a scenario file, not a folder"
+                                              : "sled reads files of up to 256 MiB";
   collector.Consume(std::move(diagnostic));
   return std::nullopt;
 }

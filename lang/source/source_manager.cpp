@@ -81,8 +81,8 @@ FileId SourceManager::Add(std::string path, std::string text) {
   return FileId{static_cast<std::uint32_t>(buffers_.size())};
 }
 
-std::optional<FileId> SourceManager::Load(const std::string& path) {
-  auto text = ReadFile(path);
+std::optional<FileId> SourceManager::Load(const std::string& path, std::string* why) {
+  auto text = ReadFile(path, why);
   if (!text) return std::nullopt;
   return Add(path, std::move(*text));
 }
@@ -142,17 +142,29 @@ bool ReplaceFile(const std::string& path, std::string_view text, std::string* er
   return true;
 }
 
-std::optional<std::string> ReadFile(const std::string& path) {
+std::optional<std::string> ReadFile(const std::string& path, std::string* why) {
+  const auto fail = [why](const char* reason) -> std::optional<std::string> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (why) why->clear();
   // A directory opens as a stream on Linux and reads as empty text, which would pass for an
   // empty file.
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) return std::nullopt;
+  if (std::filesystem::is_directory(path, error)) return fail("it is a folder");
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
-  std::ostringstream contents;
-  contents << in.rdbuf();
+  // In blocks, up to the limit: the size on disk is unknown for a pipe or a device.
+  std::string contents;
+  char block[1 << 16];
+  while (in.read(block, sizeof block) || in.gcount() > 0) {
+    if (contents.size() + static_cast<std::size_t>(in.gcount()) > kMaxFileBytes) {
+      return fail("it is larger than 256 MiB");
+    }
+    contents.append(block, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) return std::nullopt;
-  return contents.str();
+  return contents;
 }
 
 }  // namespace sled::lang

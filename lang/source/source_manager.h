@@ -54,8 +54,8 @@ class SourceManager {
 
   // Adds a buffer and returns its id. Paths need not be unique (stdin, generated text).
   FileId Add(std::string path, std::string text);
-  // Reads a file from disk; nullopt when it cannot be read.
-  std::optional<FileId> Load(const std::string& path);
+  // Reads a file from disk; nullopt when it cannot be read (ReadFile says why).
+  std::optional<FileId> Load(const std::string& path, std::string* why = nullptr);
   // The id of a buffer already added under this path, if any.
   std::optional<FileId> Find(std::string_view path) const;
 
@@ -66,8 +66,14 @@ class SourceManager {
   std::vector<std::unique_ptr<SourceBuffer>> buffers_;  // index = FileId::value - 1
 };
 
-// Reads a whole file; nullopt when it cannot be opened.
-std::optional<std::string> ReadFile(const std::string& path);
+// The largest file sled reads: source offsets are 32-bit, and no scenario or deck comes near it
+// (an endless file such as /dev/zero would otherwise be read until memory runs out).
+inline constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
+
+// Reads a whole file; nullopt when it cannot be opened, is a folder or is larger than
+// kMaxFileBytes, with `why` (when given) set to "it is a folder", "it is larger than 256 MiB"
+// or, when the file cannot be opened, left empty.
+std::optional<std::string> ReadFile(const std::string& path, std::string* why = nullptr);
 
 // Replaces a file's text so that it is never lost half-written: writes a temporary file beside
 // it, then renames it over the file (through a symbolic link, and keeping the permissions of a

@@ -119,6 +119,17 @@ TEST_F(DriverTest, AFolderGivenAsAFileReportsE0107ForEveryCommand) {
   }
 }
 
+TEST_F(DriverTest, AnEndlessFileIsE0107NotReadUntilMemoryRunsOut) {
+  // /dev/zero never ends; sled stops reading at 256 MiB.
+  for (const char* command : {"check", "fmt", "run", "convert"}) {
+    const SledResult result = Sled({command, "/dev/zero", "--deck=ain", "--diagnostics=compact"});
+    EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
+    EXPECT_NE(result.err.find("error[E0107]: cannot read `/dev/zero`: it is larger than 256 MiB"),
+              std::string::npos)
+        << command << ": " << result.err;
+  }
+}
+
 TEST_F(DriverTest, RunningAModuleWithoutAScenarioIsAnInputError) {
   // stdlib modules check clean but hold nothing to simulate.
   const fs::path module = temp() / "module.sled";
