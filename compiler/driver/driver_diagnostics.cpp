@@ -14,13 +14,16 @@ std::optional<lang::FileId> LoadUserFile(lang::SourceManager& sources, const std
                                          lang::DiagnosticCollector& collector) {
   std::string why;
   if (auto id = sources.Load(path, &why)) return id;
+  std::error_code error;
+  const bool folder = std::filesystem::is_directory(path, error);
   auto diagnostic =
       lang::MakeDiagnostic(lang::DiagnosticKind::kFileUnreadable, {},
                            fmt::format("cannot read `{}`{}{}", path, why.empty() ? "" : ": ", why));
   diagnostic.labels.clear();
-  diagnostic.help = why.empty()               ? "check the path and the file's permissions"
-                    : why == "it is a folder" ? "name a scenario file, not a folder"
-                                              : "sled reads files of up to 256 MiB";
+  diagnostic.help =
+      why.empty() ? "check the path and the file's permissions"
+      : folder    ? "name a scenario file, not a folder"
+                  : fmt::format("sled reads files of up to {} MiB", lang::kMaxFileBytes >> 20);
   collector.Consume(std::move(diagnostic));
   return std::nullopt;
 }

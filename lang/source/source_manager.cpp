@@ -143,8 +143,8 @@ bool ReplaceFile(const std::string& path, std::string_view text, std::string* er
 }
 
 std::optional<std::string> ReadFile(const std::string& path, std::string* why) {
-  const auto fail = [why](const char* reason) -> std::optional<std::string> {
-    if (why) *why = reason;
+  const auto fail = [why](std::string reason) -> std::optional<std::string> {
+    if (why) *why = std::move(reason);
     return std::nullopt;
   };
   if (why) why->clear();
@@ -159,7 +159,7 @@ std::optional<std::string> ReadFile(const std::string& path, std::string* why) {
   char block[1 << 16];
   while (in.read(block, sizeof block) || in.gcount() > 0) {
     if (contents.size() + static_cast<std::size_t>(in.gcount()) > kMaxFileBytes) {
-      return fail("it is larger than 256 MiB");
+      return fail("it is larger than " + std::to_string(kMaxFileBytes >> 20) + " MiB");
     }
     contents.append(block, static_cast<std::size_t>(in.gcount()));
   }
