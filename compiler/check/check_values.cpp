@@ -167,124 +167,23 @@ void Checker::EvaluateParameters() {
 std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
   // A value defined through later definitions (`let a = b + 1` before `let b = ...`) recurses
   // through them; a generated chain of thousands would overflow the stack.
-  if (evaluation_depth_ >= kMaxEvaluationDepth) {
-    // Once: the rest of such a chain would report it again from each of its links.
-    if (evaluation_too_deep_) return std::nullopt;
-    evaluation_too_deep_ = true;
-    Report(DiagnosticKind::kNestingTooDeep, expr.range,
-           fmt::format("this value is defined through more than {} nested definitions and "
-                       "operations",
-                       kMaxEvaluationDepth),
-           "too deep here", "declare each `let` before the `let`s that use it");
-    return std::nullopt;
-  }
+  if (evaluation_depth_ >= kMaxEvaluationDepth) return ReportEvaluationTooDeep(expr);
   ++evaluation_depth_;
   auto value = EvaluateNested(scope, expr);
   --evaluation_depth_;
   return value;
 }
 
+// Only the recursion lives here; what each kind of value needs (and every diagnostic, whose
+// strings would make each level's stack frame large) is in the functions it calls.
 std::optional<Value> Checker::EvaluateNested(Scope& scope, const ast::Expr& expr) {
   switch (expr.kind) {
-    case ast::ExprKind::kNumber: {
-      // The parser marks a number it could not read as NaN, after reporting it.
-      if (std::isnan(expr.number)) return std::nullopt;
-      Value value{{expr.number}, dim::kDimensionless, true};
-      if (expr.unit) {
-        auto unit = ResolveUnit(*expr.unit, diagnostics_);
-        if (!unit) return std::nullopt;
-        value.components[0] *= unit->scale_to_si;
-        value.dimension = unit->dimension;
-        value.bare = false;
-      }
-      return value;
-    }
-    case ast::ExprKind::kVector: {
-      if (expr.operands.size() == 1 && expr.unit) {
-        // `(40 + 2) kg`: a parenthesised number with a unit.
-        auto inner = Evaluate(scope, expr.operands[0]);
-        auto unit = ResolveUnit(*expr.unit, diagnostics_);
-        if (!inner || !unit) return std::nullopt;
-        if (!inner->bare) {
-          Report(DiagnosticKind::kDimensionMismatch, expr.operands[0].range,
-                 "the value in parentheses has its own unit and a unit follows", "unit given twice",
-                 "write the unit once");
-          return std::nullopt;
-        }
-        for (double& component : inner->components) component *= unit->scale_to_si;
-        inner->dimension = unit->dimension;
-        inner->bare = false;
-        return inner;
-      }
-      if (expr.operands.size() != 3) {
-        Report(DiagnosticKind::kWrongVectorSize, expr.range,
-               fmt::format("a vector has three components, found {}", expr.operands.size()),
-               "not three components", "write (x, y, z)");
-        return std::nullopt;
-      }
-      Value value{{}, dim::kDimensionless, true};
-      std::optional<Dimension> common;
-      bool failed = false;
-      for (const ast::Expr& operand : expr.operands) {
-        auto component = Evaluate(scope, operand);
-        if (!component) {
-          failed = true;
-          continue;
-        }
-        if (component->components.size() != 1) {
-          Report(DiagnosticKind::kWrongValueKind, operand.range,
-                 "a vector component must be a number", "a vector inside a vector",
-                 "write each component as one number");
-          failed = true;
-          continue;
-        }
-        if (expr.unit && !component->bare) {
-          Report(DiagnosticKind::kDimensionMismatch, operand.range,
-                 "a component has its own unit and the vector has one too", "unit given twice",
-                 "write the unit once, after the closing parenthesis");
-          failed = true;
-          continue;
-        }
-        const bool zero = component->bare && component->components[0] == 0.0;
-        if (!component->bare || !zero) {
-          if (common && !(*common == component->dimension) && !component->bare) {
-            Report(DiagnosticKind::kDimensionMismatch, operand.range,
-                   fmt::format("vector components have different dimensions: {}",
-                               DescribeMismatch(*common, component->dimension)),
-                   "differs from the first component",
-                   "give every component the same dimension, or write the unit once after `)`");
-            failed = true;
-          }
-          if (!component->bare) common = component->dimension;
-          value.bare = value.bare && component->bare;
-        }
-        value.components.push_back(component->components[0]);
-      }
-      if (failed) return std::nullopt;
-      if (expr.unit) {
-        auto unit = ResolveUnit(*expr.unit, diagnostics_);
-        if (!unit) return std::nullopt;
-        for (double& component : value.components) component *= unit->scale_to_si;
-        value.dimension = unit->dimension;
-        value.bare = false;
-      } else if (common) {
-        value.dimension = *common;
-      }
-      return value;
-    }
-    case ast::ExprKind::kPath: {
-      Entity* entity = Resolve(scope, expr, {EntityKind::kParameter});
-      if (!entity) return std::nullopt;
-      Parameter& parameter = *parameters_.at(static_cast<std::size_t>(entity->index));
-      if (parameter.state == Parameter::State::kEvaluating) {
-        Report(DiagnosticKind::kCyclicDefinition, expr.range,
-               fmt::format("`{}` is defined in terms of itself", parameter.name),
-               "used in its own definition", "break the cycle with a literal value");
-        parameter.state = Parameter::State::kFailed;
-        return std::nullopt;
-      }
-      return ValueOf(parameter);
-    }
+    case ast::ExprKind::kNumber:
+      return EvaluateNumber(expr);
+    case ast::ExprKind::kVector:
+      return EvaluateVector(scope, expr);
+    case ast::ExprKind::kPath:
+      return EvaluatePath(scope, expr);
     case ast::ExprKind::kParen:
       return Evaluate(scope, expr.operands.at(0));
     case ast::ExprKind::kUnary: {
@@ -297,110 +196,232 @@ std::optional<Value> Checker::EvaluateNested(Scope& scope, const ast::Expr& expr
       auto left = Evaluate(scope, expr.operands.at(0));
       auto right = Evaluate(scope, expr.operands.at(1));
       if (!left || !right) return std::nullopt;
-      const bool left_vector = left->components.size() == 3;
-      const bool right_vector = right->components.size() == 3;
-      Value result;
-      result.bare = left->bare && right->bare;
-      if (expr.op == '+' || expr.op == '-') {
-        if (left_vector != right_vector) {
-          Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot add a vector and a number",
-                 "vector and number", "add a vector to a vector, a number to a number");
-          return std::nullopt;
-        }
-        const bool left_zero =
-            left->bare && std::all_of(left->components.begin(), left->components.end(),
-                                      [](double c) { return c == 0.0; });
-        const bool right_zero =
-            right->bare && std::all_of(right->components.begin(), right->components.end(),
-                                       [](double c) { return c == 0.0; });
-        if (!(left->dimension == right->dimension) && !left_zero && !right_zero) {
-          Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
-                 fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
-                             DescribeMismatch(left->dimension, right->dimension)),
-                 "dimensions differ",
-                 MismatchHelp(left->dimension, right->dimension).empty()
-                     ? "both sides of `+` and `-` need the same dimension; check their units"
-                     : MismatchHelp(left->dimension, right->dimension));
-          return std::nullopt;
-        }
-        result.dimension = left_zero ? right->dimension : left->dimension;
-        result.components = left->components;
-        for (std::size_t i = 0; i < result.components.size(); ++i) {
-          result.components[i] += expr.op == '+' ? right->components[i] : -right->components[i];
-        }
-        return result;
-      }
-      if (expr.op == '*' || expr.op == '/') {
-        if (left_vector && right_vector) {
-          Report(DiagnosticKind::kWrongValueKind, expr.range,
-                 "cannot multiply or divide two vectors", "two vectors",
-                 "multiply or divide a vector by a number");
-          return std::nullopt;
-        }
-        if (expr.op == '/' && right_vector) {
-          Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot divide by a vector",
-                 "vector divisor", "divide a vector by a number");
-          return std::nullopt;
-        }
-        const Value& vector_side = right_vector ? *right : *left;
-        const double scalar = right_vector ? left->components[0] : right->components[0];
-        if (expr.op == '/' && scalar == 0.0) {
-          Report(DiagnosticKind::kDivisionByZero, expr.operands[1].range,
-                 "division by zero in a constant expression", "this is zero",
-                 "the divisor evaluates to zero; check the value and the names it uses");
-          return std::nullopt;
-        }
-        result.dimension = expr.op == '*' ? left->dimension * right->dimension
-                                          : left->dimension / right->dimension;
-        result.components = vector_side.components;
-        if (&vector_side == &*left) {
-          for (double& c : result.components) c = expr.op == '*' ? c * scalar : c / scalar;
-        } else {
-          for (double& c : result.components) c *= scalar;
-        }
-        return result;
-      }
-      // '^': a scalar raised to a dimensionless constant power.
-      if (left_vector || right_vector || !right->dimension.IsDimensionless()) {
-        Report(DiagnosticKind::kInvalidExponent, expr.range,
-               "a power needs a number base and a dimensionless exponent", "invalid power",
-               "raise a number to a plain-number exponent, as in `length^2`");
-        return std::nullopt;
-      }
-      const ArithmeticResult power = Power(Quantity{left->components[0], left->dimension},
-                                           Quantity{right->components[0], right->dimension});
-      if (!power.ok()) {
-        Report(power.status == ArithmeticStatus::kDivisionByZero ? DiagnosticKind::kDivisionByZero
-                                                                 : DiagnosticKind::kInvalidExponent,
-               expr.range,
-               power.status == ArithmeticStatus::kDivisionByZero
-                   ? "zero raised to a negative power"
-                   : "a quantity with a unit can only be raised to a whole power up to 9",
-               "invalid power",
-               power.status == ArithmeticStatus::kDivisionByZero
-                   ? "a negative power of zero is infinite; check the base"
-                   : "raise a quantity with a unit to a whole number from -9 to 9; a plain "
-                     "number may take any power");
-        return std::nullopt;
-      }
-      result.components = {power.quantity.value};
-      result.dimension = power.quantity.dimension;
-      return result;
+      return Combine(expr, *left, *right);
     }
     case ast::ExprKind::kCall:
     case ast::ExprKind::kString:
     case ast::ExprKind::kBool:
     case ast::ExprKind::kArrow:
-      Report(DiagnosticKind::kWrongValueKind, expr.range,
-             fmt::format("expected a number or a vector, found {}",
-                         expr.kind == ast::ExprKind::kCall     ? "a call"
-                         : expr.kind == ast::ExprKind::kString ? "a string"
-                         : expr.kind == ast::ExprKind::kBool   ? "`" + expr.text + "`"
-                                                               : "an arrow chain"),
-             "not a quantity", "write a number with its unit, or a vector `(x, y, z) unit`");
-      return std::nullopt;
+      return ReportNotAQuantity(expr);
   }
   return std::nullopt;
+}
+
+std::optional<Value> Checker::ReportEvaluationTooDeep(const ast::Expr& expr) {
+  // Once: the rest of such a chain would report it again from each of its links.
+  if (evaluation_too_deep_) return std::nullopt;
+  evaluation_too_deep_ = true;
+  Report(DiagnosticKind::kNestingTooDeep, expr.range,
+         fmt::format("this value is defined through more than {} nested definitions and "
+                     "operations",
+                     kMaxEvaluationDepth),
+         "too deep here", "declare each `let` before the `let`s that use it");
+  return std::nullopt;
+}
+
+std::optional<Value> Checker::ReportNotAQuantity(const ast::Expr& expr) {
+  Report(DiagnosticKind::kWrongValueKind, expr.range,
+         fmt::format("expected a number or a vector, found {}",
+                     expr.kind == ast::ExprKind::kCall     ? "a call"
+                     : expr.kind == ast::ExprKind::kString ? "a string"
+                     : expr.kind == ast::ExprKind::kBool   ? "`" + expr.text + "`"
+                                                           : "an arrow chain"),
+         "not a quantity", "write a number with its unit, or a vector `(x, y, z) unit`");
+  return std::nullopt;
+}
+
+std::optional<Value> Checker::EvaluateNumber(const ast::Expr& expr) {
+  // The parser marks a number it could not read as NaN, after reporting it.
+  if (std::isnan(expr.number)) return std::nullopt;
+  Value value{{expr.number}, dim::kDimensionless, true};
+  if (expr.unit) {
+    auto unit = ResolveUnit(*expr.unit, diagnostics_);
+    if (!unit) return std::nullopt;
+    value.components[0] *= unit->scale_to_si;
+    value.dimension = unit->dimension;
+    value.bare = false;
+  }
+  return value;
+}
+
+std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr) {
+  if (expr.operands.size() == 1 && expr.unit) {
+    // `(40 + 2) kg`: a parenthesised number with a unit.
+    auto inner = Evaluate(scope, expr.operands[0]);
+    auto unit = ResolveUnit(*expr.unit, diagnostics_);
+    if (!inner || !unit) return std::nullopt;
+    if (!inner->bare) {
+      Report(DiagnosticKind::kDimensionMismatch, expr.operands[0].range,
+             "the value in parentheses has its own unit and a unit follows", "unit given twice",
+             "write the unit once");
+      return std::nullopt;
+    }
+    for (double& component : inner->components) component *= unit->scale_to_si;
+    inner->dimension = unit->dimension;
+    inner->bare = false;
+    return inner;
+  }
+  if (expr.operands.size() != 3) {
+    Report(DiagnosticKind::kWrongVectorSize, expr.range,
+           fmt::format("a vector has three components, found {}", expr.operands.size()),
+           "not three components", "write (x, y, z)");
+    return std::nullopt;
+  }
+  Value value{{}, dim::kDimensionless, true};
+  std::optional<Dimension> common;
+  bool failed = false;
+  for (const ast::Expr& operand : expr.operands) {
+    auto component = Evaluate(scope, operand);
+    if (!component) {
+      failed = true;
+      continue;
+    }
+    if (component->components.size() != 1) {
+      Report(DiagnosticKind::kWrongValueKind, operand.range, "a vector component must be a number",
+             "a vector inside a vector", "write each component as one number");
+      failed = true;
+      continue;
+    }
+    if (expr.unit && !component->bare) {
+      Report(DiagnosticKind::kDimensionMismatch, operand.range,
+             "a component has its own unit and the vector has one too", "unit given twice",
+             "write the unit once, after the closing parenthesis");
+      failed = true;
+      continue;
+    }
+    const bool zero = component->bare && component->components[0] == 0.0;
+    if (!component->bare || !zero) {
+      if (common && !(*common == component->dimension) && !component->bare) {
+        Report(DiagnosticKind::kDimensionMismatch, operand.range,
+               fmt::format("vector components have different dimensions: {}",
+                           DescribeMismatch(*common, component->dimension)),
+               "differs from the first component",
+               "give every component the same dimension, or write the unit once after `)`");
+        failed = true;
+      }
+      if (!component->bare) common = component->dimension;
+      value.bare = value.bare && component->bare;
+    }
+    value.components.push_back(component->components[0]);
+  }
+  if (failed) return std::nullopt;
+  if (expr.unit) {
+    auto unit = ResolveUnit(*expr.unit, diagnostics_);
+    if (!unit) return std::nullopt;
+    for (double& component : value.components) component *= unit->scale_to_si;
+    value.dimension = unit->dimension;
+    value.bare = false;
+  } else if (common) {
+    value.dimension = *common;
+  }
+  return value;
+}
+
+std::optional<Value> Checker::EvaluatePath(Scope& scope, const ast::Expr& expr) {
+  Entity* entity = Resolve(scope, expr, {EntityKind::kParameter});
+  if (!entity) return std::nullopt;
+  Parameter& parameter = *parameters_.at(static_cast<std::size_t>(entity->index));
+  if (parameter.state == Parameter::State::kEvaluating) return ReportCycle(expr, parameter);
+  return ValueOf(parameter);
+}
+
+std::optional<Value> Checker::ReportCycle(const ast::Expr& expr, Parameter& parameter) {
+  Report(DiagnosticKind::kCyclicDefinition, expr.range,
+         fmt::format("`{}` is defined in terms of itself", parameter.name),
+         "used in its own definition", "break the cycle with a literal value");
+  parameter.state = Parameter::State::kFailed;
+  return std::nullopt;
+}
+
+std::optional<Value> Checker::Combine(const ast::Expr& expr, const Value& left,
+                                      const Value& right) {
+  const bool left_vector = left.components.size() == 3;
+  const bool right_vector = right.components.size() == 3;
+  Value result;
+  result.bare = left.bare && right.bare;
+  if (expr.op == '+' || expr.op == '-') {
+    if (left_vector != right_vector) {
+      Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot add a vector and a number",
+             "vector and number", "add a vector to a vector, a number to a number");
+      return std::nullopt;
+    }
+    const bool left_zero = left.bare && std::all_of(left.components.begin(), left.components.end(),
+                                                    [](double c) { return c == 0.0; });
+    const bool right_zero =
+        right.bare && std::all_of(right.components.begin(), right.components.end(),
+                                  [](double c) { return c == 0.0; });
+    if (!(left.dimension == right.dimension) && !left_zero && !right_zero) {
+      Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
+             fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
+                         DescribeMismatch(left.dimension, right.dimension)),
+             "dimensions differ",
+             MismatchHelp(left.dimension, right.dimension).empty()
+                 ? "both sides of `+` and `-` need the same dimension; check their units"
+                 : MismatchHelp(left.dimension, right.dimension));
+      return std::nullopt;
+    }
+    result.dimension = left_zero ? right.dimension : left.dimension;
+    result.components = left.components;
+    for (std::size_t i = 0; i < result.components.size(); ++i) {
+      result.components[i] += expr.op == '+' ? right.components[i] : -right.components[i];
+    }
+    return result;
+  }
+  if (expr.op == '*' || expr.op == '/') {
+    if (left_vector && right_vector) {
+      Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot multiply or divide two vectors",
+             "two vectors", "multiply or divide a vector by a number");
+      return std::nullopt;
+    }
+    if (expr.op == '/' && right_vector) {
+      Report(DiagnosticKind::kWrongValueKind, expr.range, "cannot divide by a vector",
+             "vector divisor", "divide a vector by a number");
+      return std::nullopt;
+    }
+    const Value& vector_side = right_vector ? right : left;
+    const double scalar = right_vector ? left.components[0] : right.components[0];
+    if (expr.op == '/' && scalar == 0.0) {
+      Report(DiagnosticKind::kDivisionByZero, expr.operands[1].range,
+             "division by zero in a constant expression", "this is zero",
+             "the divisor evaluates to zero; check the value and the names it uses");
+      return std::nullopt;
+    }
+    result.dimension =
+        expr.op == '*' ? left.dimension * right.dimension : left.dimension / right.dimension;
+    result.components = vector_side.components;
+    if (&vector_side == &left) {
+      for (double& c : result.components) c = expr.op == '*' ? c * scalar : c / scalar;
+    } else {
+      for (double& c : result.components) c *= scalar;
+    }
+    return result;
+  }
+  // '^': a scalar raised to a dimensionless constant power.
+  if (left_vector || right_vector || !right.dimension.IsDimensionless()) {
+    Report(DiagnosticKind::kInvalidExponent, expr.range,
+           "a power needs a number base and a dimensionless exponent", "invalid power",
+           "raise a number to a plain-number exponent, as in `length^2`");
+    return std::nullopt;
+  }
+  const ArithmeticResult power = Power(Quantity{left.components[0], left.dimension},
+                                       Quantity{right.components[0], right.dimension});
+  if (!power.ok()) {
+    Report(power.status == ArithmeticStatus::kDivisionByZero ? DiagnosticKind::kDivisionByZero
+                                                             : DiagnosticKind::kInvalidExponent,
+           expr.range,
+           power.status == ArithmeticStatus::kDivisionByZero
+               ? "zero raised to a negative power"
+               : "a quantity with a unit can only be raised to a whole power up to 9",
+           "invalid power",
+           power.status == ArithmeticStatus::kDivisionByZero
+               ? "a negative power of zero is infinite; check the base"
+               : "raise a quantity with a unit to a whole number from -9 to 9; a plain "
+                 "number may take any power");
+    return std::nullopt;
+  }
+  result.components = {power.quantity.value};
+  result.dimension = power.quantity.dimension;
+  return result;
 }
 
 namespace {

@@ -112,7 +112,20 @@ class Checker {
 
   // --- values (check_values.cpp)
   std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);
-  std::optional<Value> EvaluateNested(Scope& scope, const ast::Expr& expr);  // Evaluate's body
+  // Evaluate's body and the pieces it calls. The recursion goes through Evaluate, EvaluateNested,
+  // EvaluatePath and ValueOf only; the others stay out of line (GCC and Clang would inline a
+  // function called once), so that each level of a deep value costs a small stack frame, under
+  // AddressSanitizer too.
+  std::optional<Value> EvaluateNested(Scope& scope, const ast::Expr& expr);
+  std::optional<Value> EvaluatePath(Scope& scope, const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> EvaluateNumber(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> EvaluateVector(Scope& scope, const ast::Expr& expr);
+  // A binary operation on two evaluated operands.
+  [[gnu::noinline]] std::optional<Value> Combine(const ast::Expr& expr, const Value& left,
+                                                 const Value& right);
+  [[gnu::noinline]] std::optional<Value> ReportEvaluationTooDeep(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> ReportNotAQuantity(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> ReportCycle(const ast::Expr& expr, Parameter& parameter);
   // The value of a parameter, evaluated on first use.
   std::optional<Value> ValueOf(Parameter& parameter);
   // Evaluates every parameter in the order of declaration, before anything uses them.
