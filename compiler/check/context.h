@@ -65,7 +65,8 @@ struct Scope {
   Scope* surface_frame_scope = nullptr;
 };
 
-// A parameter or `let`: evaluated on first use, in the scope where it was declared.
+// A parameter or `let`: evaluated in the scope where it was declared, in declaration order
+// (EvaluateParameters), or earlier when a value declared before it uses it.
 struct Parameter {
   std::string name;
   const ast::Expr* expr = nullptr;
@@ -126,7 +127,7 @@ class Checker {
   [[gnu::noinline]] std::optional<Value> ReportEvaluationTooDeep(const ast::Expr& expr);
   [[gnu::noinline]] std::optional<Value> ReportNotAQuantity(const ast::Expr& expr);
   [[gnu::noinline]] std::optional<Value> ReportCycle(const ast::Expr& expr, Parameter& parameter);
-  // The value of a parameter, evaluated on first use.
+  // The value of a parameter, evaluating it if it has not been yet.
   std::optional<Value> ValueOf(Parameter& parameter);
   // Evaluates every parameter in the order of declaration, before anything uses them.
   void EvaluateParameters();
