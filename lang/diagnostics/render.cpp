@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "lang/source/utf8.h"
+
 namespace sled::lang {
 namespace {
 
@@ -30,22 +32,10 @@ std::string Location(const Place& place, bool show_column_range) {
   return fmt::format("{}:{}:{}", place.path, place.start.line, place.start.column);
 }
 
-// Width in characters of a byte span, so carets line up with UTF-8 text; tabs count as one
-// because the source line is printed with tabs replaced by a single space.
-std::uint32_t CharacterWidth(std::string_view text) {
-  std::uint32_t width = 0;
-  for (unsigned char c : text) {
-    if ((c & 0xC0u) != 0x80u) ++width;
-  }
-  return width;
-}
-
 // A source line wider than this is shown as a window of it around the label, so that a
 // diagnostic in a generated or mangled file with very long lines stays readable.
 constexpr std::uint32_t kWidestShownLine = 120;
 constexpr std::uint32_t kShownBeforeLabel = 40;
-
-bool StartsCharacter(char c) { return (static_cast<unsigned char>(c) & 0xC0u) != 0x80u; }
 
 // What is shown of a source line, and how far right of its column the label's marks start.
 struct ShownLine {
@@ -62,8 +52,8 @@ ShownLine ShowLine(std::string_view line, std::size_t at) {
   std::size_t from = 0;
   std::size_t to = line.size();
   // A character is at most four bytes, so only a line of few bytes needs counting.
-  const bool wide = line.size() > kWidestShownLine &&
-                    (line.size() > 4 * kWidestShownLine || CharacterWidth(line) > kWidestShownLine);
+  const bool wide = line.size() > kWidestShownLine && (line.size() > 4 * kWidestShownLine ||
+                                                       CountCharacters(line) > kWidestShownLine);
   if (wide) {
     from = at;
     for (std::uint32_t back = 0; from > 0 && back < kShownBeforeLabel;) {
@@ -71,17 +61,17 @@ ShownLine ShowLine(std::string_view line, std::size_t at) {
     }
     to = from;
     for (std::uint32_t shown = 0; to < line.size() && shown < kWidestShownLine; ++shown) {
-      do ++to;
-      while (to < line.size() && !StartsCharacter(line[to]));
+      to = NextCharacterStart(line, to);
     }
     to = std::max(to, at);
   }
   ShownLine shown;
   shown.text = std::string(from > 0 ? "..." : "") + std::string(line.substr(from, to - from)) +
                (to < line.size() ? "..." : "");
+  // Tabs print as one space, so that characters counted from the line's bytes are columns.
   std::replace(shown.text.begin(), shown.text.end(), '\t', ' ');
-  shown.marks_at = CharacterWidth(line.substr(from, at - from)) + (from > 0 ? 3 : 0);
-  shown.room = std::max<std::uint32_t>(1, CharacterWidth(line.substr(at, to - at)));
+  shown.marks_at = CountCharacters(line.substr(from, at - from)) + (from > 0 ? 3 : 0);
+  shown.room = std::max<std::uint32_t>(1, CountCharacters(line.substr(at, to - at)));
   return shown;
 }
 
@@ -141,7 +131,7 @@ std::string RenderRich(const SourceManager& sources, const Diagnostic& diagnosti
       const std::uint32_t width =
           span_end <= label.range.begin
               ? 1
-              : CharacterWidth(buffer.text().substr(
+              : CountCharacters(buffer.text().substr(
                     label.range.begin,
                     std::min<std::uint32_t>(span_end - label.range.begin, 4 * shown.room)));
       out += fmt::format("{:>{}} {} {}\n", start.line, gutter.size(), Paint("|", "1;34", color),

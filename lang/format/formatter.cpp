@@ -10,19 +10,14 @@
 
 #include <fmt/format.h>
 
+#include "lang/source/utf8.h"
+
 namespace sled::lang {
 namespace {
 
 constexpr std::size_t kIndentWidth = 2;
 constexpr std::size_t kContinuationIndent = 4;
 constexpr std::size_t kColumnLimit = 100;
-
-// Display columns: UTF-8 continuation bytes take none.
-std::size_t Columns(std::string_view text) {
-  std::size_t columns = 0;
-  for (const char c : text) columns += (static_cast<unsigned char>(c) & 0xC0u) != 0x80u;
-  return columns;
-}
 
 bool HasOwnSpelling(const ast::Expr& expr) { return IsNumberSpelling(expr.text); }
 
@@ -229,7 +224,7 @@ class Printer {
                           !IsEmpty(*statement.block);
     if (has_body && statement.block->one_line) {
       if (auto inside = OneLineBody(*statement.block);
-          inside && Columns(line) + 1 + Columns(*inside) + 2 <= kColumnLimit) {
+          inside && CountCharacters(line) + 1 + CountCharacters(*inside) + 2 <= kColumnLimit) {
         line += ' ' + *inside + " }";
         AppendTrailingComment(statement, line);
         out_ += line + '\n';
@@ -316,10 +311,10 @@ class Printer {
     }
     line += " =";
     std::vector<std::string> values;
-    std::size_t total = Columns(line) + Columns(opener);
+    std::size_t total = CountCharacters(line) + CountCharacters(opener);
     for (const ast::Expr& value : statement.values) {
       values.push_back(ExprText(value));
-      total += 2 + Columns(values.back());  // ", " or the space after `=`
+      total += 2 + CountCharacters(values.back());  // ", " or the space after `=`
     }
     const bool wrap = total > kColumnLimit && values.size() > 1;
     const std::string continuation = std::string(depth * kIndentWidth + kContinuationIndent, ' ');
@@ -328,8 +323,8 @@ class Printer {
         line += ' ';
       } else if (wrap) {
         // What must still fit on this line after the value: its comma, or the `{` at the end.
-        const std::size_t after = i + 1 == values.size() ? Columns(opener) : 1;
-        if (Columns(line) + 2 + Columns(values[i]) + after > kColumnLimit) {
+        const std::size_t after = i + 1 == values.size() ? CountCharacters(opener) : 1;
+        if (CountCharacters(line) + 2 + CountCharacters(values[i]) + after > kColumnLimit) {
           out_ += line;
           out_ += ",\n";
           line = continuation;

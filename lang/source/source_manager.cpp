@@ -6,19 +6,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "lang/source/utf8.h"
+
 namespace sled::lang {
-namespace {
-
-// Counts characters, not bytes: UTF-8 continuation bytes do not start a character.
-std::uint32_t CountCharacters(std::string_view text) {
-  std::uint32_t count = 0;
-  for (unsigned char c : text) {
-    if ((c & 0xC0u) != 0x80u) ++count;
-  }
-  return count;
-}
-
-}  // namespace
 
 SourceBuffer::SourceBuffer(std::string path, std::string text)
     : path_(std::move(path)), text_(std::move(text)) {
@@ -27,7 +17,7 @@ SourceBuffer::SourceBuffer(std::string path, std::string text)
   for (std::uint32_t i = 0; i < text_.size(); ++i) {
     if (i % kBlockBytes == 0) characters_before_block_.push_back(characters);
     if (text_[i] == '\n') line_starts_.push_back(i + 1);
-    if ((static_cast<unsigned char>(text_[i]) & 0xC0u) != 0x80u) ++characters;
+    if (StartsCharacter(text_[i])) ++characters;
   }
   // The end of a text whose size is a whole number of blocks starts a block of its own.
   if (text_.size() % kBlockBytes == 0) characters_before_block_.push_back(characters);
@@ -65,10 +55,7 @@ std::uint32_t SourceBuffer::OffsetOf(std::uint32_t line, std::uint32_t column) c
   std::uint32_t offset = 0;
   std::uint32_t characters = 1;
   while (offset < rest.size() && characters < column) {
-    ++offset;
-    while (offset < rest.size() && (static_cast<unsigned char>(rest[offset]) & 0xC0u) == 0x80u) {
-      ++offset;
-    }
+    offset = static_cast<std::uint32_t>(NextCharacterStart(rest, offset));
     ++characters;
   }
   return start + offset;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "lang/source/utf8.h"
 #include "lang/syntax/grammar.h"
 #include "lang/syntax/lexical.h"
 #include "lang/syntax/syntax_tree.h"
@@ -223,7 +224,7 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
     std::size_t i = 1;
     for (; i < length && at + i < text.size(); ++i) {
       const auto next = static_cast<unsigned char>(text[at + i]);
-      if ((next & 0xC0u) != 0x80u) break;
+      if (StartsCharacter(static_cast<char>(next))) break;
       code = (code << 6) | (next & 0x3Fu);
     }
     if (length == 1 || i != length) return fmt::format("byte 0x{:02X}", lead);
@@ -281,11 +282,7 @@ struct Action<g::skip> {
     const bool at_line_end = at >= text.size() || c == '\n' || c == '\r';
     if (control || non_ascii || meaningless) {
       problem.kind = DiagnosticKind::kInvalidCharacter;
-      std::uint32_t end = at + 1;
-      while (end < text.size() && (static_cast<unsigned char>(text[end]) & 0xC0u) == 0x80u) {
-        ++end;
-      }
-      problem.end = end;
+      problem.end = static_cast<std::uint32_t>(NextCharacterStart(text, at));
       problem.message =
           fmt::format("unexpected {} outside a string or comment", DescribeFound(text, at));
       problem.label = "not part of the language";
