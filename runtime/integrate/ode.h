@@ -81,8 +81,9 @@ struct IntegratorStats {
   // with a decay rate (the rest were plain third-order Runge-Kutta steps); 0 for other methods.
   long decaying_steps = 0;
   // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance),
-  // and an estimate of the global error: the sum over steps of the local error estimates in
-  // the weighted norm, times the tolerance scale.
+  // and the sum over steps of the local error estimates in the weighted norm, times the
+  // tolerance scale: a loose bound on the global error in the state's units (it can exceed the
+  // error measured by `sled study` by orders of magnitude), not a measure of it.
   double max_local_error = 0.0;
   double accumulated_error = 0.0;
 };

@@ -17,15 +17,9 @@ namespace {
 using ::testing::HasSubstr;
 using Study = SledProcessTest;
 
-TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
-  const fs::path out = temp() / "study";
-  const SledResult result =
-      Sled({"study", "examples/pendulum.sled", "--tolerances", "1e-3,1e-6", "-o", out.string()});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_THAT(result.out, HasSubstr("the scene's own settings"));
-  EXPECT_THAT(result.out, HasSubstr("reference: dopri5 at 1e-08"));
-
-  std::istringstream csv(ReadText(out / "study.csv"));
+// The rows of study.csv, each split at its commas (the header left out).
+std::vector<std::vector<std::string>> StudyRows(const std::string& text) {
+  std::istringstream csv(text);
   std::string line;
   std::getline(csv, line);
   EXPECT_THAT(line, HasSubstr("method,tolerance,wall_seconds"));
@@ -36,6 +30,27 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
     for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
     rows.push_back(cells);
   }
+  return rows;
+}
+
+// The number after `marker` in `text` (a leading `<` skipped), or -1 when it is not there.
+double NumberAfter(const std::string& text, const std::string& marker) {
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) return -1.0;
+  std::size_t start = at + marker.size();
+  if (start < text.size() && text[start] == '<') ++start;
+  return std::stod(text.substr(start));
+}
+
+TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
+  const fs::path out = temp() / "study";
+  const SledResult result =
+      Sled({"study", "examples/pendulum.sled", "--tolerances", "1e-3,1e-6", "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_THAT(result.out, HasSubstr("the scene's own settings"));
+  EXPECT_THAT(result.out, HasSubstr("reference: dopri5 at 1e-08"));
+
+  const std::vector<std::vector<std::string>> rows = StudyRows(ReadText(out / "study.csv"));
   ASSERT_EQ(rows.size(), 6u);  // three methods, two tolerances, loosest first
   for (std::size_t m = 0; m < 3; ++m) {
     const auto& loose = rows[2 * m];
@@ -59,6 +74,46 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
   for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
     EXPECT_THAT(svg, HasSubstr(method));
   }
+}
+
+TEST_F(Study, NamesTheFastestRunAsAccurateAsTheScenesOwnSettings) {
+  // The mass-ratio case runs the exponential method at 1e-6; dopri5's fifth order reaches its
+  // error level much sooner, so the ladder holds faster runs at least as accurate.
+  const fs::path out = temp() / "study";
+  const SledResult result = Sled({"study", "examples/numerics/mass_ratio.sled", "--tolerances",
+                                  "1e-3,1e-5,1e-7", "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const double floor = NumberAfter(result.out, "there differs from it by ");
+  const double own_error = NumberAfter(result.out, "(exponential at 1e-06): error ");
+  const double own_seconds =
+      NumberAfter(result.out, "of the channels' ranges, - in the criteria, in ");
+  ASSERT_GT(floor, 0.0) << result.out;
+  ASSERT_GT(own_error, floor) << result.out;
+  ASSERT_GT(own_seconds, 0.0) << result.out;
+
+  // The named run is in the ladder, no less accurate than the scene's settings (to the three
+  // digits printed), and faster than every other run that is clearly as accurate.
+  const std::string marker = "the same accuracy, fastest in the ladder: ";
+  const std::size_t at = result.out.find(marker);
+  ASSERT_NE(at, std::string::npos) << result.out;
+  std::istringstream named(result.out.substr(at + marker.size()));
+  std::string method, word, tolerance;
+  named >> method >> word >> tolerance;
+  tolerance.pop_back();  // the comma
+  const std::vector<std::vector<std::string>> rows = StudyRows(ReadText(out / "study.csv"));
+  ASSERT_EQ(rows.size(), 9u);
+  const std::vector<std::string>* chosen = nullptr;
+  for (const auto& row : rows) {
+    if (row[0] == method && std::stod(row[1]) == std::stod(tolerance)) chosen = &row;
+  }
+  ASSERT_NE(chosen, nullptr) << method << " at " << tolerance;
+  EXPECT_LE(std::stod((*chosen)[6]), own_error * 1.005);
+  for (const auto& row : rows) {
+    if (row[10] == "0" && std::stod(row[6]) < 0.995 * own_error) {
+      EXPECT_LE(std::stod((*chosen)[2]), std::stod(row[2])) << row[0] << " at " << row[1];
+    }
+  }
+  EXPECT_EQ(method, "dopri5");  // the fifth-order method, on this smooth case
 }
 
 TEST_F(Study, AReferenceThatFailsIsANumericalFailureWithItsRowsKept) {
