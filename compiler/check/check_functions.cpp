@@ -23,8 +23,6 @@ std::vector<std::string> QuantityNames() {
   return names;
 }
 
-bool IsBareZero(const Value& value) { return value.bare && value.components == std::vector{0.0}; }
-
 }  // namespace
 
 bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use) {

@@ -345,11 +345,8 @@ std::optional<Value> Checker::Combine(const ast::Expr& expr, const Value& left,
              "vector and number", "add a vector to a vector, a number to a number");
       return std::nullopt;
     }
-    const bool left_zero = left.bare && std::all_of(left.components.begin(), left.components.end(),
-                                                    [](double c) { return c == 0.0; });
-    const bool right_zero =
-        right.bare && std::all_of(right.components.begin(), right.components.end(),
-                                  [](double c) { return c == 0.0; });
+    const bool left_zero = IsBareZero(left);
+    const bool right_zero = IsBareZero(right);
     if (!(left.dimension == right.dimension) && !left_zero && !right_zero) {
       Report(DiagnosticKind::kIncompatibleArithmetic, expr.range,
              fmt::format("cannot {} {}", expr.op == '+' ? "add" : "subtract",
@@ -428,10 +425,7 @@ namespace {
 
 // A bare zero fits any dimension; other bare numbers fit only where no unit is expected.
 bool FitsDimension(const Value& value, Dimension expected) {
-  if (value.dimension == expected) return true;
-  if (!value.bare) return false;
-  return std::all_of(value.components.begin(), value.components.end(),
-                     [](double c) { return c == 0.0; });
+  return value.dimension == expected || IsBareZero(value);
 }
 
 }  // namespace

@@ -84,6 +84,14 @@ struct Parameter {
 
 using Value = Parameter::Value;
 
+// A number or vector of zeros written without a unit: it fits any dimension (`0`, `(0, 0, 0)`).
+inline bool IsBareZero(const Value& value) {
+  for (const double component : value.components) {
+    if (component != 0.0) return false;
+  }
+  return value.bare;
+}
+
 // A function whose signature is not written (`polynomial(0, 2.5 N*m/deg)`) gets it from its
 // first use; the raw coefficients are kept until then.
 struct PendingPolynomial {
