@@ -27,6 +27,11 @@ std::uint64_t Fnv1a(const std::string& text) {
   return hash;
 }
 
+// The checksum that ends a format-2 file: FNV-1a of the payload in kChecksumDigits hex digits.
+std::string ChecksumText(const std::string& payload) {
+  return fmt::format("{:0{}x}", Fnv1a(payload), kChecksumDigits);
+}
+
 // The Model's dump without what may change between the saved and the resumed run: the title,
 // the run settings (compared separately), the output requests and where things were declared.
 std::string PhysicsText(const Model& model) {
@@ -80,7 +85,7 @@ bool WriteCheckpoint(const std::string& path, const Checkpoint& checkpoint, std:
   archive.Resizable(copy.series.values);
   archive.Resizable(copy.state);
   std::ofstream out(path, std::ios::binary);
-  out << kMagic << archive.bytes() << fmt::format("{:016x}", Fnv1a(archive.bytes()));
+  out << kMagic << archive.bytes() << ChecksumText(archive.bytes());
   if (!out) {
     *error = fmt::format("cannot write the checkpoint `{}`", path);
     return false;
@@ -111,8 +116,7 @@ bool ReadCheckpoint(const std::string& path, Checkpoint* checkpoint, std::string
   }
   const std::string_view rest = std::string_view(bytes).substr(magic.size());
   const std::string payload(rest.substr(0, rest.size() - std::min(rest.size(), kChecksumDigits)));
-  if (rest.size() < kChecksumDigits ||
-      rest.substr(payload.size()) != fmt::format("{:016x}", Fnv1a(payload))) {
+  if (rest.size() < kChecksumDigits || rest.substr(payload.size()) != ChecksumText(payload)) {
     *error = fmt::format(
         "the checkpoint `{}` is truncated or damaged: its checksum does not match its contents",
         path);
