@@ -223,8 +223,8 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
     std::uint32_t code = length == 1 ? lead : lead & (0x7Fu >> length);
     std::size_t i = 1;
     for (; i < length && at + i < text.size(); ++i) {
+      if (StartsCharacter(text[at + i])) break;
       const auto next = static_cast<unsigned char>(text[at + i]);
-      if (StartsCharacter(static_cast<char>(next))) break;
       code = (code << 6) | (next & 0x3Fu);
     }
     if (length == 1 || i != length) return fmt::format("byte 0x{:02X}", lead);
