@@ -2,9 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 
 #include <fmt/format.h>
+
+#include "runtime/atomic_file.h"
 
 namespace sled::runtime {
 
@@ -38,7 +39,7 @@ std::string JsonString(const std::string& text) {
 namespace {
 
 // The "criteria" array; a value that was not computed is null, with the reason.
-void WriteCriteria(std::ofstream& out, const std::vector<post::CriterionValue>& criteria) {
+void WriteCriteria(AtomicFile& out, const std::vector<post::CriterionValue>& criteria) {
   auto number = [](bool known, double value) {
     return known && std::isfinite(value) ? fmt::format("{}", value) : std::string("null");
   };
@@ -65,15 +66,11 @@ void WriteCriteria(std::ofstream& out, const std::vector<post::CriterionValue>& 
 }  // namespace
 
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    if (error) *error = fmt::format("cannot write `{}`", path);
-    return false;
-  }
+  AtomicFile out(path);
   // Names hold no commas or quotes (dotted names and units), so they need no CSV quoting.
-  out << "time [s]";
-  for (const std::string& name : series.names) out << ',' << name;
-  out << '\n';
+  std::string header = "time [s]";
+  for (const std::string& name : series.names) header += ',' + name;
+  out << header << "\n";
   std::string line;
   for (std::size_t row = 0; row < series.rows(); ++row) {
     line.clear();
@@ -82,23 +79,16 @@ bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::
       // Shortest text that reads back to the same double.
       line += fmt::format("{}", series.values[row * series.columns + column]);
     }
-    out << line << '\n';
+    line += '\n';
+    out << line;
   }
-  if (!out) {
-    if (error) *error = fmt::format("writing `{}` failed", path);
-    return false;
-  }
-  return true;
+  return out.Commit(error);
 }
 
 bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
                       const RunSummary& summary, const std::vector<std::string>& warnings,
                       std::string* error, const std::vector<post::CriterionValue>& criteria) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    if (error) *error = fmt::format("cannot write `{}`", path);
-    return false;
-  }
+  AtomicFile out(path);
   const IntegratorStats& s = summary.stats;
   out << "{\n";
   out << fmt::format("  \"scenario\": {},\n", JsonString(model.title));
@@ -149,11 +139,7 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   }
   out << (warnings.empty() ? "]\n" : "\n  ]\n");
   out << "}\n";
-  if (!out) {
-    if (error) *error = fmt::format("writing `{}` failed", path);
-    return false;
-  }
-  return true;
+  return out.Commit(error);
 }
 
 }  // namespace sled::runtime

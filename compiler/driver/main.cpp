@@ -12,8 +12,10 @@
 #include <fmt/format.h>
 
 #include "compiler/check/check.h"
+#include "compiler/driver/command_help.h"
 #include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/explain_pages.h"
+#include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
 #include "compiler/driver/study_command.h"
@@ -22,6 +24,7 @@
 #include "lang/format/formatter.h"
 #include "lang/legacy/convert.h"
 #include "lang/syntax/parser.h"
+#include "runtime/atomic_file.h"
 
 namespace {
 
@@ -33,59 +36,6 @@ using sled::lang::SourceManager;
 constexpr int kExitOk = 0;
 constexpr int kExitInputErrors = 1;
 constexpr int kExitUsage = 2;
-
-constexpr std::string_view kUsage = R"(usage: sled <command> [options] [files]
-
-commands:
-  check FILE...        parse, check and lint scenarios; print diagnostics
-  fmt FILE... [--check]
-                       rewrite files in canonical form (--check: only report)
-  run FILE [-o DIR]    compile and simulate; write into DIR timeseries.csv,
-                       timeseries_filtered.csv, summary.json and animation.glb (DIR
-                       defaults to FILE's name with `-out`); exit 3 on a numerical
-                       failure, keeping the outputs up to it
-  report DIR [-o FILE] one HTML page of the run in DIR (the folder `run` wrote): summary,
-                       criteria against limits, plots of the channels, the animation;
-                       FILE defaults to DIR/report.html
-  study FILE [-o DIR]  the scene with every integrator over a ladder of tolerances against a
-                       tight reference: error against run time as a table, DIR/study.csv
-                       and the work-precision plot DIR/study.svg (DIR defaults to FILE's
-                       name with `-study`); the error of the scene's own settings
-  convert DECK [-o FILE] [--blank-zero] [--deck=ain|lin] [--approximate-airbags]
-                       translate a CVS-III/ATB deck, fixed-column (.ain) or
-                       list-directed (.lin), into a .sled scenario (standard output
-                       without -o); --deck reads another extension as that format;
-                       --blank-zero reads blank columns as zeros (FORTRAN IV decks);
-                       --approximate-airbags converts D.4 airbags to sled's bag, with a
-                       warning for each approximation (else a deck with airbags is refused)
-  explain CODE         the long explanation of a diagnostic code, such as E0204
-
-options for check and run:
-  --diagnostics=rich|compact   diagnostic style (default rich)
-  --set NAME=VALUE             override a `param` of the scenario
-  --stdlib DIR                 the standard library folder
-  --no-lints                   report errors only
-  --dump-ast                   print the syntax tree
-  --dump-checked               print the checked scenario
-  --dump-model                 print the compiled runtime model (and, on standard error,
-                               what it leaves out)
-
-options for run:
-  -o, --output DIR             the output folder
-  --format csv|iso-mme         iso-mme: also write the ISO-MME data set into DIR/iso-mme
-                               (csv, the default, is always written)
-  --dump-at T[,T...]           write every state variable and force at each time T (seconds,
-                               or with ms: 0.05,80ms) into DIR/dump_<T>.txt; the integrator
-                               stops exactly there
-  --checkpoint-every T         write a checkpoint every T (a multiple of the output step)
-                               into DIR/checkpoint_<t>s.bin
-  --resume FILE                continue from a checkpoint, bit for bit as the run that wrote
-                               it; the scene may change only its end time and output requests
-  --report                     also write DIR/report.html, as `sled report DIR` does
-
-options for study:
-  --tolerances T,T,...         the relative tolerances of the ladder (default 1e-3 to 1e-7)
-)";
 
 struct Options {
   std::string command;
@@ -110,15 +60,28 @@ struct Options {
   std::vector<double> tolerances;
 };
 
-int UsageError(const std::string& message) {
-  std::cerr << "sled: " << message << "\n\n" << kUsage;
+// The message, then how to get help: the command's own options when there is a command.
+int UsageError(const std::string& message, const std::string& command = "") {
+  std::cerr << "sled: " << message << '\n';
+  if (const auto* help = sled::driver::FindCommand(command)) {
+    std::cerr << fmt::format("usage: {}\n`sled {} --help` lists its options\n", help->synopsis,
+                             help->name);
+  } else {
+    std::cerr << '\n' << sled::driver::OverviewText();
+  }
   return kExitUsage;
+}
+
+std::vector<std::string> CommandNames() {
+  std::vector<std::string> names;
+  for (const auto& command : sled::driver::Commands()) names.emplace_back(command.name);
+  return names;
 }
 
 bool ColorWanted() { return isatty(STDERR_FILENO) && std::getenv("NO_COLOR") == nullptr; }
 
 int RunCheck(const Options& options) {
-  if (options.files.empty()) return UsageError("`check` needs at least one file");
+  if (options.files.empty()) return UsageError("`check` needs at least one file", options.command);
   bool errors = false;
   for (const std::string& path : options.files) {
     SourceManager sources;
@@ -152,7 +115,7 @@ int RunCheck(const Options& options) {
 }
 
 int RunFormat(const Options& options) {
-  if (options.files.empty()) return UsageError("`fmt` needs at least one file");
+  if (options.files.empty()) return UsageError("`fmt` needs at least one file", options.command);
   bool changed_or_failed = false;
   for (const std::string& path : options.files) {
     SourceManager sources;
@@ -183,8 +146,8 @@ int RunFormat(const Options& options) {
       continue;
     }
     std::string why;
-    if (differs && !sled::lang::ReplaceFile(path, formatted, &why)) {
-      std::cerr << fmt::format("sled: cannot write `{}` ({}); it was left unchanged\n", path, why);
+    if (differs && !sled::runtime::ReplaceFile(path, formatted, &why)) {
+      std::cerr << fmt::format("sled: {}; `{}` was left unchanged\n", why, path);
       changed_or_failed = true;
     }
   }
@@ -192,18 +155,20 @@ int RunFormat(const Options& options) {
 }
 
 int RunConvert(const Options& options) {
-  if (options.files.size() != 1) return UsageError("`convert` takes one deck");
+  if (options.files.size() != 1) return UsageError("`convert` takes one deck", options.command);
   std::optional<sled::lang::legacy::DeckFormat> format =
       sled::lang::legacy::DeckFormatOfPath(options.files[0]);
   if (options.deck_format == "ain") format = sled::lang::legacy::DeckFormat::kFixed;
   if (options.deck_format == "lin") format = sled::lang::legacy::DeckFormat::kList;
   if (!format) {
-    return UsageError(fmt::format(
-        "`{}` is neither an .ain nor a .lin deck; say which with --deck=ain or --deck=lin",
-        options.files[0]));
+    return UsageError(
+        fmt::format(
+            "`{}` is neither an .ain nor a .lin deck; say which with --deck=ain or --deck=lin",
+            options.files[0]),
+        options.command);
   }
   if (options.blank_zero && *format == sled::lang::legacy::DeckFormat::kList) {
-    return UsageError("--blank-zero applies to fixed-column (.ain) decks only");
+    return UsageError("--blank-zero applies to fixed-column (.ain) decks only", options.command);
   }
   SourceManager sources;
   DiagnosticCollector collector;
@@ -226,15 +191,16 @@ int RunConvert(const Options& options) {
     return kExitOk;
   }
   std::string why;
-  if (!sled::lang::ReplaceFile(options.output_directory, text, &why)) {
-    std::cerr << fmt::format("sled: cannot write `{}` ({})\n", options.output_directory, why);
+  if (!sled::runtime::ReplaceFile(options.output_directory, text, &why)) {
+    std::cerr << fmt::format("sled: {}\n", why);
     return kExitInputErrors;
   }
   return kExitOk;
 }
 
 int RunExplain(const Options& options) {
-  if (options.files.size() != 1) return UsageError("`explain` takes one diagnostic code");
+  if (options.files.size() != 1)
+    return UsageError("`explain` takes one diagnostic code", options.command);
   std::string code = options.files[0];
   for (char& c : code) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   if (auto page = sled::driver::ExplainPage(code)) {
@@ -255,12 +221,40 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty()) return UsageError("no command given");
   if (args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::cout << kUsage;
+    // `sled help run` is `sled run --help`.
+    const auto* command = args.size() > 1 ? sled::driver::FindCommand(args[1]) : nullptr;
+    std::cout << (command ? sled::driver::CommandHelpText(*command) : sled::driver::OverviewText());
+    return kExitOk;
+  }
+  if (args[0] == "--version" || args[0] == "-V" || args[0] == "version") {
+    std::cout << sled::driver::VersionText();
     return kExitOk;
   }
   options.command = args[0];
+  const sled::driver::CommandHelp* command = sled::driver::FindCommand(options.command);
+  if (!command) {
+    const std::string hint = sled::lang::DidYouMean(options.command, CommandNames());
+    return UsageError(
+        fmt::format("unknown command `{}`{}", options.command, hint.empty() ? "" : "; " + hint));
+  }
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      std::cout << sled::driver::CommandHelpText(*command);
+      return kExitOk;
+    }
+    // An option of another command is refused, not ignored: `sled check -o out` writes nothing.
+    if (arg.size() > 1 && arg[0] == '-' &&
+        !sled::driver::TakesOption(*command, sled::driver::OptionName(arg))) {
+      const bool known = std::any_of(
+          sled::driver::Commands().begin(), sled::driver::Commands().end(), [&](const auto& other) {
+            return sled::driver::TakesOption(other, sled::driver::OptionName(arg));
+          });
+      return UsageError(known ? fmt::format("`sled {}` takes no option `{}`", command->name,
+                                            sled::driver::OptionName(arg))
+                              : fmt::format("unknown option `{}`", arg),
+                        options.command);
+    }
     if (arg == "--diagnostics=compact") {
       options.compact = true;
     } else if (arg == "--diagnostics=rich") {
@@ -280,53 +274,70 @@ int main(int argc, char** argv) {
     } else if (arg.rfind("--deck=", 0) == 0) {
       options.deck_format = arg.substr(7);
       if (options.deck_format != "ain" && options.deck_format != "lin") {
-        return UsageError(fmt::format("`{}`: the deck format is `ain` or `lin`", arg));
+        return UsageError(fmt::format("`{}`: the deck format is `ain` or `lin`", arg),
+                          options.command);
       }
     } else if (arg == "--no-lints") {
       options.lints = false;
     } else if (arg == "-o" || arg == "--output") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a folder", arg));
+      // `-o ""` is a mistake (an unset shell variable), not a request for the default.
+      if (i + 1 >= args.size() || args[i + 1].empty()) {
+        return UsageError(
+            fmt::format("`{}` needs a {}", arg,
+                        options.command == "run" || options.command == "study" ? "folder" : "file"),
+            options.command);
+      }
       options.output_directory = args[++i];
     } else if (arg == "--format" || arg == "--dump-at") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
+      if (i + 1 >= args.size())
+        return UsageError(fmt::format("`{}` needs a value", arg), options.command);
       std::string error;
       const bool parsed =
           arg == "--format" ? sled::driver::ParseFormats(args[++i], &options.iso_mme, &error)
                             : sled::driver::ParseDumpTimes(args[++i], &options.dump_times, &error);
-      if (!parsed) return UsageError(error);
+      if (!parsed) return UsageError(error, options.command);
     } else if (arg == "--checkpoint-every") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a time", arg));
+      if (i + 1 >= args.size())
+        return UsageError(fmt::format("`{}` needs a time", arg), options.command);
       const std::string& value = args[++i];
       if (!sled::driver::ParseTime(value, &options.checkpoint_every) ||
           !(options.checkpoint_every > 0)) {
-        return UsageError(fmt::format(
-            "`--checkpoint-every {}`: write a positive time in seconds or with ms (50ms)", value));
+        return UsageError(
+            fmt::format(
+                "`--checkpoint-every {}`: write a positive time in seconds or with ms (50ms)",
+                value),
+            options.command);
       }
     } else if (arg == "--tolerances") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a list", arg));
+      if (i + 1 >= args.size())
+        return UsageError(fmt::format("`{}` needs a list", arg), options.command);
       std::string error;
       if (!sled::driver::ParseTolerances(args[++i], &options.tolerances, &error)) {
-        return UsageError(error);
+        return UsageError(error, options.command);
       }
     } else if (arg == "--report") {
       options.report = true;
     } else if (arg == "--resume") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a checkpoint file", arg));
+      if (i + 1 >= args.size())
+        return UsageError(fmt::format("`{}` needs a checkpoint file", arg), options.command);
       options.resume = args[++i];
     } else if (arg == "--stdlib" || arg == "--set") {
-      if (i + 1 >= args.size()) return UsageError(fmt::format("`{}` needs a value", arg));
+      if (i + 1 >= args.size())
+        return UsageError(fmt::format("`{}` needs a value", arg), options.command);
       const std::string& value = args[++i];
       if (arg == "--stdlib") {
         options.stdlib = value;
       } else {
         const auto equals = value.find('=');
         if (equals == std::string::npos || equals == 0) {
-          return UsageError(fmt::format("`--set {}`: write NAME=VALUE", value));
+          return UsageError(fmt::format("`--set {}`: write NAME=VALUE", value), options.command);
         }
         options.overrides.emplace_back(value.substr(0, equals), value.substr(equals + 1));
       }
-    } else if (arg.size() > 1 && arg[0] == '-' && arg != "-") {
-      return UsageError(fmt::format("unknown option `{}`", arg));
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      return UsageError(
+          fmt::format("`{}`: write the option as `sled {} --help` shows", arg, options.command),
+          options.command);
     } else {
       options.files.push_back(arg);
     }
@@ -337,12 +348,14 @@ int main(int argc, char** argv) {
     if (options.command == "explain") return RunExplain(options);
     if (options.command == "convert") return RunConvert(options);
     if (options.command == "report") {
-      if (options.files.size() != 1) return UsageError("`report` takes one run folder");
+      if (options.files.size() != 1)
+        return UsageError("`report` takes one run folder", options.command);
       return sled::driver::ReportCommand(options.files[0], options.output_directory);
     }
     if (options.command == "run" || options.command == "study") {
       if (options.files.size() != 1) {
-        return UsageError(fmt::format("`{}` takes one scenario file", options.command));
+        return UsageError(fmt::format("`{}` takes one scenario file", options.command),
+                          options.command);
       }
       sled::driver::RunCommandOptions run;
       run.file = options.files[0];
@@ -351,7 +364,7 @@ int main(int argc, char** argv) {
       run.overrides = options.overrides;
       run.compact_diagnostics = options.compact;
       run.color = ColorWanted();
-      run.progress = isatty(STDERR_FILENO) != 0;
+      run.progress = sled::driver::ProgressLine::Wanted();
       run.iso_mme = options.iso_mme;
       run.dump_times = options.dump_times;
       run.checkpoint_every = options.checkpoint_every;

@@ -12,6 +12,7 @@
 
 #include "compiler/check/check.h"
 #include "compiler/driver/driver_diagnostics.h"
+#include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/syntax/parser.h"
@@ -71,12 +72,6 @@ std::string TestName(const std::string& file) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
   }
   return name.empty() ? "sled" : name;
-}
-
-void ShowProgress(double fraction, void* context) {
-  (void)context;
-  std::fprintf(stderr, "\r  simulating: %3d %%", static_cast<int>(fraction * 100 + 0.5));
-  std::fflush(stderr);
 }
 
 // One line per criterion value: `  hic15(occupant.head) = 173.4 (limit 700, FMVSS 208): pass`.
@@ -280,14 +275,18 @@ int RunCommand(const RunCommandOptions& options) {
   runtime::AnimationRecorder animation(model, runtime::OutputRowCount(model));
   RunRecorder recorder(animation, directory);
   runtime::RunOptions run_options;
-  if (options.progress) run_options.progress = ShowProgress;
+  ProgressLine progress(options.progress);
+  if (progress.enabled()) {
+    run_options.progress = ProgressLine::ShowRunFraction;
+    run_options.progress_context = &progress;
+  }
   run_options.observer = &recorder;
   run_options.stop_times = options.dump_times;
   run_options.checkpoint_every = checkpoint_every;
   run_options.checkpoint_directory = directory;
   if (!resume.empty()) run_options.resume = &checkpoint;
   runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
-  if (options.progress) std::fprintf(stderr, "\r%30s\r", "");
+  progress.Clear();
   if (summary.failed) LocateFailure(model, summary.failure);
 
   // Filtered channels and injury criteria, from the rows there are (up to a failure).

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "compiler/driver/progress_line.h"
 #include "compiler/report/svg_plot.h"
 #include "runtime/output_writer.h"
 #include "runtime/post/injury_criteria.h"
@@ -168,13 +169,22 @@ int StudyCommand(const StudyOptions& options) {
 
   // The reference, and a second method at the same tolerance to say how good it is.
   const double tightest = ladder.back() / 100;
-  std::cerr << fmt::format("sled: reference: dopri5 at {:.0e}\n", tightest);
+  // On a terminal, which run of the study is under way; nothing when piped.
+  ProgressLine progress(options.scene.progress);
+  const std::size_t runs = 3 + methods.size() * ladder.size();
+  std::size_t run = 0;
+  auto show = [&](const std::string& method, double tolerance) {
+    progress.Show(
+        fmt::format("  study: run {} of {}, {} at {:.0e}", ++run, runs, method, tolerance), true);
+  };
+  show("dopri5 (reference)", tightest);
   const Sample reference = RunSample(scene, "dopri5", tightest);
   std::string directory = options.scene.output_directory;
   if (directory.empty()) {
     directory = std::filesystem::path(options.scene.file).stem().string() + "-study";
   }
   if (reference.summary.failed) {
+    progress.Clear();
     // Nothing to measure against: a numerical failure of the scene itself. Its rows up to the
     // failure are kept for a look at what went wrong.
     std::cerr << fmt::format("sled: the reference run failed {}\n",
@@ -190,18 +200,21 @@ int StudyCommand(const StudyOptions& options) {
     std::cerr << fmt::format("  its outputs up to the failure are in `{}`\n", path);
     return kExitNumericalFailure;
   }
+  show("exponential (reference check)", tightest);
   Sample check = RunSample(scene, "exponential", tightest);
   Compare(scene, check, reference);
 
   std::vector<Sample> samples;
   for (const std::string& method : methods) {
     for (const double tolerance : ladder) {
-      std::cerr << fmt::format("sled: {} at {:.0e}\n", method, tolerance);
+      show(method, tolerance);
       samples.push_back(RunSample(scene, method, tolerance));
       Compare(scene, samples.back(), reference);
     }
   }
+  show(scene.integrator + " (the scene's own)", scene.relative_tolerance);
   Sample own = RunSample(scene, scene.integrator, scene.relative_tolerance);
+  progress.Clear();
   Compare(scene, own, reference);
 
   std::cout << fmt::format("{:<12} {:>8} {:>9} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}\n",

@@ -95,40 +95,6 @@ std::string_view SourceManager::Text(const SourceRange& range) const {
   return text.substr(range.begin, range.end - range.begin);
 }
 
-bool ReplaceFile(const std::string& path, std::string_view text, std::string* error) {
-  namespace fs = std::filesystem;
-  std::error_code code;
-  fs::path target(path);
-  // A path that does not exist yet (a new file) is no link; is_symlink would report it missing.
-  if (fs::is_symlink(fs::symlink_status(target, code))) {
-    target = fs::canonical(target, code);
-    if (code) {
-      *error = code.message();
-      return false;
-    }
-  }
-  const fs::path temporary = target.string() + ".sled-tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) {
-      fs::remove(temporary, code);
-      *error = "the text could not be written";
-      return false;
-    }
-  }
-  const fs::file_status existing = fs::status(target, code);
-  if (!code && fs::exists(existing)) fs::permissions(temporary, existing.permissions(), code);
-  fs::rename(temporary, target, code);
-  if (code) {
-    *error = code.message();
-    fs::remove(temporary, code);
-    return false;
-  }
-  return true;
-}
-
 std::optional<std::string> ReadFile(const std::string& path, std::string* why) {
   const auto fail = [why](std::string reason) -> std::optional<std::string> {
     if (why) *why = std::move(reason);

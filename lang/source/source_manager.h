@@ -75,10 +75,4 @@ inline constexpr std::size_t kMaxFileBytes = std::size_t{256} << 20;
 // or, when the file cannot be opened, left empty.
 std::optional<std::string> ReadFile(const std::string& path, std::string* why = nullptr);
 
-// Replaces a file's text so that it is never lost half-written: writes a temporary file beside
-// it, then renames it over the file (through a symbolic link, and keeping the permissions of a
-// file that exists). False with `error` set when the text could not be written; the file is then
-// unchanged.
-bool ReplaceFile(const std::string& path, std::string_view text, std::string* error);
-
 }  // namespace sled::lang

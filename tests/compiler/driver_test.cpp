@@ -3,6 +3,7 @@
 // folder: <build>/tests/sled_compiler_tests -> <build>/compiler/driver/sled.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -121,8 +122,10 @@ TEST_F(DriverTest, AFolderGivenAsAFileReportsE0107ForEveryCommand) {
 
 TEST_F(DriverTest, AnEndlessFileIsE0107NotReadUntilMemoryRunsOut) {
   // /dev/zero never ends; sled stops reading at 256 MiB.
-  for (const char* command : {"check", "fmt", "run", "convert"}) {
-    const SledResult result = Sled({command, "/dev/zero", "--deck=ain", "--diagnostics=compact"});
+  for (const std::string command : {"check", "fmt", "run", "convert"}) {
+    std::vector<std::string> args = {command, "/dev/zero", "--diagnostics=compact"};
+    if (command == "convert") args.push_back("--deck=ain");
+    const SledResult result = Sled(args);
     EXPECT_EQ(result.exit_code, 1) << command << ": " << result.err;
     EXPECT_NE(result.err.find("error[E0107]: cannot read `/dev/zero`: it is larger than 256 MiB"),
               std::string::npos)

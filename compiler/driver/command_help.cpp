@@ -1,0 +1,193 @@
+#include "compiler/driver/command_help.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "compiler/driver/build_info.h"
+
+namespace sled::driver {
+namespace {
+
+// Options that several commands share, described once.
+constexpr std::string_view kSceneOptions =
+    R"(  --set NAME=VALUE       override a `param` of the scenario, with its unit
+                         (--set "speed=50 km/h"); may repeat
+  --stdlib DIR           the standard library folder (default: the one built in)
+  --diagnostics=rich|compact
+                         rich (default): source lines, carets and help; compact: one
+                         line per diagnostic, PATH:LINE:COL: error[CODE]: message
+)";
+
+std::vector<CommandHelp> MakeCommands() {
+  std::vector<CommandHelp> commands;
+  commands.push_back(
+      {"check",
+       "sled check FILE... [options]",
+       "parse, check and lint scenarios; print diagnostics",
+       "Reads each scenario or module, checks names, units and the model, and runs the lints.\n"
+       "Diagnostics go to standard error. Exit status: 0 clean or warnings only, 1 errors,\n"
+       "2 a usage error.\n",
+       {"--set", "--stdlib", "--diagnostics", "--no-lints", "--dump-ast", "--dump-checked",
+        "--dump-model"},
+       std::string_view(R"(  --no-lints             report errors only
+  --dump-ast             print the syntax tree
+  --dump-checked         print the checked scenario
+  --dump-model           print the compiled runtime model (and, on standard error, what
+                         it leaves out)
+)"),
+       "  sled check examples/frontal_sled.sled\n"
+       "  sled check scene.sled --set \"speed=50 km/h\" --diagnostics=compact\n"});
+  commands.push_back(
+      {"fmt",
+       "sled fmt FILE... [--check]",
+       "rewrite files in canonical form",
+       "Rewrites each file in sled's one layout, keeping every comment. A file with syntax\n"
+       "errors is left unchanged. Exit status: 0 done (or, with --check, nothing to change),\n"
+       "1 a file that would change or could not be formatted, 2 a usage error.\n",
+       {"--check", "--diagnostics"},
+       "  --check                only say which files would change; change nothing\n"
+       "  --diagnostics=rich|compact\n"
+       "                         the style of syntax errors\n",
+       "  sled fmt scene.sled\n"
+       "  sled fmt --check examples/*.sled\n"});
+  commands.push_back(
+      {"run",
+       "sled run FILE [options]",
+       "compile and simulate a scenario; write its outputs",
+       "Compiles the scenario and simulates it. Writes into the output folder\n"
+       "timeseries.csv, timeseries_filtered.csv (when a channel has a filter class),\n"
+       "summary.json and animation.glb; the folder is the run's own: outputs of an earlier run\n"
+       "there are removed (and named), and a second run into it at the same time is refused.\n"
+       "On a terminal a progress line shows on standard error. SIGINT, SIGTERM or SIGHUP stop\n"
+       "the run: the rows so far are written, summary.json says \"interrupted\".\n"
+       "Exit status: 0 done, 1 input errors or an output that could not be written,\n"
+       "2 a usage error, 3 a numerical failure (the outputs up to it are kept),\n"
+       "129/130/143 stopped by SIGHUP/SIGINT/SIGTERM.\n",
+       {"-o", "--output", "--set", "--stdlib", "--diagnostics", "--format", "--dump-at",
+        "--checkpoint-every", "--resume", "--report"},
+       R"(  -o, --output DIR       the output folder (default: FILE's name with `-out`)
+  --format csv|iso-mme   iso-mme: also write the ISO-MME data set into DIR/iso-mme
+                         (the CSV files are always written)
+  --dump-at T[,T...]     write every state variable and force at each time T (seconds,
+                         or with ms: 0.05,80ms) into DIR/dump_<T>.txt
+  --checkpoint-every T   write a checkpoint every T (a multiple of the output step)
+                         into DIR/checkpoint_<t>s.bin
+  --resume FILE          continue from a checkpoint, bit for bit as the run that wrote it
+  --report               also write DIR/report.html, as `sled report DIR` does
+)",
+       "  sled run examples/frontal_sled.sled -o out\n"
+       "  sled run examples/frontal_sled.sled -o out --set \"speed=50 km/h\" --format iso-mme\n"
+       "  sled run examples/frontal_sled.sled -o later --resume out/checkpoint_0.100000s.bin\n"});
+  commands.push_back(
+      {"report",
+       "sled report DIR [-o FILE]",
+       "one HTML page of the run in DIR",
+       "Turns the folder `sled run` wrote into one self-contained HTML page: summary,\n"
+       "criteria against limits, plots of the channels, the animation. Exit status: 0 written,\n"
+       "1 DIR holds no readable summary.json or the page cannot be written, 2 a usage error.\n",
+       {"-o", "--output"},
+       "  -o, --output FILE      the page (default: DIR/report.html)\n",
+       "  sled report out\n"
+       "  sled report out -o frontal.html\n"});
+  commands.push_back(
+      {"study",
+       "sled study FILE [options]",
+       "the scene with every integrator over a ladder of tolerances",
+       "Runs the scene with each integrator over a ladder of tolerances against a tight\n"
+       "reference and prints error against run time as a table; writes DIR/study.csv and the\n"
+       "work-precision plot DIR/study.svg, and states the error of the scene's own settings.\n"
+       "On a terminal a progress line shows which run is under way. Exit status: 0 done,\n"
+       "1 input errors or a reference run that failed, 2 a usage error.\n",
+       {"-o", "--output", "--tolerances", "--set", "--stdlib", "--diagnostics"},
+       R"(  -o, --output DIR       the output folder (default: FILE's name with `-study`)
+  --tolerances T,T,...   the relative tolerances of the ladder (default 1e-3 to 1e-7)
+)",
+       "  sled study examples/numerics/pendulum_chain.sled -o study\n"
+       "  sled study scene.sled --tolerances 1e-4,1e-6\n"});
+  commands.push_back(
+      {"convert",
+       "sled convert DECK [options]",
+       "translate a CVS-III/ATB deck into a scenario",
+       "Translates a fixed-column (.ain) or list-directed (.lin) CVS-III/ATB card deck into a\n"
+       ".sled scenario, to standard output or to FILE. Exit status: 0 done, 1 errors in the\n"
+       "deck or a file that cannot be written, 2 a usage error.\n",
+       {"-o", "--output", "--blank-zero", "--deck", "--approximate-airbags", "--diagnostics"},
+       R"(  -o, --output FILE      write the scenario here (default: standard output)
+  --deck=ain|lin         read a deck of another extension as this format
+  --blank-zero           read blank columns as zeros (FORTRAN IV decks; .ain only)
+  --approximate-airbags  convert D.4 airbags to sled's bag, with a warning for each
+                         approximation (without it a deck with airbags is refused)
+  --diagnostics=rich|compact
+                         the style of diagnostics
+)",
+       "  sled convert examples/legacy/pedestrian.ain -o pedestrian.sled\n"
+       "  sled convert old.dat --deck=lin\n"});
+  commands.push_back({"explain",
+                      "sled explain CODE",
+                      "the long explanation of a diagnostic code",
+                      "Prints the page of a diagnostic code (E0204, W0004, ...). Exit status: 0,\n"
+                      "2 an unknown code.\n",
+                      {},
+                      "",
+                      "  sled explain E0302\n"});
+  return commands;
+}
+
+bool SharesSceneOptions(const CommandHelp& command) {
+  return TakesOption(command, "--set") && TakesOption(command, "--stdlib");
+}
+
+}  // namespace
+
+const std::vector<CommandHelp>& Commands() {
+  static const std::vector<CommandHelp> commands = MakeCommands();
+  return commands;
+}
+
+const CommandHelp* FindCommand(std::string_view name) {
+  for (const CommandHelp& command : Commands()) {
+    if (command.name == name) return &command;
+  }
+  return nullptr;
+}
+
+std::string OverviewText() {
+  std::string text =
+      "usage: sled <command> [options] [files]\n       sled --version\n\ncommands:\n";
+  for (const CommandHelp& command : Commands()) {
+    text += fmt::format("  {:<10} {}\n", command.name, command.summary);
+  }
+  text +=
+      "\n`sled COMMAND --help` shows a command's options and examples; docs/tutorial.md starts\n"
+      "from an empty folder.\n";
+  return text;
+}
+
+std::string CommandHelpText(const CommandHelp& command) {
+  std::string text =
+      fmt::format("usage: {}\n\n{}.\n\n{}\n", command.synopsis, command.summary, command.details);
+  if (!command.options.empty()) {
+    text += "options:\n";
+    text += command.option_help;
+    if (SharesSceneOptions(command)) text += kSceneOptions;
+    text += "  -h, --help             this text\n";
+  }
+  if (!command.examples.empty()) text += fmt::format("\nexamples:\n{}", command.examples);
+  return text;
+}
+
+std::string_view OptionName(std::string_view argument) {
+  if (argument.rfind("--", 0) != 0) return argument;
+  return argument.substr(0, argument.find('='));
+}
+
+bool TakesOption(const CommandHelp& command, std::string_view option) {
+  return std::find(command.options.begin(), command.options.end(), option) != command.options.end();
+}
+
+std::string VersionText() {
+  return fmt::format("sled {} (commit {})\n", kSledVersion, BuildCommit());
+}
+
+}  // namespace sled::driver
