@@ -416,6 +416,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();
   CheckOutputs();
+  CheckDuplicates();
   if (options_.lints) RunLints();
   return std::move(scenario_);
 }

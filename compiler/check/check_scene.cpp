@@ -334,9 +334,10 @@ void Checker::CheckSceneElements() {
       m.kind = Motion::Kind::kHalfSine;
       m.delta_v = ExpectQuantity(scope, *arguments.named["delta_v"], dim::kVelocity, "delta_v")
                       .value_or(0.0);
-      m.duration =
-          ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration").value_or(0.0);
-      if (!(m.duration > 0.0)) {
+      const auto duration =
+          ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration");
+      m.duration = duration.value_or(0.0);
+      if (duration && !(m.duration > 0.0)) {  // a value in error is reported already
         Report(DiagnosticKind::kValueOutOfRange, arguments.named["duration"]->range,
                "a pulse duration must be positive", "not positive",
                "give the pulse a positive duration, such as `duration = 100 ms`");
@@ -353,6 +354,14 @@ void Checker::CheckSceneElements() {
       m.rise = ExpectQuantity(scope, *arguments.named["rise"], dim::kTime, "rise").value_or(0.0);
       m.dwell = ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
       m.fall = ExpectQuantity(scope, *arguments.named["fall"], dim::kTime, "fall").value_or(0.0);
+      for (const auto& [name, value] :
+           {std::pair{"rise", m.rise}, std::pair{"dwell", m.dwell}, std::pair{"fall", m.fall}}) {
+        if (value < 0.0) {
+          Report(DiagnosticKind::kValueOutOfRange, arguments.named[name]->range,
+                 fmt::format("the pulse's `{}` is negative", name), "negative",
+                 "a trapezoid's rise, dwell and fall are durations: zero or more");
+        }
+      }
       read_axis(arguments);
     } else if (form == "table") {
       // table(time -> acceleration [-> angular_acceleration], axis = -x) { rows }, or

@@ -146,6 +146,7 @@ std::optional<Value> Checker::ValueOf(Parameter& parameter) {
     const ast::Expr& definition =
         parameter.override_expr ? *parameter.override_expr : *parameter.expr;
     auto value = Evaluate(*parameter.scope, definition);
+    if (value && parameter.override_expr && !OverrideFits(parameter, *value)) value.reset();
     if (parameter.state == Parameter::State::kFailed || !value) {
       parameter.state = Parameter::State::kFailed;
       return std::nullopt;
@@ -155,6 +156,42 @@ std::optional<Value> Checker::ValueOf(Parameter& parameter) {
   }
   if (parameter.state == Parameter::State::kFailed) return std::nullopt;
   return parameter.value;
+}
+
+bool Checker::OverrideFits(Parameter& parameter, const Value& value) {
+  // `--set speed=40` for `param speed = 56 km/h` would run at 40 m/s: the value from the
+  // command line must have the dimension and the shape of the one it replaces (a bare 0 fits).
+  const auto declared = Evaluate(*parameter.scope, *parameter.expr);
+  if (!declared) return true;  // its own errors are reported; the override stands alone
+  const SourceRange range = parameter.override_expr->range;
+  const bool vector = declared->components.size() == 3;
+  if (value.components.size() != declared->components.size()) {
+    auto diagnostic =
+        lang::MakeDiagnostic(DiagnosticKind::kWrongValueKind, range,
+                             fmt::format("`--set {}` gives {}, but `{}` is {}", parameter.name,
+                                         vector ? "one number" : "a vector", parameter.name,
+                                         vector ? "a vector" : "one number"),
+                             "not the shape of the declared value");
+    diagnostic.labels.push_back({parameter.range, "declared here", false});
+    diagnostic.help =
+        vector ? fmt::format("write a vector: --set \"{}=(x, y, z) unit\"", parameter.name)
+               : fmt::format("write one number with its unit: --set \"{}=...\"", parameter.name);
+    diagnostics_.Consume(std::move(diagnostic));
+    return false;
+  }
+  if (value.dimension == declared->dimension || IsBareZero(value)) return true;
+  auto diagnostic =
+      lang::MakeDiagnostic(DiagnosticKind::kDimensionMismatch, range,
+                           fmt::format("`--set {}` gives {}, but `{}` is declared as {}",
+                                       parameter.name, DescribeDimension(value.dimension),
+                                       parameter.name, DescribeDimension(declared->dimension)),
+                           value.bare ? "no unit" : "wrong dimension");
+  diagnostic.labels.push_back({parameter.range, "declared here", false});
+  diagnostic.help = value.bare ? fmt::format("give the unit: --set \"{}=... {}\"", parameter.name,
+                                             SiUnitSymbol(declared->dimension))
+                               : DimensionHelp(declared->dimension, value.dimension);
+  diagnostics_.Consume(std::move(diagnostic));
+  return false;
 }
 
 void Checker::EvaluateParameters() {
@@ -270,6 +307,7 @@ std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr
   Value value{{}, dim::kDimensionless, true};
   std::optional<Dimension> common;
   bool failed = false;
+  std::vector<const ast::Expr*> bare_numbers;  // components without a unit other than 0
   for (const ast::Expr& operand : expr.operands) {
     auto component = Evaluate(scope, operand);
     if (!component) {
@@ -290,6 +328,7 @@ std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr
       continue;
     }
     const bool zero = component->bare && component->components[0] == 0.0;
+    if (component->bare && !zero) bare_numbers.push_back(&operand);
     if (!component->bare || !zero) {
       if (common && !(*common == component->dimension) && !component->bare) {
         Report(DiagnosticKind::kDimensionMismatch, operand.range,
@@ -303,6 +342,19 @@ std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr
       value.bare = value.bare && component->bare;
     }
     value.components.push_back(component->components[0]);
+  }
+  if (!expr.unit && common && !common->IsDimensionless()) {
+    // `(0 mm, 0 mm, 150)` is not 150 m: a number without a unit beside components with one.
+    for (const ast::Expr* operand : bare_numbers) {
+      Report(DiagnosticKind::kDimensionMismatch, operand->range,
+             fmt::format("this component has no unit, but the others are {}",
+                         DescribeDimension(*common)),
+             "no unit",
+             fmt::format("give it a unit of {}, or write the unit once after `)`; only a bare 0 "
+                         "stands for any dimension",
+                         DescribeDimension(*common)));
+      failed = true;
+    }
   }
   if (failed) return std::nullopt;
   if (expr.unit) {

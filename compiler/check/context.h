@@ -137,6 +137,8 @@ class Checker {
   [[gnu::noinline]] std::optional<Value> ReportCycle(const ast::Expr& expr, Parameter& parameter);
   // The value of a parameter, evaluating it if it has not been yet.
   std::optional<Value> ValueOf(Parameter& parameter);
+  // Whether a `--set` value has the shape and dimension of the declared one (else reported).
+  [[gnu::noinline]] bool OverrideFits(Parameter& parameter, const Value& value);
   // Evaluates every parameter in the order of declaration, before anything uses them.
   void EvaluateParameters();
   std::optional<double> ExpectQuantity(Scope& scope, const ast::Expr& expr, Dimension dimension,
@@ -207,6 +209,11 @@ class Checker {
   void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
   void CheckInitialConditions();
   void CheckOutputs();
+  // Contacts, output requests and criteria given twice (errors); belts and springs along the
+  // same path (warnings). compiler/check/duplicates.cpp.
+  void CheckDuplicates();
+  void ReportDuplicate(DiagnosticKind kind, SourceRange again, SourceRange first,
+                       std::string message, std::string help);
   int ReadFilterClass(const ast::Expr& value);
   bool ReadFilterStandard(const BoundBlock& bound);
   void CheckTopology(Body& body, int body_index);
