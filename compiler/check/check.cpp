@@ -225,13 +225,61 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
       if (found->range.valid()) {
         diagnostic.labels.push_back({found->range, "declared here", false});
       }
-      diagnostic.help = lang::DidYouMean(path.PathText(), NamesOfKinds(scope, kinds));
+      // A segment where a joint belongs, or the other way round: the ones it is attached to,
+      // not the names that happen to be spelt alike (`nij(occupant.head)` is not `hip_l`).
+      diagnostic.help = AttachedNames(*found, kinds);
+      if (diagnostic.help.empty()) {
+        diagnostic.help = lang::DidYouMean(path.PathText(), NamesOfKinds(scope, kinds));
+      }
       if (diagnostic.help.empty()) diagnostic.help = fmt::format("name a {} here", expected);
       diagnostics_.Consume(std::move(diagnostic));
     }
     return nullptr;
   }
   return found;
+}
+
+std::string Checker::AttachedNames(const Entity& found, const std::vector<EntityKind>& kinds) {
+  auto wanted = [&](EntityKind kind) {
+    return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+  };
+  const auto index = found.index;
+  if (found.kind == EntityKind::kSegment && wanted(EntityKind::kJoint) && index >= 0) {
+    const std::string& segment = scenario_.segments[static_cast<std::size_t>(index)].name;
+    auto name_of = [&](int s) {
+      return s >= 0 ? scenario_.segments[static_cast<std::size_t>(s)].name : std::string("?");
+    };
+    std::vector<std::string> joints;  // the joint above the segment first
+    const Joint* only = nullptr;
+    for (const bool above : {true, false}) {
+      for (const Joint& joint : scenario_.joints) {
+        if ((above ? joint.child : joint.parent) == index && joint.type != JointType::kNull) {
+          joints.push_back(fmt::format("`{}` ({} `{}`)", joint.name, above ? "from" : "to",
+                                       name_of(above ? joint.parent : joint.child)));
+          only = &joint;
+        }
+      }
+    }
+    if (joints.empty()) return "";
+    if (joints.size() == 1) {
+      return fmt::format("did you mean `{}`, the joint from `{}` to `{}`?", only->name,
+                         name_of(only->parent), name_of(only->child));
+    }
+    std::string list;
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+      list += (i == 0 ? "" : i + 1 == joints.size() ? " and " : ", ") + joints[i];
+    }
+    return fmt::format("the joints of `{}` are {}", segment, list);
+  }
+  if (found.kind == EntityKind::kJoint && wanted(EntityKind::kSegment) && index >= 0) {
+    const Joint& joint = scenario_.joints[static_cast<std::size_t>(index)];
+    if (joint.child < 0) return "";
+    const std::string& child = scenario_.segments[static_cast<std::size_t>(joint.child)].name;
+    if (joint.parent < 0) return fmt::format("did you mean `{}`, the segment it moves?", child);
+    return fmt::format("did you mean `{}` or `{}`, the segments it joins?", child,
+                       scenario_.segments[static_cast<std::size_t>(joint.parent)].name);
+  }
+  return "";
 }
 
 void Checker::Import(Scope& scope, const ast::Statement& statement) {

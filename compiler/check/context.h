@@ -118,6 +118,9 @@ class Checker {
   Entity* Resolve(Scope& scope, const ast::Expr& path, const std::vector<EntityKind>& kinds,
                   bool quiet = false);
   std::vector<std::string> NamesOfKinds(Scope& scope, const std::vector<EntityKind>& kinds);
+  // For a segment where a joint belongs, the joints it hangs from and carries; for a joint where
+  // a segment belongs, the segments it joins: a hint, or empty.
+  std::string AttachedNames(const Entity& found, const std::vector<EntityKind>& kinds);
 
   // --- values (check_values.cpp)
   std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);

@@ -27,6 +27,13 @@ PointKey KeyOf(const FrameRef& frame, const Vec3& point) {
   return {static_cast<int>(frame.kind), frame.index, point[0], point[1], point[2]};
 }
 
+// The element declared first with this key, or null when `element` is the first.
+template <class Key, class Element>
+const Element* Earlier(std::map<Key, const Element*>& seen, Key key, const Element& element) {
+  const auto [it, added] = seen.emplace(std::move(key), &element);
+  return added ? nullptr : it->second;
+}
+
 }  // namespace
 
 void Checker::ReportDuplicate(DiagnosticKind kind, SourceRange again, SourceRange first,
@@ -59,10 +66,9 @@ void Checker::CheckDuplicates() {
 
   std::map<std::pair<int, std::string>, const OutputRequest*> channels;
   for (const OutputRequest& output : scenario_.outputs) {
-    const auto [it, added] =
-        channels.emplace(std::make_pair(static_cast<int>(output.kind), output.label), &output);
-    if (added) continue;
-    ReportDuplicate(DiagnosticKind::kDuplicateOutput, output.range, it->second->range,
+    const auto* first = Earlier(channels, {static_cast<int>(output.kind), output.label}, output);
+    if (!first) continue;
+    ReportDuplicate(DiagnosticKind::kDuplicateOutput, output.range, first->range,
                     fmt::format("a second request for the channels `{}.*` of this kind: two "
                                 "columns of the same name",
                                 output.label),
@@ -71,11 +77,11 @@ void Checker::CheckDuplicates() {
   }
   std::map<std::tuple<int, int, int>, const Criterion*> criteria;
   for (const Criterion& criterion : scenario_.criteria) {
-    const auto [it, added] = criteria.emplace(
-        std::make_tuple(static_cast<int>(criterion.kind), criterion.segment, criterion.joint),
-        &criterion);
-    if (added) continue;
-    ReportDuplicate(DiagnosticKind::kDuplicateOutput, criterion.range, it->second->range,
+    const auto* first =
+        Earlier(criteria, {static_cast<int>(criterion.kind), criterion.segment, criterion.joint},
+                criterion);
+    if (!first) continue;
+    ReportDuplicate(DiagnosticKind::kDuplicateOutput, criterion.range, first->range,
                     "this criterion of this target is requested twice", "remove one of them");
   }
 
@@ -87,12 +93,12 @@ void Checker::CheckDuplicates() {
                          ? KeyOf(point.frame, point.point)
                          : PointKey{-1, point.segment, 0.0, 0.0, 0.0});
     }
-    const auto [it, added] = paths.emplace(path, &belt);
-    if (added) continue;
-    ReportDuplicate(DiagnosticKind::kDuplicateElement, belt.range, it->second->range,
+    const auto* first = Earlier(paths, std::move(path), belt);
+    if (!first) continue;
+    ReportDuplicate(DiagnosticKind::kDuplicateElement, belt.range, first->range,
                     fmt::format("belt `{}` runs along the same path as `{}`: both pull, so the "
                                 "restraint is twice as stiff",
-                                belt.name, it->second->name),
+                                belt.name, first->name),
                     "if one webbing is meant, remove the other; for a double strap, give one "
                     "webbing the force of both");
   }
@@ -101,12 +107,12 @@ void Checker::CheckDuplicates() {
     PointKey a = KeyOf(spring.first, spring.point_in_first);
     PointKey b = KeyOf(spring.second, spring.point_in_second);
     if (b < a) std::swap(a, b);
-    const auto [it, added] = ends.emplace(std::make_pair(a, b), &spring);
-    if (added) continue;
-    ReportDuplicate(DiagnosticKind::kDuplicateElement, spring.range, it->second->range,
+    const auto* first = Earlier(ends, {a, b}, spring);
+    if (!first) continue;
+    ReportDuplicate(DiagnosticKind::kDuplicateElement, spring.range, first->range,
                     fmt::format("spring `{}` joins the same two points as `{}`: they act in "
                                 "parallel, their forces add",
-                                spring.name, it->second->name),
+                                spring.name, first->name),
                     "if one spring is meant, remove the other; for two in parallel, one spring "
                     "with the sum of their stiffnesses says so");
   }

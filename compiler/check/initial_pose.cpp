@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
+#include "runtime/contact/contact_geometry.h"
+
 namespace sled::compiler {
 namespace {
 
@@ -38,33 +42,6 @@ Mat3 Transpose(const Mat3& m) {
 
 Vec3 Add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-struct WorldEllipsoid {
-  Vec3 center;
-  Mat3 rotation;
-  Vec3 semi_axes;
-};
-
-WorldEllipsoid ToWorld(const InitialPoses& poses, const Ellipsoid& e) {
-  const Pose frame = poses.Of(e.frame);
-  return {Add(frame.position, Apply(frame.rotation, e.center)),
-          Multiply(frame.rotation, RotationFromYawPitchRoll(e.orientation)), e.semi_axes};
-}
-
-// Positive when `point` lies inside the ellipsoid: 1 - (x/a)^2 - (y/b)^2 - (z/c)^2.
-double Inside(const WorldEllipsoid& e, const Vec3& point) {
-  const Vec3 local = ApplyTransposed(e.rotation, Sub(point, e.center));
-  double sum = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    if (!(e.semi_axes[i] > 0)) return -1.0;
-    sum += (local[i] / e.semi_axes[i]) * (local[i] / e.semi_axes[i]);
-  }
-  return 1.0 - sum;
-}
 
 Mat3 RotationAbout(const Vec3& axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
@@ -192,52 +169,36 @@ InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
 
 double InitialPenetration(const CheckedScenario& scenario, const InitialPoses& poses,
                           const Contact& contact) {
+  auto shape_of = [&](int index) {
+    const Ellipsoid& e = scenario.ellipsoids[static_cast<std::size_t>(index)];
+    const Pose frame = poses.Of(e.frame);
+    runtime::EllipsoidShape shape;
+    shape.center = ToEigen(Add(frame.position, Apply(frame.rotation, e.center)));
+    shape.rotation = ToEigen(Multiply(frame.rotation, RotationFromYawPitchRoll(e.orientation)));
+    shape.semi_axes = ToEigen(e.semi_axes);
+    shape.degree = e.degree;
+    shape.radius = runtime::BoundingRadius(shape.semi_axes, e.degree);
+    return shape;
+  };
   if (contact.first.kind != SurfaceRef::Kind::kEllipsoid) return 0.0;
-  const WorldEllipsoid e =
-      ToWorld(poses, scenario.ellipsoids[static_cast<std::size_t>(contact.first.index)]);
+  const runtime::EllipsoidShape first = shape_of(contact.first.index);
   if (contact.second.kind == SurfaceRef::Kind::kPlane) {
     const Plane& plane = scenario.planes[static_cast<std::size_t>(contact.second.index)];
     const Pose frame = poses.Of(plane.frame);
-    std::array<Vec3, 3> p;
-    for (int i = 0; i < 3; ++i) p[i] = Add(frame.position, Apply(frame.rotation, plane.corners[i]));
-    const Vec3 u = Sub(p[1], p[0]);
-    const Vec3 v = Sub(p[2], p[0]);
-    Vec3 n = Cross(u, v);
-    const double length = std::sqrt(Dot(n, n));
-    if (!(length > 0)) return 0.0;
-    for (double& c : n) c /= length;
-    // Extent of the ellipsoid along the normal, and where its centre stands.
-    const Vec3 n_local = ApplyTransposed(e.rotation, n);
-    double reach = 0.0;
-    for (int i = 0; i < 3; ++i)
-      reach += (e.semi_axes[i] * n_local[i]) * (e.semi_axes[i] * n_local[i]);
-    reach = std::sqrt(reach);
-    const double height = Dot(Sub(e.center, p[0]), n);
-    if (height <= -reach) return 0.0;  // wholly behind the plane: nothing to push against
-    // The centre must project inside the parallelogram (with the ellipsoid's reach as margin).
-    const Vec3 d = Sub(e.center, p[0]);
-    const double uu = Dot(u, u), uv = Dot(u, v), vv = Dot(v, v);
-    const double du = Dot(d, u), dv = Dot(d, v);
-    const double det = uu * vv - uv * uv;
-    if (!(det > 0)) return 0.0;
-    const double s = (du * vv - dv * uv) / det;
-    const double t = (dv * uu - du * uv) / det;
-    const double margin_s = reach / std::sqrt(uu), margin_t = reach / std::sqrt(vv);
-    if (s < -margin_s || s > 1 + margin_s || t < -margin_t || t > 1 + margin_t) return 0.0;
-    return reach - height;
+    std::array<runtime::Vec3, 3> p;
+    for (std::size_t i = 0; i < 3; ++i) {
+      p[i] = ToEigen(Add(frame.position, Apply(frame.rotation, plane.corners[i])));
+    }
+    runtime::PlaneShape shape{p[0], p[1] - p[0], p[2] - p[0], (p[1] - p[0]).cross(p[2] - p[0])};
+    if (!(shape.normal.norm() > 0)) return 0.0;
+    shape.normal.normalize();
+    const runtime::ContactGeometry geometry = runtime::PlaneEllipsoid(shape, first);
+    return geometry.touching && geometry.weight > 0 ? geometry.deflection : 0.0;
   }
-  const WorldEllipsoid other =
-      ToWorld(poses, scenario.ellipsoids[static_cast<std::size_t>(contact.second.index)]);
-  // Conservative for ellipsoid pairs: buried when one centre is inside the other ellipsoid.
-  if (Inside(other, e.center) > 0 || Inside(e, other.center) > 0) {
-    // An estimate of the overlap along the line of centres, from the smallest semi-axes; at
-    // least enough to be reported.
-    const Vec3 gap = Sub(e.center, other.center);
-    const double smallest = std::min({e.semi_axes[0], e.semi_axes[1], e.semi_axes[2]}) +
-                            std::min({other.semi_axes[0], other.semi_axes[1], other.semi_axes[2]});
-    return std::max(smallest - std::sqrt(Dot(gap, gap)), 1.001e-3);
-  }
-  return 0.0;
+  const runtime::EllipsoidShape second = shape_of(contact.second.index);
+  runtime::Vec3 direction = second.center - first.center;
+  const runtime::ContactGeometry geometry = runtime::EllipsoidEllipsoid(first, second, direction);
+  return geometry.deflection;
 }
 
 }  // namespace sled::compiler

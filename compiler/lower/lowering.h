@@ -15,18 +15,9 @@
 
 namespace sled::compiler::lowering {
 
-// Conversions between the checker's arrays and the runtime's Eigen types.
-inline runtime::Vec3 ToEigen(const Vec3& v) { return {v[0], v[1], v[2]}; }
-inline runtime::Mat3 ToEigen(const Mat3& rows) {
-  runtime::Mat3 m;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) m(i, j) = rows[i][j];
-  }
-  return m;
-}
-inline runtime::Mat3 RotationMatrix(const Vec3& yaw_pitch_roll) {
-  return ToEigen(RotationFromYawPitchRoll(yaw_pitch_roll));
-}
+// The checker's arrays as the runtime's Eigen types (compiler/check/initial_pose.h).
+using compiler::RotationMatrix;
+using compiler::ToEigen;
 
 struct Note {
   SourceRange range;  // invalid: about the scenario as a whole
