@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/constraints.h"
+#include "runtime/fnv1a.h"
 #include "runtime/outputs.h"
 
 namespace sled::runtime {
@@ -16,16 +17,6 @@ namespace {
 constexpr char kMagic[] = "sled checkpoint 2\n";
 constexpr char kMagicPrefix[] = "sled checkpoint ";
 constexpr std::size_t kChecksumDigits = 16;
-
-// FNV-1a: a stable 64-bit hash (std::hash may differ between library versions).
-std::uint64_t Fnv1a(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 // The checksum that ends a format-2 file: FNV-1a of the payload in kChecksumDigits hex digits.
 std::string ChecksumText(const std::string& payload) {

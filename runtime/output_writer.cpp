@@ -63,6 +63,18 @@ void WriteCriteria(AtomicFile& out, const std::vector<post::CriterionValue>& cri
   out << (criteria.empty() ? "],\n" : "\n  ],\n");
 }
 
+// The "peaks" array: each channel's extreme of largest magnitude and its time.
+void WritePeaks(AtomicFile& out, const std::vector<post::ChannelPeak>& peaks) {
+  out << "  \"peaks\": [";
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    const post::ChannelPeak& p = peaks[i];
+    out << (i == 0 ? "\n    " : ",\n    ");
+    out << fmt::format("{{\"channel\": {}, \"value\": {}, \"time\": {}, \"filtered\": {}}}",
+                       JsonString(p.channel), p.value, p.time, p.filtered ? "true" : "false");
+  }
+  out << (peaks.empty() ? "],\n" : "\n  ],\n");
+}
+
 }  // namespace
 
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
@@ -87,7 +99,8 @@ bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::
 
 bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
                       const RunSummary& summary, const std::vector<std::string>& warnings,
-                      std::string* error, const std::vector<post::CriterionValue>& criteria) {
+                      std::string* error, const std::vector<post::CriterionValue>& criteria,
+                      const std::vector<post::ChannelPeak>& peaks) {
   AtomicFile out(path);
   const IntegratorStats& s = summary.stats;
   out << "{\n";
@@ -133,6 +146,7 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
     out << "\n  },\n";
   }
   WriteCriteria(out, criteria);
+  WritePeaks(out, peaks);
   out << "  \"warnings\": [";
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     out << (i == 0 ? "\n    " : ",\n    ") << JsonString(warnings[i]);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/post/channel_peaks.h"
 #include "runtime/post/criterion_value.h"
 #include "runtime/run.h"
 
@@ -15,7 +16,8 @@ namespace sled::runtime {
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error);
 bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
                       const RunSummary& summary, const std::vector<std::string>& warnings,
-                      std::string* error, const std::vector<post::CriterionValue>& criteria = {});
+                      std::string* error, const std::vector<post::CriterionValue>& criteria = {},
+                      const std::vector<post::ChannelPeak>& peaks = {});
 
 // A JSON string literal with the characters JSON requires escaped.
 std::string JsonString(const std::string& text);

@@ -455,6 +455,13 @@ CheckedScenario Checker::Run(const ast::File& file) {
 
   // Every name is known now: check what the declarations say.
   EvaluateParameters();
+  for (const auto& parameter : parameters_) {
+    if (!parameter->is_param || parameter->scope != scene_scope_) continue;
+    const bool valid = parameter->state == Parameter::State::kDone;
+    scenario_.parameters.push_back({parameter->name, parameter->value.components,
+                                    parameter->value.dimension, parameter->value.bare, valid,
+                                    parameter->range});
+  }
   for (const Pending& pending : functions_) {
     DefineFunction(*pending.scope, *pending.statement, pending.index);
   }

@@ -330,6 +330,16 @@ struct RunSettings {
   std::vector<std::array<int, 2>> mirror_pairs;  // segment pairs mirrored in the xz plane
 };
 
+// A `param` of the scene (not of an imported module): what `--set` and `sled sweep` may change.
+struct ScenarioParameter {
+  std::string name;
+  std::vector<double> value;  // SI; one component for a scalar, three for a vector
+  Dimension dimension;
+  bool bare = false;   // written without a unit (a bare zero fits any dimension)
+  bool valid = false;  // false when its value did not check
+  SourceRange range;   // of its name in the declaration
+};
+
 struct CheckedScenario {
   // False for a file without a `scenario` block: a module for `import`, which can be checked
   // but not run.
@@ -352,6 +362,7 @@ struct CheckedScenario {
   std::vector<InitialCondition> initial_conditions;
   std::vector<OutputRequest> outputs;
   std::vector<Criterion> criteria;
+  std::vector<ScenarioParameter> parameters;  // in declaration order; not part of Dump
 };
 
 // A stable, range-free text form: equal dumps mean equal checked scenarios.

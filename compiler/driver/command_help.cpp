@@ -106,6 +106,60 @@ std::vector<CommandHelp> MakeCommands() {
        "  sled study examples/numerics/pendulum_chain.sled -o study\n"
        "  sled study scene.sled --tolerances 1e-4,1e-6\n"});
   commands.push_back(
+      {"sweep",
+       "sled sweep FILE (--vary SPEC... | --design POINTS.csv) [options]\n"
+       "       sled sweep resume DIR [--jobs N] [--slice K/T] [--retry-failed]\n"
+       "       sled sweep collect DIR",
+       "the scene over a design of param values, on every core or a Slurm cluster",
+       "Runs FILE once per point of a design of its `param` values, each run `sled run` in a\n"
+       "worker process with its own folder DIR/runs/NNNN; DIR/sweep.csv holds every run's\n"
+       "inputs, status, injury criteria and channel peaks, DIR/sweep.html plots them. The design\n"
+       "is checked, and the scene at every point, before anything runs. An interrupted sweep\n"
+       "resumes: run the same command again, or `sled sweep resume DIR`. Exit status: 0 every\n"
+       "run done, 1 input errors (scene or design), 2 a usage error, 3 a run failed or did not\n"
+       "run (the table says which), 130 interrupted. See docs/sweeps.md.\n",
+       {"-o",        "--output",       "--vary",
+        "--design",  "--sample",       "--seed",
+        "--jobs",    "--set",          "--stdlib",
+        "--format",  "--report",       "--check",
+        "--restart", "--retry-failed", "--slice",
+        "--slurm",   "--partition",    "--account",
+        "--time",    "--tasks",        "--cpus-per-task",
+        "--sbatch",  "--wait",         "--diagnostics"},
+       R"(  --vary "NAME=A..B UNIT step S"   a grid from A to B (speed=40..64 km/h step 8)
+  --vary "NAME=A..B UNIT count N"  N values from A to B, evenly spaced
+  --vary "NAME=A,B,C UNIT"         a list (pretension=0,1,2 kN)
+  --vary "NAME=A..B UNIT"          a range, sampled by --sample; several --vary make
+                                   every combination (the first varies slowest)
+  --sample lhs=N | sobol=N         N points of a Latin hypercube or a Sobol sequence in the
+                                   ranges (with every grid point, if any)
+  --seed S                         the sampling's seed (default 1; Sobol with 0: unshifted)
+  --design POINTS.csv              the points from a file: a header `speed [km/h],slack [mm]`,
+                                   then a row of numbers per run
+  -o, --output DIR                 the sweep folder (default: FILE's name with `-sweep`)
+  --jobs N                         worker processes (default: every core)
+  --set NAME=VALUE                 fix a parameter for every run
+  --stdlib DIR                     the standard library folder
+  --format iso-mme, --report       passed to every run
+  --check                          check the design and the scene at every point, print the
+                                   design, run nothing
+  --restart                        discard the runs of an earlier sweep in DIR
+  --retry-failed                   also run again the runs that failed
+  --slice K/T                      (resume) only the runs i with i % T == K
+  --slurm                          submit the runs as a Slurm job array instead
+  --partition P, --account A       where the array's tasks run and who pays
+  --time T                         each task's time limit (sbatch --time)
+  --tasks N                        array tasks (default one per run, at most 1000)
+  --cpus-per-task N                runs at a time inside each task (default 1)
+  --sbatch ARG                     any other sbatch option, as it is (repeatable)
+  --wait                           wait for the array, then report the table
+)",
+       "  sled sweep examples/frontal_sled.sled --vary \"speed=40..64 km/h step 8\"\n"
+       "  sled sweep scene.sled --vary \"speed=40..64 km/h\" --vary \"belt_slack=0..20 mm\" "
+       "--sample lhs=32 --seed 7\n"
+       "  sled sweep scene.sled --design points.csv -o /shared/sweep --slurm --partition short\n"
+       "  sled sweep resume frontal_sled-sweep\n"});
+  commands.push_back(
       {"convert",
        "sled convert DECK [options]",
        "translate a CVS-III/ATB deck into a scenario",

@@ -19,6 +19,7 @@
 #include "compiler/driver/report_command.h"
 #include "compiler/driver/run_command.h"
 #include "compiler/driver/study_command.h"
+#include "compiler/driver/sweep_command.h"
 #include "compiler/lower/lower.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
@@ -236,6 +237,16 @@ int main(int argc, char** argv) {
     const std::string hint = sled::lang::DidYouMean(options.command, CommandNames());
     return UsageError(
         fmt::format("unknown command `{}`{}", options.command, hint.empty() ? "" : "; " + hint));
+  }
+  // `sweep` reads its own options (compiler/driver/sweep_command.cpp).
+  if (options.command == "sweep") {
+    try {
+      return sled::driver::SweepCommand({args.begin() + 1, args.end()}, ColorWanted());
+    } catch (const std::exception& error) {
+      std::cerr << fmt::format("sled: internal error: {} (please report this with the input)\n",
+                               error.what());
+      return kExitInputErrors;
+    }
   }
   for (std::size_t i = 1; i < args.size(); ++i) {
     const std::string& arg = args[i];

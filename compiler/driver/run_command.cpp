@@ -23,6 +23,7 @@
 #include "runtime/export/state_dump.h"
 #include "runtime/output_writer.h"
 #include "runtime/post/channel_filters.h"
+#include "runtime/post/channel_peaks.h"
 #include "runtime/post/injury_criteria.h"
 #include "runtime/run.h"
 
@@ -312,7 +313,8 @@ int RunCommand(const RunCommandOptions& options) {
        runtime::WriteTimeSeriesCsv((out / "timeseries_filtered.csv").string(), filtered.series,
                                    &write_error)) &&
       runtime::WriteSummaryJson((out / "summary.json").string(), lowered.model, series, summary,
-                                warnings, &write_error, criteria) &&
+                                warnings, &write_error, criteria,
+                                runtime::post::ChannelPeaks(series, filtered.series)) &&
       runtime::WriteAnimationGlb((out / "animation.glb").string(), model, animation,
                                  &write_error) &&
       (!options.iso_mme ||

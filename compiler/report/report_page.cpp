@@ -12,9 +12,6 @@
 namespace sled::report {
 namespace {
 
-// Runs before anything else: an uncaught error anywhere in the page is written into the DOM
-// (`data-script-error` on the root element and a visible line), so a headless browser's DOM
-// dump shows it.
 constexpr const char* kErrorTrap = R"(<script>
 window.addEventListener('error', function (event) {
   var message = (event && event.message) || 'script error';
@@ -25,6 +22,12 @@ window.addEventListener('error', function (event) {
   (document.body || document.documentElement).appendChild(line);
 });
 </script>)";
+
+}  // namespace
+
+std::string_view ErrorTrapScript() { return kErrorTrap; }
+
+namespace {
 
 std::string Header(const ReportInputs& inputs) {
   const RunSummaryFile& s = inputs.summary;

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "compiler/report/channel_table.h"
@@ -21,5 +22,10 @@ struct ReportInputs {
 };
 
 std::string BuildReportPage(const ReportInputs& inputs);
+
+// A <script> that runs before anything else: an uncaught error anywhere in the page is written
+// into the DOM (`data-script-error` on the root element and a visible line), so a headless
+// browser's DOM dump shows it. The report and the sweep page start with it.
+std::string_view ErrorTrapScript();
 
 }  // namespace sled::report

@@ -146,6 +146,18 @@ CriterionSummary ReadCriterion(const Json& object, std::size_t index, std::strin
   return out;
 }
 
+PeakSummary ReadPeak(const Json& object, std::size_t index, std::string* error) {
+  PeakSummary out;
+  MemberReader in(object, fmt::format("peaks[{}]", index), error);
+  in.Text("channel", out.channel);
+  in.Number("value", out.value);
+  in.Number("time", out.time);
+  std::optional<bool> filtered;
+  in.OptionalBool("filtered", filtered);
+  out.filtered = filtered.value_or(false);
+  return out;
+}
+
 }  // namespace
 
 std::optional<RunSummaryFile> ParseRunSummary(const std::string& text, std::string* error) {
@@ -181,6 +193,16 @@ std::optional<RunSummaryFile> ParseRunSummary(const std::string& text, std::stri
         continue;
       }
       out.criteria.push_back(ReadCriterion(item, i, &problem));
+    }
+  }
+  if (const Json* peaks = in.Array("peaks")) {
+    for (std::size_t i = 0; i < peaks->size(); ++i) {
+      const Json& item = (*peaks)[i];
+      if (!item.is_object()) {
+        if (problem.empty()) problem = fmt::format("`peaks[{}]` should be an object", i);
+        continue;
+      }
+      out.peaks.push_back(ReadPeak(item, i, &problem));
     }
   }
   if (const Json* warnings = in.Array("warnings")) {

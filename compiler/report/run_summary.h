@@ -57,6 +57,14 @@ struct CriterionSummary {
   std::string reason;
 };
 
+// A channel's peak: its value of largest magnitude and when (summary.json's `peaks`).
+struct PeakSummary {
+  std::string channel;
+  double value = 0.0;
+  double time = 0.0;
+  bool filtered = false;
+};
+
 struct RunSummaryFile {
   std::string scenario;
   std::string status;  // "ok" or "failed"
@@ -71,6 +79,7 @@ struct RunSummaryFile {
   std::optional<EnergySummary> energy_balance;
   std::optional<FailureSummary> failure;
   std::vector<CriterionSummary> criteria;
+  std::vector<PeakSummary> peaks;
   std::vector<std::string> warnings;
 };
 

@@ -118,7 +118,8 @@ std::string SeriesPath(const PlotFrame& frame, std::span<const double> x,
   return path;
 }
 
-std::string RenderSvgPlot(const PlotSpec& spec) {
+std::string RenderSvgPlot(const PlotSpec& spec,
+                          const std::function<std::string(const PlotFrame&)>& underlay) {
   const PlotFrame frame = FramePlot(spec);
   std::string svg = fmt::format(
       "<svg class=\"plot\" xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {0} {1}\" "
@@ -133,8 +134,18 @@ std::string RenderSvgPlot(const PlotSpec& spec) {
   svg += fmt::format(
       "<text class=\"label y\" transform=\"translate(16 {:.1f}) rotate(-90)\">{}</text>",
       frame.top + 0.5 * frame.height, EscapeHtml(spec.y_label));
+  if (underlay) svg += underlay(frame);
   svg += "<g class=\"series\" fill=\"none\">";
   for (const PlotSeries& series : spec.series) {
+    if (series.style.markers) {
+      for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
+        if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
+        svg += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\"/>",
+                           frame.X(series.x[i]), frame.Y(series.y[i]), 1.5 + series.style.width,
+                           EscapeHtml(series.style.color));
+      }
+      continue;
+    }
     const std::string path = SeriesPath(frame, series.x, series.y);
     if (path.empty()) continue;
     svg += fmt::format("<path d=\"{}\" {}/>", path, StrokeAttributes(series.style));

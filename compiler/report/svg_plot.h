@@ -2,6 +2,7 @@
 // legend, and one path per series. The report draws every channel group with it.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@ struct LineStyle {
   std::string color = "#1f77b4";
   double width = 1.5;
   double opacity = 1.0;
+  bool markers = false;  // a dot at each point instead of a line through them
 };
 
 struct PlotSeries {
@@ -57,7 +59,9 @@ PlotFrame FramePlot(const PlotSpec& spec);
 std::string SeriesPath(const PlotFrame& frame, std::span<const double> x,
                        std::span<const double> y);
 
-// The whole <svg> element.
-std::string RenderSvgPlot(const PlotSpec& spec);
+// The whole <svg> element; `underlay`, when given, adds SVG drawn over the grid and under the
+// series (a response surface's colored cells).
+std::string RenderSvgPlot(const PlotSpec& spec,
+                          const std::function<std::string(const PlotFrame&)>& underlay = {});
 
 }  // namespace sled::report

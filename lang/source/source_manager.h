@@ -60,6 +60,8 @@ class SourceManager {
   std::optional<FileId> Find(std::string_view path) const;
 
   const SourceBuffer& buffer(FileId id) const;
+  // How many buffers there are: their ids are 1 to size().
+  std::size_t size() const { return buffers_.size(); }
   std::string_view Text(const SourceRange& range) const;
 
  private:

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "compiler/check/check.h"
+#include "compiler/sweep/design.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/diagnostics/render.h"
 #include "lang/source/source_manager.h"
@@ -33,6 +34,7 @@ struct PageExample {
   bool under_how_to_fix = false;
   bool imports_local_module = false;  // needs files the page only describes: not checked here
   std::vector<std::pair<std::string, std::string>> overrides;  // `--set 'NAME=VALUE'`
+  std::vector<std::string> vary;  // `--vary 'TEXT'` of a `sled sweep ... --check` line
   bool shows_output = false;
   int output_first_line = 0;  // 0-based index of the printed block's first line in the page
   int output_line_count = 0;
@@ -47,15 +49,22 @@ std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
-// `--set 'NAME=VALUE'` arguments of a "`sled check ...` prints:" line.
-std::vector<std::pair<std::string, std::string>> OverridesOf(const std::string& command) {
-  std::vector<std::pair<std::string, std::string>> overrides;
-  const std::string marker = "--set '";
+// The quoted arguments of one option (`--set 'NAME=VALUE'`) in a "`sled check ...` prints:" line.
+std::vector<std::string> QuotedArguments(const std::string& command, const std::string& option) {
+  std::vector<std::string> items;
+  const std::string marker = option + " '";
   for (std::size_t at = command.find(marker); at != std::string::npos;
        at = command.find(marker, at + 1)) {
     const std::size_t begin = at + marker.size();
     const std::size_t end = command.find('\'', begin);
-    const std::string item = command.substr(begin, end - begin);
+    items.push_back(command.substr(begin, end - begin));
+  }
+  return items;
+}
+
+std::vector<std::pair<std::string, std::string>> OverridesOf(const std::string& command) {
+  std::vector<std::pair<std::string, std::string>> overrides;
+  for (const std::string& item : QuotedArguments(command, "--set")) {
     const std::size_t equals = item.find('=');
     overrides.emplace_back(item.substr(0, equals), item.substr(equals + 1));
   }
@@ -87,6 +96,7 @@ std::vector<PageExample> ExamplesOf(const std::vector<std::string>& lines) {
                line.compare(line.size() - 7, 7, "prints:") == 0 &&
                (line == "prints:" || line.find("scene.sled") != std::string::npos)) {
       examples.back().overrides = OverridesOf(line);
+      examples.back().vary = QuotedArguments(line, "--vary");
       awaiting_output = true;
     } else if (awaiting_output && line == "```text") {
       PageExample& example = examples.back();
@@ -116,7 +126,15 @@ Checked CheckAsScene(const PageExample& example) {
   options.diagnostics = &collector;
   options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
   options.overrides = example.overrides;
-  ParseAndCheck(sources, file, options);
+  const CheckedScenario scene = ParseAndCheck(sources, file, options);
+  if (!example.vary.empty() && !collector.has_errors()) {
+    // `sled sweep scene.sled --vary '...' --check`: the design, built against the scene.
+    DesignRequest request;
+    for (const std::string& vary : example.vary)
+      request.vary.push_back(sources.Add("--vary", vary));
+    for (const auto& [name, value] : example.overrides) request.fixed.push_back(name);
+    BuildDesign(sources, request, scene, collector);
+  }
   collector.SortByPosition();
   Checked checked;
   checked.errors = collector.error_count();

@@ -11,7 +11,9 @@
 // directory there and loads each file under its repository-relative path, so imports resolve
 // relative to tests/golden as they do for `sled check tests/golden/x.sled`.
 //
-// A leading comment `// sled-test: --set NAME=VALUE` passes a parameter override to the checker.
+// A leading comment `// sled-test: --set NAME=VALUE` passes a parameter override to the checker;
+// `// sled-test: --vary TEXT` (and `--sample lhs=N`, `--design FILE.csv`) builds a sweep design
+// after the check, for the E06xx codes.
 //
 // Set SLED_UPDATE_GOLDEN=1 to write the expected files instead of comparing with them; review the
 // change with `git diff tests/golden` before committing it.
@@ -32,6 +34,7 @@
 
 #include "compiler/check/check.h"
 #include "compiler/check/checked_scenario.h"
+#include "compiler/sweep/design.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/diagnostics/render.h"
 #include "lang/source/source_manager.h"
@@ -91,30 +94,52 @@ std::vector<std::string> GoldenFiles() {
   return names;
 }
 
-// `// sled-test: --set NAME=VALUE` lines at the top of a golden file.
-std::vector<std::pair<std::string, std::string>> OverridesIn(const std::string& text) {
+// The `// sled-test:` lines at the top of a golden file: `--set NAME=VALUE` overrides, and a
+// sweep design (`--vary TEXT`, `--sample lhs=N`, `--design FILE` beside the golden file) that
+// is built after the check, as `sled sweep --check` does.
+struct Directives {
   std::vector<std::pair<std::string, std::string>> overrides;
+  std::vector<std::string> vary;
+  std::string design_file;
+  Sampling sampling = Sampling::kNone;
+  int samples = 0;
+  bool has_design() const { return !vary.empty() || !design_file.empty(); }
+};
+
+Directives DirectivesIn(const std::string& text) {
+  Directives directives;
   std::istringstream lines(text);
   std::string line;
   while (std::getline(lines, line) && StartsWith(line, "//")) {
     if (!StartsWith(line, kDirective)) continue;
     std::string_view rest = std::string_view(line).substr(kDirective.size());
     while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
-    constexpr std::string_view kSet = "--set ";
-    if (!StartsWith(rest, kSet)) {
+    auto take = [&](std::string_view option) {
+      if (!StartsWith(rest, option)) return false;
+      rest.remove_prefix(option.size());
+      return true;
+    };
+    if (take("--vary ")) {
+      directives.vary.emplace_back(rest);
+    } else if (take("--design ")) {
+      directives.design_file = std::string(rest);
+    } else if (take("--sample ")) {
+      directives.sampling =
+          StartsWith(rest, "sobol=") ? Sampling::kSobol : Sampling::kLatinHypercube;
+      directives.samples = std::stoi(std::string(rest.substr(rest.find('=') + 1)));
+    } else if (take("--set ")) {
+      const std::size_t equals = rest.find('=');
+      if (equals == std::string_view::npos) {
+        ADD_FAILURE() << "write `// sled-test: --set NAME=VALUE`: " << line;
+        continue;
+      }
+      directives.overrides.emplace_back(std::string(rest.substr(0, equals)),
+                                        std::string(rest.substr(equals + 1)));
+    } else {
       ADD_FAILURE() << "unknown sled-test directive: " << line;
-      continue;
     }
-    rest.remove_prefix(kSet.size());
-    const std::size_t equals = rest.find('=');
-    if (equals == std::string_view::npos) {
-      ADD_FAILURE() << "write `// sled-test: --set NAME=VALUE`: " << line;
-      continue;
-    }
-    overrides.emplace_back(std::string(rest.substr(0, equals)),
-                           std::string(rest.substr(equals + 1)));
   }
-  return overrides;
+  return directives;
 }
 
 // One file through the front end, as `sled check` runs it.
@@ -153,8 +178,24 @@ std::unique_ptr<Outcome> CheckGolden(const std::string& relative_path, const std
   CheckOptions check_options;
   check_options.diagnostics = &outcome->diagnostics;
   check_options.stdlib_root = (kRoot / "stdlib").string();
-  check_options.overrides = OverridesIn(text);
+  const Directives directives = DirectivesIn(text);
+  check_options.overrides = directives.overrides;
   outcome->scenario = Check(outcome->sources, ast, check_options);
+  if (directives.has_design() && !outcome->diagnostics.has_errors()) {
+    DesignRequest request;
+    for (const std::string& vary : directives.vary) {
+      request.vary.push_back(outcome->sources.Add("--vary", vary));
+    }
+    if (!directives.design_file.empty()) {
+      const std::string path = std::string(kGoldenFolder) + "/" + directives.design_file;
+      request.csv = outcome->sources.Load(path);
+      EXPECT_TRUE(request.csv.has_value()) << "cannot read " << path;
+    }
+    request.sampling = directives.sampling;
+    request.samples = directives.samples;
+    for (const auto& [name, value] : directives.overrides) request.fixed.push_back(name);
+    BuildDesign(outcome->sources, request, outcome->scenario, outcome->diagnostics);
+  }
   outcome->diagnostics.SortByPosition();
   return outcome;
 }
@@ -358,7 +399,7 @@ TEST(GoldenRegistry, CodesFollowTheNumberingScheme) {
     })) << code;
     if (code[0] == 'E') {
       EXPECT_EQ(info.severity, lang::Severity::kError) << code;
-      EXPECT_TRUE(code[1] == '0' && code[2] >= '1' && code[2] <= '5') << code;
+      EXPECT_TRUE(code[1] == '0' && code[2] >= '1' && code[2] <= '6') << code;
     } else {
       EXPECT_EQ(code[0], 'W') << code;
       EXPECT_EQ(info.severity, lang::Severity::kWarning) << code;

@@ -17,6 +17,7 @@
 #include "tests/compiler/flagship_scene.h"
 #include "tests/compiler/mini_json.h"
 #include "tests/compiler/sled_process.h"
+#include "tests/report/chromium.h"
 
 namespace sled {
 namespace {
@@ -27,24 +28,6 @@ using testing::SledResult;
 using testing::WriteText;
 
 using ReportCommand = testing::SledProcessTest;
-
-// The Chromium program on PATH (SLED_CHROMIUM overrides), or empty.
-fs::path FindChromium() {
-  if (const char* chosen = std::getenv("SLED_CHROMIUM"); chosen && *chosen) return chosen;
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return {};
-  std::string folders = path;
-  std::size_t start = 0;
-  while (start <= folders.size()) {
-    const std::size_t colon = std::min(folders.find(':', start), folders.size());
-    for (const char* name : {"chromium", "chromium-browser"}) {
-      const fs::path candidate = fs::path(folders.substr(start, colon - start)) / name;
-      if (access(candidate.c_str(), X_OK) == 0) return candidate;
-    }
-    start = colon + 1;
-  }
-  return {};
-}
 
 // The node count of a GLB's JSON chunk.
 std::size_t GlbNodeCount(const std::string& glb) {
@@ -91,27 +74,15 @@ TEST_F(ReportCommand, FlagshipReportLoadsInChromiumWithoutScriptErrors) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(ReadText(temp() / "elsewhere.html"), html);
 
-  const fs::path chromium = FindChromium();
+  const fs::path chromium = testing::FindChromium();
   if (chromium.empty()) {
     GTEST_SKIP() << "Chromium is not installed (Debian package `chromium`; scripts/setup.sh "
                     "installs it), so the report was not loaded in a browser";
   }
-  // A profile of its own, so tests side by side and a user's browser never share one; software
-  // WebGL (SwiftShader), as a machine without a GPU has.
-  const fs::path dom = temp() / "dom.html";
-  const fs::path log = temp() / "chromium.log";
-  const std::string command =
-      "timeout 120 " + testing::Quote(chromium.string()) +
-      " --headless --disable-gpu --no-sandbox --enable-unsafe-swiftshader --no-first-run"
-      " --user-data-dir=" +
-      testing::Quote((temp() / "profile").string()) + " --enable-logging=stderr --v=0 --dump-dom " +
-      testing::Quote("file://" + fs::absolute(page).string()) + " >" +
-      testing::Quote(dom.string()) + " 2>" + testing::Quote(log.string()) + " </dev/null";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0) << "chromium failed:\n"
-                                                                             << ReadText(log);
-  const std::string loaded = ReadText(dom);
-  const std::string console = ReadText(log);
+  const testing::LoadedPage page_in_browser = testing::LoadInChromium(chromium, page, temp());
+  ASSERT_TRUE(page_in_browser.loaded) << "chromium failed:\n" << page_in_browser.console;
+  const std::string& loaded = page_in_browser.dom;
+  const std::string& console = page_in_browser.console;
   ASSERT_NE(loaded.find("</html>"), std::string::npos) << "no DOM dumped:\n" << console;
   EXPECT_EQ(Attribute(loaded, "data-script-error"), "") << console;
   EXPECT_EQ(console.find("Uncaught"), std::string::npos) << console;
