@@ -31,14 +31,6 @@ double Tidy(double value, double scale) {
   return std::abs(tidy - value) <= 1e-12 * scale ? tidy : value;
 }
 
-void ReportEmptyRange(lang::DiagnosticConsumer& diagnostics, lang::SourceRange range,
-                      std::string message, std::string label, std::string help) {
-  auto diagnostic = lang::MakeDiagnostic(lang::DiagnosticKind::kEmptyDesignRange, range,
-                                         std::move(message), std::move(label));
-  diagnostic.help = std::move(help);
-  diagnostics.Consume(std::move(diagnostic));
-}
-
 // The unit the values of a spec are in: the last one written after a value, else the step's.
 std::optional<lang::ast::Unit> SpecUnit(const VarySpec& spec) {
   for (auto it = spec.values.rbegin(); it != spec.values.rend(); ++it) {
@@ -72,8 +64,8 @@ std::optional<Factor> FactorOf(const lang::SourceManager& sources, const VarySpe
   const double high = written[1];
   const std::string range_text(sources.Text(spec.values_range));
   if (!(low <= high)) {
-    ReportEmptyRange(
-        diagnostics, spec.values_range,
+    ReportDesign(
+        diagnostics, lang::DiagnosticKind::kEmptyDesignRange, spec.values_range,
         fmt::format("the range of `{}` is empty: it starts at {}{} and ends below, at "
                     "{}{}",
                     spec.name, low, unit, high, unit),
@@ -84,14 +76,14 @@ std::optional<Factor> FactorOf(const lang::SourceManager& sources, const VarySpe
   const double scale = std::max({std::abs(low), std::abs(high), 1e-300});
   if (spec.kind == VarySpec::Kind::kInterval) {
     if (low == high) {
-      ReportEmptyRange(diagnostics, spec.values_range,
-                       fmt::format("the range of `{}` holds one value, {}{}: there is nothing to "
-                                   "sample",
-                                   spec.name, low, unit),
-                       "one value",
-                       fmt::format("give two different ends, or fix the value with `--set "
-                                   "\"{}={}{}\"`",
-                                   spec.name, low, unit));
+      ReportDesign(diagnostics, lang::DiagnosticKind::kEmptyDesignRange, spec.values_range,
+                   fmt::format("the range of `{}` holds one value, {}{}: there is nothing to "
+                               "sample",
+                               spec.name, low, unit),
+                   "one value",
+                   fmt::format("give two different ends, or fix the value with `--set "
+                               "\"{}={}{}\"`",
+                               spec.name, low, unit));
       return std::nullopt;
     }
     factor.sampled = true;
@@ -103,28 +95,28 @@ std::optional<Factor> FactorOf(const lang::SourceManager& sources, const VarySpe
     auto step = ValueInUnit(sources, *spec.step, factor.variable, parameter, diagnostics);
     if (!step) return std::nullopt;
     if (!(*step > 0)) {
-      ReportEmptyRange(
-          diagnostics, spec.step->range,
+      ReportDesign(
+          diagnostics, lang::DiagnosticKind::kEmptyDesignRange, spec.step->range,
           fmt::format("the step of `{}` is {}{}; a step is positive", spec.name, *step, unit),
           "not positive", "write a positive step; the range goes from low to high");
       return std::nullopt;
     }
     const double steps = (high - low) / *step;
     if (steps > static_cast<double>(kMaxDesignPoints)) {
-      ReportInvalidDesign(diagnostics, spec.values_range,
-                          fmt::format("`{}` would take {:.3g} values, more than a sweep's {}",
-                                      spec.name, steps + 1, kMaxDesignPoints),
-                          "too many values", "take a larger step");
+      ReportDesign(diagnostics, lang::DiagnosticKind::kInvalidDesign, spec.values_range,
+                   fmt::format("`{}` would take {:.3g} values, more than a sweep's {}", spec.name,
+                               steps + 1, kMaxDesignPoints),
+                   "too many values", "take a larger step");
       return std::nullopt;
     }
     count = static_cast<long long>(std::floor(steps + 1e-9)) + 1;
     if (count < 2 && high > low) {
-      ReportEmptyRange(diagnostics, spec.step->range,
-                       fmt::format("the step {}{} is larger than the range {}: `{}` would take "
-                                   "one value, {}{}",
-                                   *step, unit, range_text, spec.name, low, unit),
-                       "larger than the range",
-                       "take a step no larger than the range, or list the values with commas");
+      ReportDesign(diagnostics, lang::DiagnosticKind::kEmptyDesignRange, spec.step->range,
+                   fmt::format("the step {}{} is larger than the range {}: `{}` would take "
+                               "one value, {}{}",
+                               *step, unit, range_text, spec.name, low, unit),
+                   "larger than the range",
+                   "take a step no larger than the range, or list the values with commas");
       return std::nullopt;
     }
     for (long long k = 0; k < count; ++k) {
@@ -136,12 +128,11 @@ std::optional<Factor> FactorOf(const lang::SourceManager& sources, const VarySpe
   count = spec.count;
   if (count < 1 || (count == 1 && low != high) ||
       count > static_cast<long long>(kMaxDesignPoints)) {
-    ReportEmptyRange(
-        diagnostics, spec.count_range,
-        fmt::format("`count {}` cannot spread `{}` over {}", count, spec.name, range_text),
-        count < 1 ? "no values" : "too few or too many values",
-        fmt::format("a count is at least 2 for a range (the two ends) and at most {}",
-                    kMaxDesignPoints));
+    ReportDesign(diagnostics, lang::DiagnosticKind::kEmptyDesignRange, spec.count_range,
+                 fmt::format("`count {}` cannot spread `{}` over {}", count, spec.name, range_text),
+                 count < 1 ? "no values" : "too few or too many values",
+                 fmt::format("a count is at least 2 for a range (the two ends) and at most {}",
+                             kMaxDesignPoints));
     return std::nullopt;
   }
   for (long long k = 0; k < count; ++k) {
@@ -179,9 +170,9 @@ std::optional<Design> BuildDesign(const lang::SourceManager& sources, const Desi
   // A name already fixed by --set or varied by an earlier --vary: E0605.
   auto claim = [&](const std::string& name, lang::SourceRange range) {
     if (std::find(request.fixed.begin(), request.fixed.end(), name) != request.fixed.end()) {
-      ReportInvalidDesign(tracked, range,
-                          fmt::format("`{}` is fixed by `--set` and varied by the design", name),
-                          "also set with --set", "drop one: a parameter is either set or varied");
+      ReportDesign(tracked, lang::DiagnosticKind::kInvalidDesign, range,
+                   fmt::format("`{}` is fixed by `--set` and varied by the design", name),
+                   "also set with --set", "drop one: a parameter is either set or varied");
       return false;
     }
     for (const auto& [other, where] : seen) {
@@ -229,8 +220,8 @@ std::optional<Design> BuildDesign(const lang::SourceManager& sources, const Desi
   }
   if (!sampled.empty() && request.sampling == Sampling::kNone) {
     const Factor& first = factors[sampled[0]];
-    ReportInvalidDesign(
-        tracked, first.range,
+    ReportDesign(
+        tracked, lang::DiagnosticKind::kInvalidDesign, first.range,
         fmt::format("the range of `{}` has no `step` or `count`, and no `--sample` draws points "
                     "in it",
                     first.variable.name),
@@ -240,18 +231,18 @@ std::optional<Design> BuildDesign(const lang::SourceManager& sources, const Desi
   }
   if (sampled.empty() && request.sampling != Sampling::kNone) {
     const lang::SourceRange where = factors.empty() ? lang::SourceRange{} : factors.front().range;
-    ReportInvalidDesign(tracked, where,
-                        "`--sample` draws points in ranges written without `step` or `count`, "
-                        "and the design has none",
-                        "a grid", "write a range to sample as `NAME=LOW..HIGH UNIT`");
+    ReportDesign(tracked, lang::DiagnosticKind::kInvalidDesign, where,
+                 "`--sample` draws points in ranges written without `step` or `count`, "
+                 "and the design has none",
+                 "a grid", "write a range to sample as `NAME=LOW..HIGH UNIT`");
     return std::nullopt;
   }
   if (request.sampling == Sampling::kSobol &&
       sampled.size() > static_cast<std::size_t>(kMaxSobolDimensions)) {
-    ReportInvalidDesign(tracked, factors[sampled.back()].range,
-                        fmt::format("Sobol sampling takes at most {} ranges; the design has {}",
-                                    kMaxSobolDimensions, sampled.size()),
-                        "too many ranges", "use `--sample lhs=N`, which takes any number");
+    ReportDesign(tracked, lang::DiagnosticKind::kInvalidDesign, factors[sampled.back()].range,
+                 fmt::format("Sobol sampling takes at most {} ranges; the design has {}",
+                             kMaxSobolDimensions, sampled.size()),
+                 "too many ranges", "use `--sample lhs=N`, which takes any number");
     return std::nullopt;
   }
 
@@ -263,8 +254,9 @@ std::optional<Design> BuildDesign(const lang::SourceManager& sources, const Desi
   }
   if (request.sampling != Sampling::kNone) size *= request.samples;
   if (size > static_cast<double>(kMaxDesignPoints)) {
-    ReportInvalidDesign(
-        tracked, factors.empty() ? lang::SourceRange{} : factors.back().range,
+    ReportDesign(
+        tracked, lang::DiagnosticKind::kInvalidDesign,
+        factors.empty() ? lang::SourceRange{} : factors.back().range,
         fmt::format("the design has {:.4g} runs, more than a sweep's {}", size, kMaxDesignPoints),
         "too many runs", "take fewer values, or split the sweep in parts");
     return std::nullopt;

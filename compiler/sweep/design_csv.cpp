@@ -85,11 +85,12 @@ std::optional<CsvDesign> ReadCsvDesign(const lang::SourceManager& sources, lang:
           scan.SkipSpaces();
         }
         if (!name || !scan.AtEnd()) {
-          ReportMalformedDesign(tracked, field.size() == 0 ? scan.Here() : field,
-                                fmt::format("expected a parameter name with an optional unit in "
-                                            "brackets, found `{}`",
-                                            sources.Text(field)),
-                                "not a column header", std::string(kCsvHelp));
+          ReportDesign(tracked, lang::DiagnosticKind::kMalformedDesign,
+                       field.size() == 0 ? scan.Here() : field,
+                       fmt::format("expected a parameter name with an optional unit in "
+                                   "brackets, found `{}`",
+                                   sources.Text(field)),
+                       "not a column header", std::string(kCsvHelp));
           continue;
         }
         const lang::SourceRange name_range{file, name_start,
@@ -105,12 +106,12 @@ std::optional<CsvDesign> ReadCsvDesign(const lang::SourceManager& sources, lang:
       continue;
     }
     if (fields.size() != columns.size()) {
-      ReportMalformedDesign(tracked, {file, line_start, line_end},
-                            fmt::format("this row has {} value{}, but the header names {} "
-                                        "parameter{}",
-                                        fields.size(), fields.size() == 1 ? "" : "s",
-                                        columns.size(), columns.size() == 1 ? "" : "s"),
-                            "wrong number of values", "give one value per column, in order");
+      ReportDesign(tracked, lang::DiagnosticKind::kMalformedDesign, {file, line_start, line_end},
+                   fmt::format("this row has {} value{}, but the header names {} "
+                               "parameter{}",
+                               fields.size(), fields.size() == 1 ? "" : "s", columns.size(),
+                               columns.size() == 1 ? "" : "s"),
+                   "wrong number of values", "give one value per column, in order");
       line_start = next;
       continue;
     }
@@ -120,8 +121,8 @@ std::optional<CsvDesign> ReadCsvDesign(const lang::SourceManager& sources, lang:
       auto quantity = scan.Quantity();
       scan.SkipSpaces();
       if (!quantity || !scan.AtEnd()) {
-        ReportMalformedDesign(
-            tracked,
+        ReportDesign(
+            tracked, lang::DiagnosticKind::kMalformedDesign,
             field.size() == 0 ? lang::SourceRange{file, field.begin, field.begin + 1} : field,
             field.size() == 0 ? std::string("an empty value")
                               : fmt::format("expected a number with an optional unit, found `{}`",
@@ -136,17 +137,18 @@ std::optional<CsvDesign> ReadCsvDesign(const lang::SourceManager& sources, lang:
   }
   if (tracked.seen_error()) return std::nullopt;
   if (rows.empty()) {
-    ReportInvalidDesign(
-        tracked, {file, 0, static_cast<std::uint32_t>(std::min<std::size_t>(text.size(), 1))},
+    ReportDesign(
+        tracked, lang::DiagnosticKind::kInvalidDesign,
+        {file, 0, static_cast<std::uint32_t>(std::min<std::size_t>(text.size(), 1))},
         header_read ? "the design file has a header but no rows" : "the design file is empty",
         "no runs", std::string(kCsvHelp));
     return std::nullopt;
   }
   if (rows.size() > kMaxDesignPoints) {
-    ReportInvalidDesign(tracked, {file, 0, 1},
-                        fmt::format("the design file has {} rows, more than a sweep's {}",
-                                    rows.size(), kMaxDesignPoints),
-                        "too many runs", "split the design into several files");
+    ReportDesign(tracked, lang::DiagnosticKind::kInvalidDesign, {file, 0, 1},
+                 fmt::format("the design file has {} rows, more than a sweep's {}", rows.size(),
+                             kMaxDesignPoints),
+                 "too many runs", "split the design into several files");
     return std::nullopt;
   }
 

@@ -19,10 +19,10 @@ constexpr std::string_view kVaryHelp =
 
 }  // namespace
 
-void ReportMalformedDesign(lang::DiagnosticConsumer& diagnostics, lang::SourceRange range,
-                           std::string message, std::string label, std::string help) {
-  auto diagnostic = lang::MakeDiagnostic(lang::DiagnosticKind::kMalformedDesign, range,
-                                         std::move(message), std::move(label));
+void ReportDesign(lang::DiagnosticConsumer& diagnostics, lang::DiagnosticKind kind,
+                  lang::SourceRange range, std::string message, std::string label,
+                  std::string help) {
+  auto diagnostic = lang::MakeDiagnostic(kind, range, std::move(message), std::move(label));
   diagnostic.help = std::move(help);
   diagnostics.Consume(std::move(diagnostic));
 }
@@ -171,8 +171,8 @@ std::optional<VarySpec> ParseVary(const lang::SourceManager& sources, lang::File
   DesignScanner scan(sources, file, 0, static_cast<std::uint32_t>(text.size()));
   VarySpec spec;
   auto fail = [&](std::string message, std::string label) {
-    ReportMalformedDesign(diagnostics, scan.Here(), std::move(message), std::move(label),
-                          std::string(kVaryHelp));
+    ReportDesign(diagnostics, lang::DiagnosticKind::kMalformedDesign, scan.Here(),
+                 std::move(message), std::move(label), std::string(kVaryHelp));
     return std::nullopt;
   };
   scan.SkipSpaces();
@@ -213,12 +213,11 @@ std::optional<VarySpec> ParseVary(const lang::SourceManager& sources, lang::File
       auto count = scan.Number();
       if (!count || *count != std::floor(*count) || std::abs(*count) > 1e15) {
         const lang::SourceRange where = count ? scan.Range(count_start) : scan.Here();
-        ReportMalformedDesign(
-            diagnostics, where,
-            fmt::format("expected a whole number of values after `count`, "
-                        "found {}",
-                        count ? fmt::format("`{}`", sources.Text(where)) : scan.Found()),
-            "", std::string(kVaryHelp));
+        ReportDesign(diagnostics, lang::DiagnosticKind::kMalformedDesign, where,
+                     fmt::format("expected a whole number of values after `count`, "
+                                 "found {}",
+                                 count ? fmt::format("`{}`", sources.Text(where)) : scan.Found()),
+                     "", std::string(kVaryHelp));
         return std::nullopt;
       }
       spec.count = static_cast<long long>(*count);

@@ -71,8 +71,9 @@ class DesignScanner {
 std::optional<VarySpec> ParseVary(const lang::SourceManager& sources, lang::FileId file,
                                   lang::DiagnosticConsumer& diagnostics);
 
-// Reports E0601 at `range`.
-void ReportMalformedDesign(lang::DiagnosticConsumer& diagnostics, lang::SourceRange range,
-                           std::string message, std::string label, std::string help);
+// Reports a design diagnostic (E0601 to E0605) at `range`.
+void ReportDesign(lang::DiagnosticConsumer& diagnostics, lang::DiagnosticKind kind,
+                  lang::SourceRange range, std::string message, std::string label,
+                  std::string help);
 
 }  // namespace sled::compiler

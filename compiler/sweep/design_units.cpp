@@ -59,23 +59,15 @@ void ReportUnitMismatch(lang::DiagnosticConsumer& diagnostics, lang::SourceRange
 
 }  // namespace
 
-void ReportInvalidDesign(lang::DiagnosticConsumer& diagnostics, lang::SourceRange range,
-                         std::string message, std::string label, std::string help) {
-  auto diagnostic = lang::MakeDiagnostic(lang::DiagnosticKind::kInvalidDesign, range,
-                                         std::move(message), std::move(label));
-  diagnostic.help = std::move(help);
-  diagnostics.Consume(std::move(diagnostic));
-}
-
 bool IsScalarParameter(const ScenarioParameter& parameter, lang::SourceRange range,
                        lang::DiagnosticConsumer& diagnostics) {
   if (parameter.value.size() == 1) return true;
-  ReportInvalidDesign(diagnostics, range,
-                      fmt::format("`{}` is a vector; a design varies numbers", parameter.name),
-                      "a vector parameter",
-                      fmt::format("declare a scalar `param` for the component that varies and "
-                                  "build the vector from it: `({}_x, 0, 0) mm`",
-                                  parameter.name));
+  ReportDesign(diagnostics, lang::DiagnosticKind::kInvalidDesign, range,
+               fmt::format("`{}` is a vector; a design varies numbers", parameter.name),
+               "a vector parameter",
+               fmt::format("declare a scalar `param` for the component that varies and "
+                           "build the vector from it: `({}_x, 0, 0) mm`",
+                           parameter.name));
   return false;
 }
 

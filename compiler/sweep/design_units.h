@@ -39,8 +39,4 @@ std::optional<double> ValueInUnit(const lang::SourceManager& sources, const Writ
 bool IsScalarParameter(const ScenarioParameter& parameter, lang::SourceRange range,
                        lang::DiagnosticConsumer& diagnostics);
 
-// Reports E0605 at `range`.
-void ReportInvalidDesign(lang::DiagnosticConsumer& diagnostics, lang::SourceRange range,
-                         std::string message, std::string label, std::string help);
-
 }  // namespace sled::compiler
