@@ -23,6 +23,8 @@ packages=(
   libsundials-dev     # benchmark-only peer: CVODE (tests/bench/cvode_peer.cpp)
   nlohmann-json3-dev  # sled report reads summary.json
   chromium            # test-only: loads the report page headless (tests/report)
+  slurm-wlm           # test-only: a one-node cluster for `sled sweep --slurm`
+  munge               #   (scripts/slurm_cluster.sh, scripts/slurm_sweep_test.sh)
 )
 
 missing=()

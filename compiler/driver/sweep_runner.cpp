@@ -94,7 +94,8 @@ RunnerResult RunPending(const std::string& directory, const SweepManifest& manif
     job.log_path = (fs::path(folder) / "run.log").string();
     jobs.push_back(std::move(job));
   }
-  const std::size_t total = manifest.runs.size();
+  // Out of the runs this call answers for: all of them, or one slice's.
+  const std::size_t total = pending.size() + static_cast<std::size_t>(result.skipped);
   int finished = result.skipped;
   auto describe = [&](std::size_t i) {
     std::string text;
