@@ -140,9 +140,11 @@ std::string RenderSvgPlot(const PlotSpec& spec,
     if (series.style.markers) {
       for (std::size_t i = 0; i < series.x.size() && i < series.y.size(); ++i) {
         if (!std::isfinite(series.x[i]) || !std::isfinite(series.y[i])) continue;
-        svg += fmt::format("<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\"/>",
-                           frame.X(series.x[i]), frame.Y(series.y[i]), 1.5 + series.style.width,
-                           EscapeHtml(series.style.color));
+        svg += fmt::format(
+            "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{}\" fill=\"{}\" stroke=\"#fff\" "
+            "stroke-width=\"0.8\"/>",
+            frame.X(series.x[i]), frame.Y(series.y[i]), 1.5 + series.style.width,
+            EscapeHtml(series.style.color));
       }
       continue;
     }

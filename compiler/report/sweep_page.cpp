@@ -257,10 +257,16 @@ std::optional<QuadraticFit> FitQuadratic(const std::vector<double>& x, const std
   const double y0 = *y_low;
   const double sx = *x_high > x0 ? *x_high - x0 : 1.0;
   const double sy = *y_high > y0 ? *y_high - y0 : 1.0;
-  static constexpr std::array<std::array<bool, 6>, 3> kTerms = {
-      {{true, true, true, true, true, true},
-       {true, true, true, false, true, false},
-       {true, true, true, false, false, false}}};
+  // A squared term only for an input with three values or more (with two, x^2 is a line too).
+  auto distinct = [](std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    return std::unique(values.begin(), values.end()) - values.begin();
+  };
+  const bool x_curved = distinct(x) >= 3;
+  const bool y_curved = distinct(y) >= 3;
+  const std::array<std::array<bool, 6>, 3> kTerms = {{{true, true, true, x_curved, true, y_curved},
+                                                      {true, true, true, false, true, false},
+                                                      {true, true, true, false, false, false}}};
   for (const auto& terms : kTerms) {
     std::vector<std::size_t> used;
     for (std::size_t t = 0; t < 6; ++t) {
