@@ -84,6 +84,10 @@ void PrepareChild(const ProcessJob& job) {
 }  // namespace
 
 bool ProcessOutcome::interrupted() const {
+  // A program that catches the signal to save its work exits 128 + the signal (sled run does).
+  for (const int stop : {SIGINT, SIGTERM, SIGHUP}) {
+    if (exit_code == 128 + stop) return true;
+  }
   return signal == SIGINT || signal == SIGTERM || signal == SIGHUP || signal == SIGKILL;
 }
 

@@ -24,7 +24,8 @@ struct ProcessOutcome {
   int signal = 0;      // the signal that ended it, or 0
   double wall_seconds = 0.0;
   // Ended by a signal that stops work rather than reports a fault (SIGINT, SIGTERM, SIGHUP,
-  // SIGKILL): the job did not finish and should run again.
+  // SIGKILL), or exited 128 + SIGINT, SIGTERM or SIGHUP after catching one: the job did not
+  // finish and should run again.
   bool interrupted() const;
 };
 

@@ -2,6 +2,11 @@
 // varies, one value too stiff for the integrator's minimum step (that run fails numerically and
 // is recorded, not fatal). Runs are compared byte for byte across worker counts and against
 // `sled run` itself; resuming runs only what did not finish.
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 #include <filesystem>
 
 #include <gmock/gmock.h>
@@ -100,6 +105,45 @@ TEST_F(SweepCommand, AResumedSweepRunsOnlyWhatDidNotFinish) {
   const SledResult again = Sled({"sweep", "resume", out.string()});
   EXPECT_EQ(again.exit_code, 0) << again.err;
   EXPECT_THAT(again.err, HasSubstr("runs/0002 done"));
+}
+
+TEST_F(SweepCommand, AnInterruptedSweepKeepsWhatFinishedAndResumes) {
+  // Four flagship runs of 200 ms, one at a time; SIGTERM once the first has finished.
+  const fs::path out = temp() / "sweep";
+  const std::vector<std::string> args = {
+      testing::SledBinary().string(),
+      "sweep",
+      (testing::kSourceRoot / "examples/frontal_sled.sled").string(),
+      "-o",
+      out.string(),
+      "--vary",
+      "speed=40..64 km/h step 8",
+      "--jobs",
+      "1"};
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, STDERR_FILENO);
+    std::vector<char*> argv;
+    for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
+    argv.push_back(nullptr);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  for (int i = 0; i < 6000 && !fs::exists(out / "runs/0000/status.json"); ++i) usleep(5000);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_TRUE(fs::exists(out / "runs/0000/status.json"));
+  EXPECT_FALSE(fs::exists(out / "runs/0003/status.json"));
+  EXPECT_THAT(ReadText(out / "sweep.csv"), HasSubstr("not run"));
+  const SledResult resumed = Sled({"sweep", "resume", out.string()});
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_THAT(resumed.err, ::testing::Not(HasSubstr("runs/0000 done")));
+  EXPECT_THAT(resumed.err, HasSubstr("runs/0003 done"));
 }
 
 TEST_F(SweepCommand, AnotherDesignOrAChangedSceneIsNotMixedIn) {
