@@ -2,6 +2,7 @@
 // prints.
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -59,6 +60,7 @@ struct Options {
   std::string resume;
   bool report = false;
   std::vector<double> tolerances;
+  int jobs = 0;  // study: worker processes; 0: every core
 };
 
 // The message, then how to get help: the command's own options when there is a command.
@@ -319,6 +321,15 @@ int main(int argc, char** argv) {
                 value),
             options.command);
       }
+    } else if (arg == "--jobs") {
+      int jobs = 0;
+      const std::string value = i + 1 < args.size() ? args[++i] : "";
+      const auto [end, status] = std::from_chars(value.data(), value.data() + value.size(), jobs);
+      if (status != std::errc() || end != value.data() + value.size() || jobs < 1) {
+        return UsageError(fmt::format("`--jobs {}`: write a positive count", value),
+                          options.command);
+      }
+      options.jobs = jobs;
     } else if (arg == "--tolerances") {
       if (i + 1 >= args.size())
         return UsageError(fmt::format("`{}` needs a list", arg), options.command);
@@ -381,7 +392,8 @@ int main(int argc, char** argv) {
       run.checkpoint_every = options.checkpoint_every;
       run.resume = options.resume;
       run.report = options.report;
-      if (options.command == "study") return sled::driver::StudyCommand({run, options.tolerances});
+      if (options.command == "study")
+        return sled::driver::StudyCommand({run, options.tolerances, options.jobs});
       return sled::driver::RunCommand(run);
     }
   } catch (const std::exception& error) {

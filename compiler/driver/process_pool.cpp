@@ -11,7 +11,12 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "runtime/atomic_file.h"
 
 namespace sled::driver {
 namespace {
@@ -164,6 +169,40 @@ bool RunProcesses(const std::vector<ProcessJob>& jobs, int workers,
     if (on_done) on_done(job, outcome);
   }
   return g_interrupt == 0;
+}
+
+bool RunInWorkers(std::size_t count, int workers,
+                  const std::function<std::string(std::size_t)>& work,
+                  std::vector<std::optional<std::string>>* results,
+                  const std::function<void(std::size_t)>& on_done) {
+  // Each child leaves its result in a file of a private folder, read once the child has ended
+  // (a pipe would need reading while the children run).
+  std::string folder = (std::filesystem::temp_directory_path() / "sled_workers_XXXXXX").string();
+  if (mkdtemp(folder.data()) == nullptr)
+    throw std::runtime_error("cannot create a folder for workers");
+  auto result_path = [&](std::size_t i) { return folder + "/" + std::to_string(i); };
+  std::vector<ProcessJob> jobs(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    jobs[i].body = [&, i] {
+      const std::string bytes = work(i);
+      std::string error;
+      return runtime::ReplaceFile(result_path(i), bytes, &error) ? 0 : 1;
+    };
+  }
+  results->assign(count, std::nullopt);
+  const bool finished =
+      RunProcesses(jobs, workers, {}, [&](std::size_t i, const ProcessOutcome& outcome) {
+        if (outcome.exit_code == 0) {
+          std::ifstream in(result_path(i), std::ios::binary);
+          std::ostringstream bytes;
+          bytes << in.rdbuf();
+          if (in) (*results)[i] = bytes.str();
+        }
+        if (on_done) on_done(i);
+      });
+  std::error_code error;
+  std::filesystem::remove_all(folder, error);
+  return finished;
 }
 
 }  // namespace sled::driver

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,16 @@ int AvailableCores();
 bool RunProcesses(const std::vector<ProcessJob>& jobs, int workers,
                   const std::function<void(std::size_t)>& on_start,
                   const std::function<void(std::size_t, const ProcessOutcome&)>& on_done);
+
+// Computes work(i) for every i < count in forked children, at most `workers` at a time, and
+// gives back what each returned: (*results)[i], or nullopt for a child that did not finish (a
+// crash, a kill). `on_done(i)` is called in the parent as each ends. A forked child computes
+// exactly what the parent would: the same code on a copy of the same memory. False when the
+// parent was interrupted.
+bool RunInWorkers(std::size_t count, int workers,
+                  const std::function<std::string(std::size_t)>& work,
+                  std::vector<std::optional<std::string>>* results,
+                  const std::function<void(std::size_t)>& on_done = {});
 
 // The path of the running program (/proc/self/exe), to run `sled` itself in a child.
 std::string SelfExecutable();

@@ -10,12 +10,14 @@
 
 #include <fmt/format.h>
 
+#include "compiler/driver/process_pool.h"
 #include "compiler/driver/progress_line.h"
 #include "compiler/report/svg_plot.h"
 #include "runtime/output_writer.h"
 #include "runtime/post/injury_criteria.h"
 #include "runtime/post/series_error.h"
 #include "runtime/run.h"
+#include "runtime/run_record.h"
 
 namespace sled::driver {
 namespace {
@@ -23,6 +25,7 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitInputErrors = 1;
 constexpr int kExitNumericalFailure = 3;
+constexpr int kExitInterrupted = 130;
 
 // One run of the scene with a method and a relative tolerance (the absolute tolerance keeps
 // the scene's ratio to it).
@@ -36,11 +39,19 @@ struct Sample {
   runtime::post::SeriesError error;
 };
 
-Sample RunSample(const runtime::Model& scene, const std::string& method, double tolerance) {
+// The scene with another method and relative tolerance (the absolute tolerance keeps the
+// scene's ratio to it).
+runtime::Model ModelFor(const runtime::Model& scene, const std::string& method, double tolerance) {
   runtime::Model model = scene;
   model.integrator = method;
   model.absolute_tolerance = scene.absolute_tolerance / scene.relative_tolerance * tolerance;
   model.relative_tolerance = tolerance;
+  return model;
+}
+
+// One run as the study measures it; `criteria` stays empty (Evaluate fills it).
+Sample RunSample(const runtime::Model& scene, const std::string& method, double tolerance) {
+  const runtime::Model model = ModelFor(scene, method, tolerance);
   Sample sample;
   sample.method = method;
   sample.tolerance = tolerance;
@@ -58,8 +69,44 @@ Sample RunSample(const runtime::Model& scene, const std::string& method, double 
     sample.summary = std::move(summary);
     sample.series = std::move(series);
   }
-  sample.criteria = runtime::post::EvaluateCriteria(model, sample.series);
   return sample;
+}
+
+// Runs each (method, tolerance) as RunSample does, in worker processes, `jobs` at a time
+// (process_pool.h): a forked child computes what this process would, bit for bit, and sends its
+// summary and rows back (runtime/run_record.h); the criteria are evaluated here from the rows.
+// kExitOk; kExitInterrupted when interrupted, kExitInputErrors after saying which worker ended
+// without its result.
+int RunSamples(const runtime::Model& scene,
+               const std::vector<std::pair<std::string, double>>& wanted, int jobs,
+               const std::function<void()>& on_done, std::vector<Sample>* samples) {
+  std::vector<std::optional<std::string>> records;
+  const bool finished = RunInWorkers(
+      wanted.size(), jobs,
+      [&](std::size_t i) {
+        Sample sample = RunSample(scene, wanted[i].first, wanted[i].second);
+        sample.summary.wall_seconds = sample.wall_seconds;  // the fastest of the repeats
+        return runtime::SaveRunRecord(sample.summary, sample.series);
+      },
+      &records, [&](std::size_t) { on_done(); });
+  if (!finished) return kExitInterrupted;
+  samples->clear();
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    Sample sample;
+    sample.method = wanted[i].first;
+    sample.tolerance = wanted[i].second;
+    if (!records[i] ||
+        !runtime::LoadRunRecord(std::move(*records[i]), &sample.summary, &sample.series)) {
+      std::cerr << fmt::format("sled: the worker running {} at {:.0e} ended without a result\n",
+                               sample.method, sample.tolerance);
+      return kExitInputErrors;
+    }
+    sample.wall_seconds = sample.summary.wall_seconds;
+    sample.criteria = runtime::post::EvaluateCriteria(
+        ModelFor(scene, sample.method, sample.tolerance), sample.series);
+    samples->push_back(std::move(sample));
+  }
+  return kExitOk;
 }
 
 void Compare(const runtime::Model& model, Sample& sample, const Sample& reference) {
@@ -169,16 +216,23 @@ int StudyCommand(const StudyOptions& options) {
 
   // The reference, and a second method at the same tolerance to say how good it is.
   const double tightest = ladder.back() / 100;
-  // On a terminal, which run of the study is under way; nothing when piped.
+  // On a terminal, how many runs of the study have finished; nothing when piped.
   ProgressLine progress(options.scene.progress);
   const std::size_t runs = 3 + methods.size() * ladder.size();
-  std::size_t run = 0;
-  auto show = [&](const std::string& method, double tolerance) {
-    progress.Show(
-        fmt::format("  study: run {} of {}, {} at {:.0e}", ++run, runs, method, tolerance), true);
+  std::size_t done = 0;
+  auto count = [&] {
+    progress.Show(fmt::format("  study: {} of {} runs done", ++done, runs), true);
   };
-  show("dopri5 (reference)", tightest);
-  const Sample reference = RunSample(scene, "dopri5", tightest);
+  const int jobs = options.jobs > 0 ? options.jobs : AvailableCores();
+  progress.Show(fmt::format("  study: {} runs on {} worker{}", runs, jobs, jobs == 1 ? "" : "s"),
+                true);
+  std::vector<Sample> first;
+  if (const int status =
+          RunSamples(scene, {{"dopri5", tightest}, {"exponential", tightest}}, jobs, count, &first);
+      status != kExitOk) {
+    return status;
+  }
+  const Sample& reference = first[0];
   std::string directory = options.scene.output_directory;
   if (directory.empty()) {
     directory = std::filesystem::path(options.scene.file).stem().string() + "-study";
@@ -200,22 +254,23 @@ int StudyCommand(const StudyOptions& options) {
     std::cerr << fmt::format("  its outputs up to the failure are in `{}`\n", path);
     return kExitNumericalFailure;
   }
-  show("exponential (reference check)", tightest);
-  Sample check = RunSample(scene, "exponential", tightest);
+  Sample check = first[1];
   Compare(scene, check, reference);
 
-  std::vector<Sample> samples;
+  // The ladder, then the scene's own settings last.
+  std::vector<std::pair<std::string, double>> wanted;
   for (const std::string& method : methods) {
-    for (const double tolerance : ladder) {
-      show(method, tolerance);
-      samples.push_back(RunSample(scene, method, tolerance));
-      Compare(scene, samples.back(), reference);
-    }
+    for (const double tolerance : ladder) wanted.emplace_back(method, tolerance);
   }
-  show(scene.integrator + " (the scene's own)", scene.relative_tolerance);
-  Sample own = RunSample(scene, scene.integrator, scene.relative_tolerance);
+  wanted.emplace_back(scene.integrator, scene.relative_tolerance);
+  std::vector<Sample> samples;
+  if (const int status = RunSamples(scene, wanted, jobs, count, &samples); status != kExitOk) {
+    return status;
+  }
   progress.Clear();
-  Compare(scene, own, reference);
+  for (Sample& sample : samples) Compare(scene, sample, reference);
+  Sample own = std::move(samples.back());
+  samples.pop_back();
 
   std::cout << fmt::format("{:<12} {:>8} {:>9} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}\n",
                            "method", "tol", "time [s]", "steps", "rej", "evals", "all", "position",

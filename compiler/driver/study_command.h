@@ -18,6 +18,7 @@ namespace sled::driver {
 struct StudyOptions {
   RunCommandOptions scene;         // file, stdlib, overrides, diagnostics, output folder
   std::vector<double> tolerances;  // relative; empty: 1e-3 to 1e-7
+  int jobs = 0;                    // worker processes; 0: every core
 };
 
 // The value of `--tolerances`: positive numbers separated by commas. False with `error` set.

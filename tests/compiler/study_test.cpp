@@ -132,6 +132,29 @@ TEST_F(Study, AReferenceThatFailsIsANumericalFailureWithItsRowsKept) {
   EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 65);  // the header and 0 to 63 ms
 }
 
+// The study's runs go to worker processes; what they measure does not depend on how many.
+TEST_F(Study, TheErrorsAreTheSameBitForBitWhateverTheWorkerCount) {
+  auto table_without_times = [&](const std::string& jobs) {
+    const fs::path out = temp() / ("jobs" + jobs);
+    const SledResult result = Sled({"study", "examples/pendulum.sled", "--tolerances", "1e-3,1e-5",
+                                    "-o", out.string(), "--jobs", jobs});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    std::istringstream csv(ReadText(out / "study.csv"));
+    std::string table;
+    for (std::string line; std::getline(csv, line);) {
+      // Drop the third field, the wall time.
+      const std::size_t second = line.find(',', line.find(',') + 1);
+      table += line.substr(0, second) + line.substr(line.find(',', second + 1)) + "\n";
+    }
+    return std::make_pair(table, result.out);
+  };
+  const auto [serial, serial_out] = table_without_times("1");
+  const auto [parallel, parallel_out] = table_without_times("2");
+  EXPECT_GT(std::count(serial.begin(), serial.end(), '\n'), 6);
+  EXPECT_EQ(serial, parallel);
+  EXPECT_THAT(parallel_out, HasSubstr("the scene's own settings"));
+}
+
 TEST_F(Study, ABadLadderIsAUsageError) {
   for (const char* ladder : {"1e-3,zero", "2", "-1e-4", ""}) {
     const SledResult result = Sled({"study", "examples/pendulum.sled", "--tolerances", ladder});
