@@ -85,7 +85,16 @@ std::string ParseOptions(const std::vector<std::string>& args, SweepOptions& o) 
       o.slurm_options.wait = true;
     } else if (arg == "--report") {
       o.passthrough.push_back(arg);
-    } else if (arg.rfind("--", 0) == 0 || arg == "-o") {
+    } else if (arg.size() > 1 && arg[0] == '-') {
+      if (!TakesOption(*FindCommand("sweep"), arg)) {
+        std::vector<std::string> known;
+        for (const std::string_view option : FindCommand("sweep")->options) {
+          known.emplace_back(option);
+        }
+        const std::string hint = lang::DidYouMean(arg, known);
+        return fmt::format("unknown option `{}` for `sweep`{}", arg,
+                           hint.empty() ? "" : "; " + hint);
+      }
       if (!value(&v)) return fmt::format("`{}` needs a value", arg);
       if (arg == "--vary") {
         o.vary.push_back(v);
@@ -140,8 +149,7 @@ std::string ParseOptions(const std::vector<std::string>& args, SweepOptions& o) 
       } else if (arg == "--sbatch") {
         o.slurm_options.sbatch_arguments.push_back(v);
       } else {
-        --i;
-        return fmt::format("unknown option `{}` for `sweep`", arg);
+        return fmt::format("`{}` takes no value here", arg);
       }
     } else {
       positional.push_back(arg);
