@@ -2,24 +2,15 @@
 #include "compiler/check/check.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
+#include <system_error>
 
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
 #include "lang/syntax/parser.h"
 
-#ifndef SLED_SOURCE_ROOT
-#define SLED_SOURCE_ROOT "."
-#endif
-
 namespace sled::compiler {
-
-std::string DefaultStdlibRoot() {
-  if (const char* from_environment = std::getenv("SLED_STDLIB")) return from_environment;
-  return std::string(SLED_SOURCE_ROOT) + "/stdlib";
-}
 
 CheckedScenario ParseAndCheck(lang::SourceManager& sources, lang::FileId file,
                               const CheckOptions& options) {
@@ -310,11 +301,29 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
   }
 
   const bool standard = parts[0] == "std";
-  const std::string root =
-      standard ? (options_.stdlib_root.empty() ? DefaultStdlibRoot() : options_.stdlib_root)
-               : scope.directory;
   const std::string relative = JoinPath(parts, standard ? 1 : 0, '/');
-  const std::string file_path = (root.empty() ? std::string(".") : root) + "/" + relative + ".sled";
+  // `std.x` is in the standard library; another module in the importing file's folder, else in
+  // the first folder of the module path that has it.
+  std::vector<std::string> roots;
+  if (standard) {
+    roots.push_back(options_.stdlib_root.empty() ? DefaultStdlibRoot() : options_.stdlib_root);
+  } else {
+    roots.push_back(scope.directory);
+    roots.insert(roots.end(), options_.module_path.begin(), options_.module_path.end());
+  }
+  auto path_under = [&](const std::string& folder) {
+    return (folder.empty() ? std::string(".") : folder) + "/" + relative + ".sled";
+  };
+  std::string root = roots.front();
+  for (const std::string& candidate : roots) {
+    std::error_code error;
+    if (sources_.Find(path_under(candidate)) ||
+        std::filesystem::is_regular_file(path_under(candidate), error)) {
+      root = candidate;
+      break;
+    }
+  }
+  const std::string file_path = path_under(root);
 
   if (std::find(import_stack_.begin(), import_stack_.end(), file_path) != import_stack_.end()) {
     Report(DiagnosticKind::kImportCycle, statement.target->range,

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compiler/check/checked_scenario.h"
+#include "compiler/check/library_paths.h"
 #include "lang/ast/ast.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/source/source_manager.h"
@@ -16,9 +17,12 @@ namespace sled::compiler {
 
 struct CheckOptions {
   lang::DiagnosticConsumer* diagnostics = nullptr;  // required
-  // Where `import std.x.y` looks: the standard library's root folder. Empty means the folder
-  // this build was configured with, or $SLED_STDLIB when set.
+  // Where `import std.x.y` looks: the standard library's root folder. Empty means
+  // DefaultStdlibRoot() (compiler/check/library_paths.h).
   std::string stdlib_root;
+  // Where other imports look after the importing file's own folder, in order (sled::Compile
+  // adds the folders of $SLED_PATH).
+  std::vector<std::string> module_path;
   // `--set NAME=VALUE`: parameter overrides, as source text of a value.
   std::vector<std::pair<std::string, std::string>> overrides;
   bool lints = true;
@@ -29,11 +33,8 @@ CheckedScenario Check(lang::SourceManager& sources, const lang::ast::File& file,
                       const CheckOptions& options);
 
 // Parses a file of `sources` and checks it, reporting both stages' diagnostics to
-// options.diagnostics: the front end of `sled run`, the tests and the fuzzers.
+// options.diagnostics (sled::Compile, sled/compile.h, runs this and the lowering).
 CheckedScenario ParseAndCheck(lang::SourceManager& sources, lang::FileId file,
                               const CheckOptions& options);
-
-// The standard library folder Check uses when CheckOptions::stdlib_root is empty.
-std::string DefaultStdlibRoot();
 
 }  // namespace sled::compiler

@@ -21,16 +21,16 @@
 #include "compiler/driver/run_command.h"
 #include "compiler/driver/study_command.h"
 #include "compiler/driver/sweep_command.h"
-#include "compiler/lower/lower.h"
+#include "lang/diagnostics/load_file.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
 #include "lang/legacy/convert.h"
 #include "lang/syntax/parser.h"
 #include "runtime/atomic_file.h"
+#include "sled/compile.h"
 
 namespace {
 
-using sled::driver::LoadUserFile;
 using sled::driver::PrintDiagnostics;
 using sled::lang::DiagnosticCollector;
 using sled::lang::SourceManager;
@@ -87,32 +87,21 @@ int RunCheck(const Options& options) {
   if (options.files.empty()) return UsageError("`check` needs at least one file", options.command);
   bool errors = false;
   for (const std::string& path : options.files) {
-    SourceManager sources;
-    DiagnosticCollector collector;
-    if (auto file = LoadUserFile(sources, path, collector)) {
-      sled::lang::ParseOptions parse_options;
-      parse_options.diagnostics = &collector;
-      const auto ast = sled::lang::Parse(sources, *file, parse_options);
-      if (options.dump_ast) std::cout << sled::lang::ast::Dump(ast);
-      sled::compiler::CheckOptions check_options;
-      check_options.diagnostics = &collector;
-      check_options.stdlib_root = options.stdlib;
-      check_options.overrides = options.overrides;
-      check_options.lints = options.lints;
-      const auto scenario = sled::compiler::Check(sources, ast, check_options);
-      if (options.dump_checked && !collector.has_errors()) {
-        std::cout << sled::compiler::Dump(scenario);
-      }
-      if (options.dump_model && !collector.has_errors()) {
-        sled::compiler::LowerOptions lower_options;
-        lower_options.diagnostics = &collector;
-        const auto lowered = sled::compiler::Lower(scenario, sources, lower_options);
-        std::cout << sled::runtime::DumpModel(lowered.model);
-        for (const std::string& note : lowered.notes) std::cerr << note << '\n';
-      }
+    sled::CompileOptions compile_options;
+    compile_options.stdlib = options.stdlib;
+    compile_options.overrides = options.overrides;
+    compile_options.lints = options.lints;
+    compile_options.lower = options.dump_model;
+    const sled::Compilation compiled = sled::Compile(sled::Source::File(path), compile_options);
+    if (options.dump_ast && compiled.ast()) std::cout << sled::lang::ast::Dump(*compiled.ast());
+    if (options.dump_checked && compiled.ok()) {
+      std::cout << sled::compiler::Dump(compiled.scenario());
     }
-    PrintDiagnostics(sources, collector, options.compact, ColorWanted());
-    errors |= collector.has_errors();
+    if (compiled.has_model()) std::cout << sled::runtime::DumpModel(compiled.model());
+    std::cerr << compiled.Render(options.compact ? sled::lang::DiagnosticStyle::kCompact
+                                                 : sled::lang::DiagnosticStyle::kRich,
+                                 ColorWanted());
+    errors |= !compiled.ok();
   }
   return errors ? kExitInputErrors : kExitOk;
 }
@@ -123,7 +112,7 @@ int RunFormat(const Options& options) {
   for (const std::string& path : options.files) {
     SourceManager sources;
     DiagnosticCollector collector;
-    auto file = LoadUserFile(sources, path, collector);
+    auto file = sled::lang::LoadFileOrReport(sources, path, collector);
     if (!file) {
       PrintDiagnostics(sources, collector, options.compact, ColorWanted());
       changed_or_failed = true;
@@ -175,7 +164,7 @@ int RunConvert(const Options& options) {
   }
   SourceManager sources;
   DiagnosticCollector collector;
-  const auto file = LoadUserFile(sources, options.files[0], collector);
+  const auto file = sled::lang::LoadFileOrReport(sources, options.files[0], collector);
   std::string text;
   if (file) {
     sled::lang::legacy::ConvertOptions convert;

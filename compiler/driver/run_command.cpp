@@ -10,22 +10,13 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/check.h"
 #include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
-#include "compiler/lower/lower.h"
-#include "lang/syntax/parser.h"
 #include "runtime/checkpoint.h"
-#include "runtime/export/animation_glb.h"
-#include "runtime/export/animation_recorder.h"
-#include "runtime/export/iso_mme_writer.h"
-#include "runtime/export/state_dump.h"
-#include "runtime/output_writer.h"
-#include "runtime/post/channel_filters.h"
-#include "runtime/post/channel_peaks.h"
-#include "runtime/post/injury_criteria.h"
-#include "runtime/run.h"
+#include "runtime/post/criterion_value.h"
+#include "sled/output_folder.h"
+#include "sled/simulate.h"
 
 namespace sled::driver {
 namespace {
@@ -34,36 +25,6 @@ constexpr int kExitOk = 0;
 constexpr int kExitInputErrors = 1;
 constexpr int kExitUsage = 2;
 constexpr int kExitNumericalFailure = 3;
-
-// What `sled run` does where the run stops: records an animation frame at each output row and
-// writes the state printout at each dump time.
-class RunRecorder : public runtime::RunObserver {
- public:
-  RunRecorder(runtime::AnimationRecorder& animation, std::filesystem::path directory)
-      : animation_(animation), directory_(std::move(directory)) {}
-
-  void OnRow(const runtime::Model& model, const runtime::Data& data) override {
-    (void)model;
-    animation_.Record(data);
-  }
-  void OnStop(const runtime::Model& model, const runtime::Data& data) override {
-    const std::filesystem::path path = directory_ / runtime::StateDumpFileName(data.time);
-    std::string error;
-    if (runtime::WriteStateDump(path.string(), model, data, &error)) {
-      written_.push_back(path.string());
-    } else {
-      errors_.push_back(error);
-    }
-  }
-  const std::vector<std::string>& written() const { return written_; }
-  const std::vector<std::string>& errors() const { return errors_; }
-
- private:
-  runtime::AnimationRecorder& animation_;
-  std::filesystem::path directory_;
-  std::vector<std::string> written_;
-  std::vector<std::string> errors_;
-};
 
 // The ISO-MME test name: the scene file's stem with characters other than letters, digits, `-`
 // and `_` replaced by `_`.
@@ -150,70 +111,23 @@ bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::st
   return true;
 }
 
-std::optional<CompiledScene> CompileScene(const RunCommandOptions& options) {
-  lang::SourceManager sources;
-  lang::DiagnosticCollector collector;
-  const auto file = LoadUserFile(sources, options.file, collector);
-  if (!file) {
-    PrintDiagnostics(sources, collector, options.compact_diagnostics, options.color);
-    return std::nullopt;
-  }
-  compiler::CheckOptions check_options;
-  check_options.diagnostics = &collector;
-  check_options.stdlib_root = options.stdlib;
-  check_options.overrides = options.overrides;
-  CompiledScene compiled;
-  compiled.scenario = compiler::ParseAndCheck(sources, *file, check_options);
-  if (!compiled.scenario.has_scenario && !collector.has_errors()) {
-    // A module for `import` checks clean but holds nothing to simulate.
-    auto diagnostic = lang::MakeDiagnostic(
-        lang::DiagnosticKind::kMissingAttribute, lang::SourceRange{*file, 0, 0},
-        fmt::format("`{}` has no `scenario` to run", options.file), "no `scenario` block");
-    diagnostic.help =
-        "a file to run holds `scenario \"name\" { ... }`; a file without one is a module that "
-        "scenarios `import`";
-    collector.Consume(std::move(diagnostic));
-  }
-  PrintDiagnostics(sources, collector, options.compact_diagnostics, options.color);
-  if (collector.has_errors()) return std::nullopt;
-
-  compiler::LowerOptions lower_options;
-  lower_options.diagnostics = &collector;
-  compiled.lowered = compiler::Lower(compiled.scenario, sources, lower_options);
-  for (const std::string& note : compiled.lowered.notes) std::cerr << note << '\n';
+std::optional<Compilation> CompileScene(const RunCommandOptions& options) {
+  CompileOptions compile_options;
+  compile_options.stdlib = options.stdlib;
+  compile_options.overrides = options.overrides;
+  Compilation compiled = Compile(Source::File(options.file), compile_options);
+  std::cerr << compiled.Render(
+      options.compact_diagnostics ? lang::DiagnosticStyle::kCompact : lang::DiagnosticStyle::kRich,
+      options.color);
+  if (!compiled.ok()) return std::nullopt;
   return compiled;
 }
 
-void LocateFailure(const runtime::Model& model, runtime::Failure& failure) {
-  if (failure.where.empty()) return;
-  for (std::size_t s = 0; s < model.nsegment() && failure.source.file.empty(); ++s) {
-    if (model.segment_name[s] == failure.where) {
-      failure.source = model.segment_source[s];
-    } else if (model.joint_name[s] == failure.where) {
-      failure.source = model.joint_source[s];
-    }
-  }
-  for (std::size_t c = 0; c < model.constraint_source.size() && failure.source.file.empty(); ++c) {
-    if (model.constraint_name[c] == failure.where) failure.source = model.constraint_source[c];
-  }
-}
-
-std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure) {
-  LocateFailure(model, failure);
-  return fmt::format(
-      "at t = {:.6g} s{}: {}{}", failure.time,
-      failure.where.empty() ? "" : fmt::format(" in `{}`", failure.where), failure.cause,
-      failure.source.file.empty() ? ""
-                                  : fmt::format(" ({}:{}:{})", failure.source.file,
-                                                failure.source.line, failure.source.column));
-}
-
 int RunCommand(const RunCommandOptions& options) {
-  std::optional<CompiledScene> compiled = CompileScene(options);
+  std::optional<Compilation> compiled = CompileScene(options);
   if (!compiled) return kExitInputErrors;
-  const compiler::CheckedScenario& scenario = compiled->scenario;
-  compiler::Lowered& lowered = compiled->lowered;
-  const runtime::Model& model = lowered.model;
+  const compiler::CheckedScenario& scenario = compiled->scenario();
+  const runtime::Model& model = compiled->model();
   for (const double t : options.dump_times) {
     if (t < model.start_time - 1e-12 || t > model.end_time + 1e-12) {
       std::cerr << fmt::format(
@@ -236,13 +150,8 @@ int RunCommand(const RunCommandOptions& options) {
                  : (std::filesystem::path(options.file).parent_path() / from).string();
   }
   if (checkpoint_every > 0) {
-    const double rows = checkpoint_every / model.output_every;
-    if (!(model.output_every > 0) || std::llround(rows) < 1 ||
-        std::abs(rows - static_cast<double>(std::llround(rows))) > 1e-9 * rows) {
-      std::cerr << fmt::format(
-          "sled: `--checkpoint-every`: {} s is not a multiple of the output step {} s; "
-          "checkpoints are taken at output rows\n",
-          checkpoint_every, model.output_every);
+    if (const std::string why = CheckpointStepError(model, checkpoint_every); !why.empty()) {
+      std::cerr << fmt::format("sled: `--checkpoint-every`: {}\n", why);
       return kExitUsage;
     }
   }
@@ -271,67 +180,40 @@ int RunCommand(const RunCommandOptions& options) {
     return kExitInputErrors;
   }
 
-  runtime::Data data = runtime::MakeData(lowered.model);
-  runtime::TimeSeries series;
-  runtime::AnimationRecorder animation(model, runtime::OutputRowCount(model));
-  RunRecorder recorder(animation, directory);
-  runtime::RunOptions run_options;
+  OutputFolderOptions folder_options;
+  folder_options.directory = directory;
+  folder_options.test_name = TestName(options.file);
+  folder_options.iso_mme = options.iso_mme;
+  folder_options.notes = compiled->Notes();
+  OutputFolder folder(model, folder_options);
+  SimulateOptions simulate_options;
   ProgressLine progress(options.progress);
   if (progress.enabled()) {
-    run_options.progress = ProgressLine::ShowRunFraction;
-    run_options.progress_context = &progress;
+    simulate_options.progress = [&progress](double fraction) {
+      ProgressLine::ShowRunFraction(fraction, &progress);
+    };
   }
-  run_options.observer = &recorder;
-  run_options.stop_times = options.dump_times;
-  run_options.checkpoint_every = checkpoint_every;
-  run_options.checkpoint_directory = directory;
-  if (!resume.empty()) run_options.resume = &checkpoint;
-  runtime::RunSummary summary = runtime::Run(lowered.model, data, series, run_options);
+  simulate_options.stop_times = options.dump_times;
+  simulate_options.checkpoint_every = checkpoint_every;
+  simulate_options.checkpoint_directory = directory;
+  if (!resume.empty()) simulate_options.resume = &checkpoint;
+  const RunResult result = Simulate(model, simulate_options, {&folder});
+  const runtime::RunSummary& summary = result.summary;
   progress.Clear();
-  if (summary.failed) LocateFailure(model, summary.failure);
+  for (const std::string& warning : result.warnings) std::cerr << "sled: " << warning << '\n';
 
-  // Filtered channels and injury criteria, from the rows there are (up to a failure).
-  runtime::post::FilteredChannels filtered =
-      runtime::post::FilterOutputChannels(lowered.model, series);
-  const std::vector<runtime::post::CriterionValue> criteria =
-      runtime::post::EvaluateCriteria(lowered.model, series);
-  std::vector<std::string> warnings = lowered.notes;
-  for (const std::string& note : summary.notes) {
-    std::cerr << "sled: " << note << '\n';
-    warnings.push_back(note);
-  }
-  for (std::string& warning : filtered.warnings) {
-    std::cerr << "sled: " << warning << '\n';
-    warnings.push_back(std::move(warning));
-  }
-
-  std::string write_error;
-  const std::filesystem::path out(directory);
-  const bool written =
-      runtime::WriteTimeSeriesCsv((out / "timeseries.csv").string(), series, &write_error) &&
-      (filtered.series.names.empty() ||
-       runtime::WriteTimeSeriesCsv((out / "timeseries_filtered.csv").string(), filtered.series,
-                                   &write_error)) &&
-      runtime::WriteSummaryJson((out / "summary.json").string(), lowered.model, series, summary,
-                                warnings, &write_error, criteria,
-                                runtime::post::ChannelPeaks(series, filtered.series)) &&
-      runtime::WriteAnimationGlb((out / "animation.glb").string(), model, animation,
-                                 &write_error) &&
-      (!options.iso_mme ||
-       runtime::WriteIsoMme((out / "iso-mme").string(), TestName(options.file), model, series,
-                            filtered.series, criteria, &write_error));
-  for (const std::string& failed : recorder.errors()) std::cerr << "sled: " << failed << '\n';
-  if (recorder.written().size() + recorder.errors().size() < options.dump_times.size()) {
+  for (const std::string& failed : folder.dump_errors()) std::cerr << "sled: " << failed << '\n';
+  if (folder.dumps_written().size() + folder.dump_errors().size() < options.dump_times.size()) {
     std::cerr << fmt::format(
         "sled: the run stopped at t = {:.6g} s, before some `--dump-at` times\n", summary.end_time);
   }
-  if (!written || !recorder.errors().empty()) {
-    if (!written) std::cerr << "sled: " << write_error << '\n';
+  if (!result.sink_errors.empty() || !folder.dump_errors().empty()) {
+    for (const std::string& failed : result.sink_errors) std::cerr << "sled: " << failed << '\n';
     return kExitInputErrors;
   }
   // The page reads the files just written; a run that failed numerically has its page too.
   if (options.report && ReportCommand(directory, "") != kExitOk) return kExitInputErrors;
-  PrintCriteria(criteria);
+  PrintCriteria(result.criteria);
   if (summary.failed) {
     std::cerr << fmt::format(
         "sled: the simulation failed {}\n  outputs up to the failure are in `{}`\n",
@@ -341,8 +223,8 @@ int RunCommand(const RunCommandOptions& options) {
   std::cerr << fmt::format(
       "sled: {} rows to `{}` in {:.3f} s ({} steps, {} rejected, {} "
       "evaluations)\n",
-      series.rows(), directory, summary.wall_seconds, summary.stats.steps, summary.stats.rejected,
-      summary.stats.evaluations);
+      result.series.rows(), directory, summary.wall_seconds, summary.stats.steps,
+      summary.stats.rejected, summary.stats.evaluations);
   if (!summary.checkpoints.empty()) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",

@@ -12,9 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "compiler/check/checked_scenario.h"
-#include "compiler/lower/lower.h"
-#include "runtime/data.h"
+#include "sled/compile.h"
 
 namespace sled::driver {
 
@@ -49,18 +47,9 @@ bool ParseFormats(const std::string& text, bool* iso_mme, std::string* error);
 // negative time.
 bool ParseDumpTimes(const std::string& text, std::vector<double>* times, std::string* error);
 
-// The scene of `options.file` checked and lowered, its diagnostics and the lowering's notes
-// printed; nullopt (after saying why) when it cannot be read or has errors.
-struct CompiledScene {
-  compiler::CheckedScenario scenario;
-  compiler::Lowered lowered;
-};
-std::optional<CompiledScene> CompileScene(const RunCommandOptions& options);
-
-// Sets a failure's scene line from the segment or joint it names, when the runtime gave none.
-void LocateFailure(const runtime::Model& model, runtime::Failure& failure);
-// A numerical failure in one line: `at t = 0.0638 s in `ball.sphere`: why (scene.sled:6:13)`.
-std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure);
+// The scene of `options.file` through sled::Compile, its diagnostics (the lowering's notes
+// among them) printed to standard error; nullopt when it cannot be read or has errors.
+std::optional<Compilation> CompileScene(const RunCommandOptions& options);
 
 int RunCommand(const RunCommandOptions& options);
 

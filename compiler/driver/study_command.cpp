@@ -18,6 +18,7 @@
 #include "runtime/post/series_error.h"
 #include "runtime/run.h"
 #include "runtime/run_record.h"
+#include "sled/simulate.h"
 
 namespace sled::driver {
 namespace {
@@ -207,9 +208,9 @@ bool ParseTolerances(const std::string& text, std::vector<double>* tolerances, s
 }
 
 int StudyCommand(const StudyOptions& options) {
-  const std::optional<CompiledScene> compiled = CompileScene(options.scene);
+  const std::optional<Compilation> compiled = CompileScene(options.scene);
   if (!compiled) return kExitInputErrors;
-  const runtime::Model& scene = compiled->lowered.model;
+  const runtime::Model& scene = compiled->model();
   std::vector<double> ladder = options.tolerances;
   if (ladder.empty()) ladder = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
   const std::vector<std::string> methods = {"exponential", "dopri5", "rosenbrock"};

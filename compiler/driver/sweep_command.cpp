@@ -15,6 +15,7 @@
 #include "compiler/driver/sweep_runner.h"
 #include "compiler/driver/sweep_slurm.h"
 #include "compiler/sweep/design.h"
+#include "lang/diagnostics/load_file.h"
 
 namespace sled::driver {
 namespace {
@@ -181,7 +182,7 @@ std::string ParseOptions(const std::vector<std::string>& args, SweepOptions& o) 
 std::optional<SweepManifest> PlanSweep(const SweepOptions& o, bool color) {
   lang::SourceManager sources;
   lang::DiagnosticCollector collector;
-  const auto file = LoadUserFile(sources, o.target, collector);
+  const auto file = lang::LoadFileOrReport(sources, o.target, collector);
   if (!file) {
     PrintDiagnostics(sources, collector, o.compact, color);
     return std::nullopt;
@@ -203,7 +204,7 @@ std::optional<SweepManifest> PlanSweep(const SweepOptions& o, bool color) {
   compiler::DesignRequest request;
   for (const std::string& text : o.vary) request.vary.push_back(sources.Add("--vary", text));
   if (!o.design_file.empty()) {
-    request.csv = LoadUserFile(sources, o.design_file, collector);
+    request.csv = lang::LoadFileOrReport(sources, o.design_file, collector);
     if (!request.csv) {
       PrintDiagnostics(sources, collector, o.compact, color);
       return std::nullopt;
@@ -240,7 +241,7 @@ std::optional<SweepManifest> PlanSweep(const SweepOptions& o, bool color) {
   for (std::size_t run = 0; run < design->points.size(); ++run) {
     lang::SourceManager point_sources;
     lang::DiagnosticCollector point_collector;
-    const auto point_file = LoadUserFile(point_sources, o.target, point_collector);
+    const auto point_file = lang::LoadFileOrReport(point_sources, o.target, point_collector);
     compiler::CheckOptions point_options = check_options;
     point_options.diagnostics = &point_collector;
     point_options.lints = false;

@@ -66,7 +66,7 @@ std::int32_t Lowering::Function(FunctionId id) {
       break;
   }
   if (f.unload_slope) {
-    AddNote(f.range,
+    AddNote(lang::DiagnosticKind::kNotSimulatedYet, f.range,
             fmt::format("the unloading slope of function {} is not simulated yet; it unloads "
                         "by its energy loss and permanent set only",
                         f.name.empty() ? "here" : fmt::format("`{}`", f.name)));
@@ -114,37 +114,34 @@ void Lowering::AddOutput(const Output& output) {
   model_.output_filter_iso.push_back(output.iso_filter ? 1 : 0);
 }
 
-void Lowering::AddNote(const SourceRange& range, std::string message) {
-  notes_.push_back({range, std::move(message)});
+void Lowering::AddNote(lang::DiagnosticKind kind, const SourceRange& range, std::string message) {
+  notes_.push_back({kind, range, std::move(message)});
 }
 
-std::vector<std::string> Lowering::TakeNotes() {
+void Lowering::ReportNotes(lang::DiagnosticConsumer& diagnostics) {
   std::stable_sort(notes_.begin(), notes_.end(), [](const Note& a, const Note& b) {
     if (a.range.valid() != b.range.valid()) return a.range.valid();
     return a.range.valid() && lang::Precedes(a.range, b.range);
   });
-  std::vector<std::string> out;
-  out.reserve(notes_.size());
-  for (const Note& note : notes_) {
-    if (!note.range.valid()) {
-      out.push_back(fmt::format("note: {}", note.message));
-      continue;
-    }
-    const runtime::SourcePosition at = Position(note.range);
-    out.push_back(fmt::format("{}:{}:{}: note: {}", at.file, at.line, at.column, note.message));
+  for (Note& note : notes_) {
+    lang::Diagnostic diagnostic =
+        lang::MakeDiagnostic(note.kind, note.range, std::move(note.message));
+    if (!note.range.valid()) diagnostic.labels.clear();  // about the scenario as a whole
+    diagnostics.Consume(std::move(diagnostic));
   }
   notes_.clear();
-  return out;
 }
 
 }  // namespace lowering
 
-Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
-              const LowerOptions& options) {
-  (void)options;
-  Lowered lowered;
-  lowering::Lowering lowering(scenario, sources, lowered.model);
-  lowered.model.title = scenario.title;
+runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
+                     const LowerOptions& options) {
+  if (options.diagnostics == nullptr) {
+    throw std::logic_error("compiler::Lower: LowerOptions::diagnostics is required");
+  }
+  runtime::Model model;
+  lowering::Lowering lowering(scenario, sources, model);
+  model.title = scenario.title;
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
   lowering::LowerContacts(lowering);
@@ -154,8 +151,8 @@ Lowered Lower(const CheckedScenario& scenario, const lang::SourceManager& source
   lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);
   lowering::NoteLeftOut(lowering);
-  lowered.notes = lowering.TakeNotes();
-  return lowered;
+  lowering.ReportNotes(*options.diagnostics);
+  return model;
 }
 
 }  // namespace sled::compiler

@@ -17,9 +17,10 @@ bool LowerBagContact(Lowering& lowering, const Airbag& bag, int old) {
   runtime::AirbagTable& table = lowering.model().airbags;
   const Segment& segment = lowering.segment(old);
   auto note = [&](std::string_view why) {
-    lowering.AddNote(bag.range, fmt::format("airbag `{}` cannot touch `{}`: {}; left out of its "
-                                            "contacts",
-                                            bag.name, segment.name, why));
+    lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, bag.range,
+                     fmt::format("airbag `{}` cannot touch `{}`: {}; left out of its "
+                                 "contacts",
+                                 bag.name, segment.name, why));
     return false;
   };
   if (bag.frame.kind == FrameRef::Kind::kSegment && bag.frame.index == old) {
@@ -33,7 +34,7 @@ bool LowerBagContact(Lowering& lowering, const Airbag& bag, int old) {
   const std::vector<std::uint8_t>& counts = lowering.model().segment_mirror_count;
   if (static_cast<std::size_t>(index) < counts.size() &&
       counts[static_cast<std::size_t>(index)] == 2) {
-    lowering.AddNote(bag.range,
+    lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, bag.range,
                      fmt::format("mirror symmetry: airbag `{}` touches `{}`, whose right twin the "
                                  "Model leaves out; the twin's push on the gas is not counted",
                                  bag.name, segment.name));
@@ -41,9 +42,10 @@ bool LowerBagContact(Lowering& lowering, const Airbag& bag, int old) {
   for (int e : segment.ellipsoids) {
     const Ellipsoid& ellipsoid = lowering.scenario().ellipsoids.at(static_cast<std::size_t>(e));
     if (ellipsoid.degree != 2.0) {
-      lowering.AddNote(bag.range, fmt::format("airbag `{}` touches `{}` as an ellipsoid of degree "
-                                              "2 with its semi-axes",
-                                              bag.name, ellipsoid.name));
+      lowering.AddNote(lang::DiagnosticKind::kSimulatedApproximately, bag.range,
+                       fmt::format("airbag `{}` touches `{}` as an ellipsoid of degree "
+                                   "2 with its semi-axes",
+                                   bag.name, ellipsoid.name));
     }
     table.contact_segment.push_back(index);
     table.contact_center.push_back(ToEigen(ellipsoid.center));
@@ -64,14 +66,16 @@ void LowerAirbags(Lowering& lowering) {
   for (std::size_t b = 0; b < scenario.airbags.size(); ++b) {
     const Airbag& bag = scenario.airbags[b];
     if (lowering.Dropped(bag.frame)) {
-      lowering.AddNote(bag.range, fmt::format("airbag `{}` is left out: mirror symmetry leaves "
-                                              "the segment it is fixed in out of the Model",
-                                              bag.name));
+      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, bag.range,
+                       fmt::format("airbag `{}` is left out: mirror symmetry leaves "
+                                   "the segment it is fixed in out of the Model",
+                                   bag.name));
       continue;
     }
     if (scenario.run.end > 0 && bag.deploy_time >= scenario.run.end) {
-      lowering.AddNote(bag.range, fmt::format("airbag `{}` deploys at {} s, when the run has ended",
-                                              bag.name, bag.deploy_time));
+      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, bag.range,
+                       fmt::format("airbag `{}` deploys at {} s, when the run has ended", bag.name,
+                                   bag.deploy_time));
     }
     lowering.airbag_index[b] = static_cast<int>(table.size());
     table.name.push_back(bag.name);
@@ -98,9 +102,10 @@ void LowerAirbags(Lowering& lowering) {
     table.contact_count.push_back(static_cast<std::int32_t>(table.ncontact()) -
                                   table.first_contact.back());
     if (table.contact_count.back() == 0) {
-      lowering.AddNote(bag.range, fmt::format("airbag `{}` touches no segment: it inflates and "
-                                              "vents, and pushes on nothing",
-                                              bag.name));
+      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, bag.range,
+                       fmt::format("airbag `{}` touches no segment: it inflates and "
+                                   "vents, and pushes on nothing",
+                                   bag.name));
     }
   }
 }

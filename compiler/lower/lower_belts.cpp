@@ -29,9 +29,10 @@ void LowerPathPoint(Lowering& lowering, const Belt& belt, const BeltPoint& point
                                lowering.new_index[static_cast<std::size_t>(point.segment)]});
   table.point_wraps.push_back(1);
   if (segment.ellipsoids.empty()) {
-    lowering.AddNote(belt.range, fmt::format("segment `{}` has no ellipsoid: belt `{}` passes "
-                                             "through its centre of mass",
-                                             segment.name, belt.name));
+    lowering.AddNote(lang::DiagnosticKind::kSimulatedApproximately, belt.range,
+                     fmt::format("segment `{}` has no ellipsoid: belt `{}` passes "
+                                 "through its centre of mass",
+                                 segment.name, belt.name));
     table.point_position.push_back(runtime::Vec3::Zero());
     table.point_axes.push_back(runtime::Mat3::Identity());
     table.point_semi_axes.push_back(runtime::Vec3::Zero());
@@ -40,13 +41,15 @@ void LowerPathPoint(Lowering& lowering, const Belt& belt, const BeltPoint& point
   const Ellipsoid& ellipsoid =
       lowering.scenario().ellipsoids.at(static_cast<std::size_t>(segment.ellipsoids.front()));
   if (segment.ellipsoids.size() > 1) {
-    lowering.AddNote(belt.range, fmt::format("belt `{}` wraps the first ellipsoid of `{}`, `{}`",
-                                             belt.name, segment.name, ellipsoid.name));
+    lowering.AddNote(lang::DiagnosticKind::kSimulatedApproximately, belt.range,
+                     fmt::format("belt `{}` wraps the first ellipsoid of `{}`, `{}`", belt.name,
+                                 segment.name, ellipsoid.name));
   }
   if (ellipsoid.degree != 2.0) {
-    lowering.AddNote(belt.range, fmt::format("belt `{}` wraps `{}` as an ellipsoid of degree 2 "
-                                             "with its semi-axes",
-                                             belt.name, ellipsoid.name));
+    lowering.AddNote(lang::DiagnosticKind::kSimulatedApproximately, belt.range,
+                     fmt::format("belt `{}` wraps `{}` as an ellipsoid of degree 2 "
+                                 "with its semi-axes",
+                                 belt.name, ellipsoid.name));
   }
   table.point_position.push_back(ToEigen(ellipsoid.center));
   table.point_axes.push_back(RotationMatrix(ellipsoid.orientation));
@@ -99,7 +102,7 @@ void LowerBelts(Lowering& lowering) {
     for (const BeltPoint& point : belt.path) LowerPathPoint(lowering, belt, point);
     if (belt.pretension > 0 &&
         runtime::StrainAtTension(model.functions, table.function.back(), belt.pretension) < 0) {
-      lowering.AddNote(belt.range,
+      lowering.AddNote(lang::DiagnosticKind::kSimulatedApproximately, belt.range,
                        fmt::format("the force of belt `{}` does not reach its pretension of {:g} "
                                    "N within a strain of 1; it starts without pretension",
                                    belt.name, belt.pretension));

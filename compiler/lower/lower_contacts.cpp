@@ -222,7 +222,7 @@ void LowerContacts(Lowering& lowering) {
                                                   : scenario.ellipsoids.at(k).frame;
     };
     if (lowering.Dropped(frame_of(contact.first)) || lowering.Dropped(frame_of(contact.second))) {
-      lowering.AddNote(contact.range,
+      lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, contact.range,
                        "mirror symmetry: this contact acts on a right segment; "
                        "its left twin's contact stands for it");
       continue;
@@ -230,7 +230,7 @@ void LowerContacts(Lowering& lowering) {
     const Surface first = Describe(lowering, contact.first);
     const Surface second = Describe(lowering, contact.second);
     if (const auto reason = NeverTouch(model, first, second)) {
-      lowering.AddNote(contact.range,
+      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, contact.range,
                        fmt::format("contact between `{}` and `{}` is left out: they can never "
                                    "touch ({})",
                                    first.name, second.name, *reason));
@@ -265,7 +265,7 @@ void LowerContactOutput(Lowering& lowering, const OutputRequest& output) {
   }
   const auto count = static_cast<std::int32_t>(table.group_pairs.size()) - first;
   if (count == 0) {
-    lowering.AddNote(output.range,
+    lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, output.range,
                      fmt::format("output `contact_force {}` is left out: its contact can never "
                                  "touch",
                                  output.label));

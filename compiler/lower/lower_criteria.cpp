@@ -128,7 +128,7 @@ void LowerCriteria(Lowering& lowering) {
       const Segment& segment = lowering.segment(criterion.segment);
       target = segment.name;
       if (criterion.kind == Criterion::Kind::kViscousCriterion) {
-        lowering.AddNote(criterion.range,
+        lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, criterion.range,
                          fmt::format("injury criterion `{}({})` needs a chest deflection, which a "
                                      "rigid thorax segment does not have (its contacts' "
                                      "penetrations measure the padding, not the ribcage); left "
@@ -142,7 +142,7 @@ void LowerCriteria(Lowering& lowering) {
       const Joint& joint = lowering.joint(criterion.joint);
       target = joint.name;
       if (joint.type == JointType::kNull) {
-        lowering.AddNote(criterion.range,
+        lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, criterion.range,
                          fmt::format("injury criterion `{}({})` is left out: `{}` is a null "
                                      "joint, which transmits no force",
                                      name, target, target));

@@ -102,7 +102,7 @@ void LowerConstraints(Lowering& lowering) {
     // Rolling needs the surface it rolls on, which comes with the contact milestone.
     if (constraint.kind == Constraint::Kind::kRolling) {
       lowering.AddNote(
-          constraint.range,
+          lang::DiagnosticKind::kNotSimulatedYet, constraint.range,
           fmt::format("rolling constraint `{}` is not simulated yet; left out", constraint.name));
       continue;
     }
@@ -200,7 +200,7 @@ void LowerOutputs(Lowering& lowering) {
                                                    : Model::OutputKind::kJointForce;
         const Joint& joint = lowering.joint(output.index);
         if (joint.type == JointType::kNull) {
-          lowering.AddNote(output.range,
+          lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, output.range,
                            fmt::format("`{} {}` is left out: `{}` is a null joint, which "
                                        "transmits no force",
                                        OutputKeyword(output.kind), output.label, joint.name));
@@ -240,8 +240,9 @@ void LowerOutputs(Lowering& lowering) {
       case Kind::kAirbagForce: {
         index = lowering.airbag_index.at(static_cast<std::size_t>(output.index));
         if (index < 0) {
-          lowering.AddNote(output.range, fmt::format("output `{} {}` is left out with its airbag",
-                                                     OutputKeyword(output.kind), output.label));
+          lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, output.range,
+                           fmt::format("output `{} {}` is left out with its airbag",
+                                       OutputKeyword(output.kind), output.label));
           continue;
         }
         kind = output.kind == Kind::kAirbagPressure      ? Model::OutputKind::kAirbagPressure
@@ -275,7 +276,7 @@ void NoteLeftOut(Lowering& lowering) {
   const CheckedScenario& scenario = lowering.scenario();
   const RunSettings& run = scenario.run;
   if (run.settle_duration) {
-    lowering.AddNote({},
+    lowering.AddNote(lang::DiagnosticKind::kNotSimulatedYet, {},
                      "equilibrium settling is not simulated yet; the run starts from the "
                      "initial conditions as given");
   }

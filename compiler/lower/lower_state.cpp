@@ -79,9 +79,10 @@ AxisAngle AngleAbout(const Eigen::Quaterniond& rotation, const runtime::Vec3& ax
 void NoteOffPlane(Lowering& lowering, const SourceRange& range, double off_plane,
                   const std::string& what) {
   if (!(off_plane > 1e-9)) return;
-  lowering.AddNote(range, fmt::format("planar symmetry: the {} leaves the xz plane; only its "
-                                      "in-plane part is kept",
-                                      what));
+  lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, range,
+                   fmt::format("planar symmetry: the {} leaves the xz plane; only its "
+                               "in-plane part is kept",
+                               what));
 }
 
 }  // namespace
@@ -107,7 +108,7 @@ void LowerInitialState(Lowering& lowering) {
         if (!initial.joint_angles) break;
         if (joint.type == JointType::kNull) {
           lowering.AddNote(
-              initial.range,
+              lang::DiagnosticKind::kLeftOutOfModel, initial.range,
               fmt::format("`{}` is a null joint: it has no angles; left out", joint.name));
           break;
         }
@@ -247,7 +248,7 @@ void LowerInitialState(Lowering& lowering) {
     const std::string& name = model.segment_name[s];
     auto left_out = [&](const Given& given, const char* what, const char* instead) {
       if (!given.value) return;
-      lowering.AddNote(given.range,
+      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, given.range,
                        fmt::format("the initial {} of `{}` is left out: it hangs from joint "
                                    "`{}`, so {}",
                                    what, name, joint.name, instead));
@@ -292,7 +293,7 @@ void LowerInitialState(Lowering& lowering) {
       const double miss = (columns * rates - w_relative).norm();
       if (!(miss <= 1e-9 * std::max(1.0, w_relative.norm()))) {
         lowering.AddNote(
-            start.angular_velocity.range,
+            lang::DiagnosticKind::kSimulatedApproximately, start.angular_velocity.range,
             fmt::format("the initial angular velocity of `{}` is matched only in part: it "
                         "hangs from {} joint `{}`{}, which cannot turn it that way relative to "
                         "`{}`",

@@ -70,9 +70,10 @@ void RestrictToPlane(Lowering& lowering, std::size_t s) {
   switch (kind) {
     case JointKind::kBall:
     case JointKind::kEuler:
-      lowering.AddNote(range, fmt::format("planar symmetry: {} joint `{}` turns only about the "
-                                          "plane's normal (a pin)",
-                                          runtime::JointKindName(kind), joint_name));
+      lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, range,
+                       fmt::format("planar symmetry: {} joint `{}` turns only about the "
+                                   "plane's normal (a pin)",
+                                   runtime::JointKindName(kind), joint_name));
       model.joint_function[s] = {PinFunction(model, s, normal), -1, -1};
       if (kind == JointKind::kBall && std::abs(normal.z()) > 1.0 - kAlignment) {
         model.joint_stop[s] = model.joint_twist_stop[s];  // the pin turns as the ball's twist
@@ -88,10 +89,11 @@ void RestrictToPlane(Lowering& lowering, std::size_t s) {
         model.joint_locked[s] = 1;
         model.joint_lock_below[s] = -1.0;
         model.joint_unlock_above[s] = -1.0;
-        lowering.AddNote(range, fmt::format("planar symmetry: pin joint `{}` of `{}` turns "
-                                            "about an axis out of the plane's normal; it is "
-                                            "locked",
-                                            joint_name, name));
+        lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, range,
+                         fmt::format("planar symmetry: pin joint `{}` of `{}` turns "
+                                     "about an axis out of the plane's normal; it is "
+                                     "locked",
+                                     joint_name, name));
       }
       return;
     case JointKind::kSlip:
@@ -99,9 +101,10 @@ void RestrictToPlane(Lowering& lowering, std::size_t s) {
         model.joint_locked[s] = 1;
         model.joint_lock_below[s] = -1.0;
         model.joint_unlock_above[s] = -1.0;
-        lowering.AddNote(range, fmt::format("planar symmetry: slip joint `{}` of `{}` slides out "
-                                            "of the plane; it is locked",
-                                            joint_name, name));
+        lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, range,
+                         fmt::format("planar symmetry: slip joint `{}` of `{}` slides out "
+                                     "of the plane; it is locked",
+                                     joint_name, name));
       }
       return;
     case JointKind::kFree:
@@ -137,9 +140,10 @@ void PlanMirrorSymmetry(Lowering& lowering) {
     right_of[static_cast<std::size_t>(left)] = right;
   }
   auto refuse = [&](const std::string& why) {
-    lowering.AddNote({}, fmt::format("mirror symmetry is not applied: {}; every segment keeps "
-                                     "all its degrees of freedom",
-                                     why));
+    lowering.AddNote(lang::DiagnosticKind::kReducedBySymmetry, {},
+                     fmt::format("mirror symmetry is not applied: {}; every segment keeps "
+                                 "all its degrees of freedom",
+                                 why));
   };
   auto name = [&](int old) { return scenario.segments[static_cast<std::size_t>(old)].name; };
   for (const auto& [left, right] : run.mirror_pairs) {

@@ -195,7 +195,7 @@ void LowerTree(Lowering& lowering) {
       model.joint_unlock_above.push_back(joint.unlock_above.value_or(-1.0));
       model.joint_source.push_back(lowering.Position(joint.range));
       if (joint.energy_loss != 0.0) {
-        lowering.AddNote(joint.range,
+        lowering.AddNote(lang::DiagnosticKind::kNotSimulatedYet, joint.range,
                          fmt::format("the energy loss of joint `{}` is not simulated yet; its "
                                      "torque functions load and unload alike",
                                      joint.name));

@@ -10,6 +10,7 @@
 
 #include "compiler/check/checked_scenario.h"
 #include "compiler/check/initial_pose.h"
+#include "lang/diagnostics/diagnostic.h"
 #include "lang/source/source_manager.h"
 #include "runtime/model.h"
 
@@ -19,7 +20,9 @@ namespace sled::compiler::lowering {
 using compiler::RotationMatrix;
 using compiler::ToEigen;
 
+// A note of the lowering: an N04xx diagnostic, reported once the Model is complete.
 struct Note {
+  lang::DiagnosticKind kind{};
   SourceRange range;  // invalid: about the scenario as a whole
   std::string message;
 };
@@ -71,7 +74,9 @@ class Lowering {
   const Segment& segment(int old) const;
   const Joint& joint(int index) const;
 
-  void AddNote(const SourceRange& range, std::string message);
+  // Records a note (kind: one of the N04xx codes) at `range`; an invalid range is about the
+  // scenario as a whole.
+  void AddNote(lang::DiagnosticKind kind, const SourceRange& range, std::string message);
   // Appends an output group to the Model, with every column of its per-output arrays: the one
   // place the lowering adds outputs, so those arrays stay the same length.
   struct Output {
@@ -84,8 +89,8 @@ class Lowering {
     bool iso_filter = false;
   };
   void AddOutput(const Output& output);
-  // The notes in source order (those without a position last), formatted.
-  std::vector<std::string> TakeNotes();
+  // Reports the notes to `diagnostics` in source order (those without a position last).
+  void ReportNotes(lang::DiagnosticConsumer& diagnostics);
 
  private:
   const CheckedScenario& scenario_;

@@ -156,4 +156,23 @@ std::string RenderRich(const SourceManager& sources, const Diagnostic& diagnosti
   return out;
 }
 
+std::string RenderAll(const SourceManager& sources, const std::vector<Diagnostic>& diagnostics,
+                      DiagnosticStyle style, const RenderOptions& options) {
+  std::string out;
+  int errors = 0;
+  int warnings = 0;
+  for (const Diagnostic& diagnostic : diagnostics) {
+    out += style == DiagnosticStyle::kCompact ? RenderCompact(sources, diagnostic)
+                                              : RenderRich(sources, diagnostic, options);
+    out += '\n';
+    errors += diagnostic.severity == Severity::kError ? 1 : 0;
+    warnings += diagnostic.severity == Severity::kWarning ? 1 : 0;
+  }
+  if (style == DiagnosticStyle::kRich && (errors > 0 || warnings > 0)) {
+    out += fmt::format("{} error{}, {} warning{}\n", errors, errors == 1 ? "" : "s", warnings,
+                       warnings == 1 ? "" : "s");
+  }
+  return out;
+}
+
 }  // namespace sled::lang

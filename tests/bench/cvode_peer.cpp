@@ -289,16 +289,13 @@ int main(int argc, char** argv) {
   std::cout << "case,method,tolerance,wall_seconds,steps,evaluations,events,error_all,failed\n";
   for (const sled::verification::SuiteCase& suite_case : sled::verification::LoadSuite()) {
     if (!wanted.empty() && !wanted.count(suite_case.name)) continue;
-    sled::lang::SourceManager sources;
-    const auto file = sources.Load(suite_case.file.string());
-    if (!file) continue;
     const sled::verification::Compiled compiled =
-        sled::verification::CompileFile(sources, *file, suite_case.overrides);
+        sled::verification::CompileFile(suite_case.file, suite_case.overrides);
     if (!compiled.errors.empty()) {
       std::cerr << suite_case.name << ": " << compiled.errors;
       continue;
     }
-    const Model& scene = compiled.lowered.model;
+    const Model& scene = compiled.model();
     {
       sled::runtime::Data data = sled::runtime::MakeData(scene);
       const sled::runtime::MultibodySystem system(scene, data);

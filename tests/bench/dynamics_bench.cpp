@@ -24,10 +24,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "compiler/check/check.h"
-#include "compiler/lower/lower.h"
-#include "lang/syntax/parser.h"
 #include "runtime/dynamics.h"
+#include "tests/verification/compile.h"
 #include "tests/verification/tree_models.h"
 
 namespace sled::verification {
@@ -76,21 +74,12 @@ struct FourBar {
   explicit FourBar(bool open) : model(Load(open)), data(runtime::MakeData(model)) {}
   static runtime::Model Load(bool open) {
     const std::string root = SLED_SOURCE_ROOT;
-    lang::SourceManager sources;
-    const auto file = sources.Load(root + "/examples/four_bar.sled");
-    lang::DiagnosticCollector collector;
-    lang::ParseOptions parse_options;
-    parse_options.diagnostics = &collector;
-    const lang::ast::File ast = lang::Parse(sources, *file, parse_options);
-    compiler::CheckOptions check_options;
-    check_options.diagnostics = &collector;
-    check_options.stdlib_root = root + "/stdlib";
-    const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
-    if (collector.has_errors()) {
-      std::fprintf(stderr, "examples/four_bar.sled does not check\n");
+    verification::Compiled compiled = verification::CompileFile(root + "/examples/four_bar.sled");
+    if (!compiled.errors.empty()) {
+      std::fprintf(stderr, "examples/four_bar.sled does not check:\n%s", compiled.errors.c_str());
       std::abort();
     }
-    runtime::Model model = compiler::Lower(scenario, sources, compiler::LowerOptions{}).model;
+    runtime::Model model = std::move(compiled.compilation.model());
     if (open) {
       model.constraint_name.clear();
       model.constraint_kind.clear();

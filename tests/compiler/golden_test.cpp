@@ -6,6 +6,9 @@
 //   ok_<what>.sled           ->  <name>.checked   compiler::Dump of the checked scenario; the
 //                                                  file must check without any diagnostic
 //   rich_<what>.sled         ->  <name>.rendered  lang::RenderRich output, without color
+//   note_<code>_<what>.sled  ->  <name>.stderr    compact diagnostics of the whole sled::Compile
+//                                                  (lowering included); must report the note
+//                                                  <code> and no error
 //
 // Paths in the messages are relative to the repository root: the test runs with the working
 // directory there and loads each file under its repository-relative path, so imports resolve
@@ -39,6 +42,7 @@
 #include "lang/diagnostics/render.h"
 #include "lang/source/source_manager.h"
 #include "lang/syntax/parser.h"
+#include "sled/compile.h"
 #include "tests/compiler/sled_process.h"
 
 namespace sled::compiler {
@@ -86,7 +90,8 @@ std::vector<std::string> GoldenFiles() {
   for (const auto& entry : fs::directory_iterator(kRoot / kGoldenFolder, error)) {
     if (!entry.is_regular_file() || entry.path().extension() != ".sled") continue;
     const std::string name = entry.path().filename().string();
-    if (StartsWith(name, "fail_") || StartsWith(name, "ok_") || StartsWith(name, "rich_")) {
+    if (StartsWith(name, "fail_") || StartsWith(name, "ok_") || StartsWith(name, "rich_") ||
+        StartsWith(name, "note_")) {
       names.push_back(name);
     }
   }
@@ -200,6 +205,17 @@ std::unique_ptr<Outcome> CheckGolden(const std::string& relative_path, const std
   return outcome;
 }
 
+// One file through sled::Compile, lowering included, as `sled run` compiles it.
+std::string CompileGolden(const std::string& relative_path, const std::string& text,
+                          bool* has_errors) {
+  CompileOptions options;
+  options.stdlib = (kRoot / "stdlib").string();
+  options.overrides = OverridesIn(text);
+  const Compilation compiled = Compile(Source::Text(text, relative_path), options);
+  *has_errors = !compiled.ok();
+  return compiled.Render(lang::DiagnosticStyle::kCompact);
+}
+
 // The first line where two texts differ, to make a failure readable.
 std::string FirstDifference(const std::string& actual, const std::string& expected) {
   std::istringstream a(actual);
@@ -244,15 +260,32 @@ TEST_P(GoldenTest, MatchesExpectedOutput) {
 
   const std::optional<std::string> text = ReadText(kRoot / relative);
   ASSERT_TRUE(text.has_value()) << "cannot read " << relative;
+  // fail_<code>_<what> and note_<code>_<what>: the code is the second part of the name.
+  std::string code;
+  std::optional<lang::DiagnosticKind> kind;
+  if (StartsWith(name, "fail_") || StartsWith(name, "note_")) {
+    const std::size_t end = name.find('_', 5);
+    ASSERT_NE(end, std::string::npos)
+        << name << ": name it " << name.substr(0, 5) << "<code>_<what>.sled";
+    code = Upper(name.substr(5, end - 5));
+    kind = lang::FindDiagnosticByCode(code);
+    ASSERT_TRUE(kind.has_value()) << name << ": `" << code << "` is not a registered code";
+  }
+  if (StartsWith(name, "note_")) {
+    // The whole compile reports the note, and no error.
+    EXPECT_EQ(lang::InfoOf(*kind).severity, lang::Severity::kNote) << name;
+    bool has_errors = false;
+    const std::string compact = CompileGolden(relative, *text, &has_errors);
+    EXPECT_FALSE(has_errors) << name << " reports errors:\n" << compact;
+    EXPECT_NE(compact.find("[" + code + "]"), std::string::npos)
+        << name << " does not report " << code << ":\n"
+        << compact;
+    ExpectMatchesFile(compact, folder / (stem + ".stderr"));
+    return;
+  }
   const auto outcome = CheckGolden(relative, *text);
 
   if (StartsWith(name, "fail_")) {
-    // fail_<code>_<what>: the code is the second part of the name.
-    const std::size_t end = name.find('_', 5);
-    ASSERT_NE(end, std::string::npos) << name << ": name it fail_<code>_<what>.sled";
-    const std::string code = Upper(name.substr(5, end - 5));
-    const auto kind = lang::FindDiagnosticByCode(code);
-    ASSERT_TRUE(kind.has_value()) << name << ": `" << code << "` is not a registered code";
     EXPECT_TRUE(outcome->Reports(code)) << name << " does not report " << code << ":\n"
                                         << outcome->Compact();
     if (lang::InfoOf(*kind).severity == lang::Severity::kError) {
@@ -318,11 +351,12 @@ TEST(GoldenCoverage, EveryCodeIsReportedByAGoldenFile) {
     const std::string tag = "[" + std::string(info.code) + "]";
     EXPECT_NE(expected.find(tag), std::string::npos)
         << info.code << " (" << info.name << ") appears in no tests/golden/*.stderr file";
-    const std::string prefix = "fail_" + std::string(info.code) + "_";
+    const std::string prefix =
+        (info.severity == lang::Severity::kNote ? "note_" : "fail_") + std::string(info.code) + "_";
     const bool named = std::any_of(files.begin(), files.end(), [&](const std::string& file) {
       return StartsWith(Upper(file), Upper(prefix));
     });
-    EXPECT_TRUE(named) << "no tests/golden/fail_" << info.code << "_<what>.sled";
+    EXPECT_TRUE(named) << "no tests/golden/" << prefix << "<what>.sled";
   }
 }
 
@@ -400,6 +434,10 @@ TEST(GoldenRegistry, CodesFollowTheNumberingScheme) {
     if (code[0] == 'E') {
       EXPECT_EQ(info.severity, lang::Severity::kError) << code;
       EXPECT_TRUE(code[1] == '0' && code[2] >= '1' && code[2] <= '6') << code;
+    } else if (code[0] == 'N') {
+      // Notes come from the lowering only (E04xx's stage).
+      EXPECT_EQ(info.severity, lang::Severity::kNote) << code;
+      EXPECT_TRUE(code[1] == '0' && code[2] == '4') << code;
     } else {
       EXPECT_EQ(code[0], 'W') << code;
       EXPECT_EQ(info.severity, lang::Severity::kWarning) << code;

@@ -49,17 +49,15 @@ std::string Scene(const std::string& bag_frame, const std::string& contacts,
                      bag_frame, contacts, extra);
 }
 
-std::string Notes(const verification::Compiled& compiled) {
-  return fmt::format("{}", fmt::join(compiled.lowered.notes, "\n"));
-}
+std::string Notes(const verification::Compiled& compiled) { return compiled.notes(); }
 
 TEST(LowerAirbags, ABagIsSimulatedWithItsGasStatesAndContacts) {
   const verification::Compiled compiled = verification::CompileText(
       Scene("car", "b.trunk", "gas_temperature = 650 K  gamma = 1.3  gas_constant = 297 J/kg/K"));
   ASSERT_EQ(compiled.errors, "");
   EXPECT_THAT(Notes(compiled), Not(HasSubstr("not simulated yet")));
-  EXPECT_THAT(compiled.lowered.notes, IsEmpty());
-  const runtime::Model& m = compiled.lowered.model;
+  EXPECT_EQ(compiled.notes(), "");
+  const runtime::Model& m = compiled.model();
   ASSERT_EQ(m.airbags.size(), 1u);
   EXPECT_EQ(m.nw, 2);
   EXPECT_EQ(m.w0, std::vector<double>({0.0, 0.0}));
@@ -94,7 +92,7 @@ TEST(LowerAirbags, SegmentsTheBagCannotTouchAreDroppedWithANote) {
   EXPECT_THAT(notes, HasSubstr("airbag `bag` cannot touch `b.trunk`: the bag is fixed in it"));
   EXPECT_THAT(notes, HasSubstr("airbag `bag` cannot touch `b.bare`: it has no contact ellipsoid"));
   EXPECT_THAT(notes, HasSubstr("airbag `bag` touches no segment"));
-  const runtime::Model& m = compiled.lowered.model;
+  const runtime::Model& m = compiled.model();
   ASSERT_EQ(m.airbags.size(), 1u);
   EXPECT_EQ(m.airbags.contact_count[0], 0);
   EXPECT_EQ(m.airbags.frame[0].kind, runtime::FrameRef::Kind::kSegment);

@@ -20,12 +20,9 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "compiler/check/check.h"
 #include "compiler/check/initial_pose.h"
-#include "compiler/lower/lower.h"
-#include "lang/diagnostics/render.h"
-#include "lang/syntax/parser.h"
 #include "runtime/model.h"
+#include "sled/compile.h"
 #include "tests/compiler/sled_process.h"
 
 namespace sled::compiler {
@@ -43,41 +40,30 @@ const fs::path kRoot = SLED_SOURCE_ROOT;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 struct Result {
-  CheckedScenario scenario;
-  Lowered lowered;
-  std::string errors;  // compact diagnostics of the check, when it failed
+  Compilation compilation;
+  std::string errors;  // compact diagnostics, when the scene does not compile
 
-  const runtime::Model& model() const { return lowered.model; }
+  const CheckedScenario& scenario() const { return compilation.scenario(); }
+  const runtime::Model& model() const { return compilation.model(); }
+  // The lowering's notes (N04xx), compact.
+  std::vector<std::string> notes() const { return compilation.Notes(); }
   // The Model index of a segment by its qualified name; -1 when absent.
   int Segment(const std::string& name) const {
-    for (std::size_t s = 0; s < lowered.model.nsegment(); ++s) {
-      if (lowered.model.segment_name[s] == name) return static_cast<int>(s);
+    for (std::size_t s = 0; s < model().nsegment(); ++s) {
+      if (model().segment_name[s] == name) return static_cast<int>(s);
     }
     return -1;
   }
 };
 
-// Parses, checks and lowers; `path` names the buffer (relative to the working directory).
+// Compiles text through sled::Compile; `path` names the buffer (relative to the working
+// directory).
 Result LowerText(const std::string& text, const std::string& path = "test.sled",
                  const std::string& stdlib = (kRoot / "stdlib").string()) {
-  lang::SourceManager sources;
-  const lang::FileId file = sources.Add(path, text);
-  lang::DiagnosticCollector collector;
-  CheckOptions check_options;
-  check_options.diagnostics = &collector;
-  check_options.stdlib_root = stdlib;
-  Result result;
-  result.scenario = ParseAndCheck(sources, file, check_options);
-  if (collector.has_errors()) {
-    collector.SortByPosition();
-    for (const auto& d : collector.diagnostics()) {
-      result.errors += lang::RenderCompact(sources, d) + "\n";
-    }
-    return result;
-  }
-  LowerOptions lower_options;
-  lower_options.diagnostics = &collector;
-  result.lowered = Lower(result.scenario, sources, lower_options);
+  CompileOptions options;
+  options.stdlib = stdlib;
+  Result result{Compile(Source::Text(text, path), options), {}};
+  if (!result.compilation.ok()) result.errors = result.compilation.Render();
   return result;
 }
 
@@ -161,8 +147,8 @@ TEST(LowerTree, ANullJointStartsAFreeSegmentOfItsOwn) {
   // The null joint transmits nothing: its output is left out with a note; the pin's stays.
   ASSERT_EQ(m.output_kind.size(), 1u);
   EXPECT_EQ(m.output_index[0], 2);
-  ASSERT_EQ(r.lowered.notes.size(), 1u);
-  EXPECT_THAT(r.lowered.notes[0], HasSubstr("null joint"));
+  ASSERT_EQ(r.notes().size(), 1u);
+  EXPECT_THAT(r.notes()[0], HasSubstr("null joint"));
 }
 
 TEST(LowerSymmetry, PlanarSymmetryKeepsOnlyTheDegreesOfFreedomOfTheXzPlane) {
@@ -211,7 +197,7 @@ TEST(LowerSymmetry, PlanarSymmetryKeepsOnlyTheDegreesOfFreedomOfTheXzPlane) {
   EXPECT_EQ(m.joint_locked[3], 0);
   EXPECT_EQ(m.joint_locked[4], 1);
   EXPECT_EQ(m.joint_locked[5], 1);
-  const std::string notes = fmt::format("{}", fmt::join(r.lowered.notes, "\n"));
+  const std::string notes = fmt::format("{}", fmt::join(r.notes(), "\n"));
   EXPECT_THAT(notes, HasSubstr("pin joint `b.hinge`"));
   EXPECT_THAT(notes, HasSubstr("slip joint `b.rail`"));
   EXPECT_THAT(notes, Not(HasSubstr("symmetry is not applied")));
@@ -238,7 +224,7 @@ TEST(LowerSymmetry, MirrorSymmetryIsRefusedWithAReasonWhenASpringActsOnARightSeg
   const runtime::Model& m = r.model();
   EXPECT_EQ(m.nsegment(), 3u);
   EXPECT_TRUE(m.segment_mirror_twin.empty());
-  EXPECT_THAT(fmt::format("{}", fmt::join(r.lowered.notes, "\n")),
+  EXPECT_THAT(fmt::format("{}", fmt::join(r.notes(), "\n")),
               HasSubstr("mirror symmetry is not applied: spring `tether` acts on a right segment"));
 }
 
@@ -257,7 +243,7 @@ TEST(LowerSymmetry, MirrorSymmetryIsRefusedWhenALeftSegmentHasAnUnpairedChild) {
                                                kUnitInertia)));
   ASSERT_CHECKED(r);
   EXPECT_TRUE(r.model().segment_mirror_twin.empty());
-  EXPECT_THAT(fmt::format("{}", fmt::join(r.lowered.notes, "\n")),
+  EXPECT_THAT(fmt::format("{}", fmt::join(r.notes(), "\n")),
               HasSubstr("mirror symmetry is not applied: `b.hand` hangs from the left "
                         "segment `b.arm_l` but is not the left one of a pair"));
 }
@@ -288,7 +274,7 @@ TEST(LowerTree, Male50HasOneCoordinateBlockPerJoint) {
   // Expected sizes from the checked joint types: a free root, then one block per joint.
   int nq = 7;
   int nv = 6;
-  for (const Joint& joint : r.scenario.joints) {
+  for (const Joint& joint : r.scenario().joints) {
     switch (joint.type) {
       case JointType::kBall:
         nq += 4;
@@ -588,9 +574,9 @@ TEST(LowerInitialState, JointAnglesAgreeWithTheCheckersInitialPoses) {
                                                kUnitInertia)));
   ASSERT_CHECKED(r);
   const std::vector<Pose> model_poses = ForwardKinematics(r.model());
-  const InitialPoses checker_poses = ComputeInitialPoses(r.scenario);
-  for (std::size_t old = 0; old < r.scenario.segments.size(); ++old) {
-    const std::string& name = r.scenario.segments[old].name;
+  const InitialPoses checker_poses = ComputeInitialPoses(r.scenario());
+  for (std::size_t old = 0; old < r.scenario().segments.size(); ++old) {
+    const std::string& name = r.scenario().segments[old].name;
     const int s = r.Segment(name);
     ASSERT_GE(s, 0) << name;
     SCOPED_TRACE(name);
@@ -650,7 +636,7 @@ TEST(LowerInitialState, AnAngularVelocityOfAHangingSegmentSetsItsJointRates) {
       static_cast<std::size_t>(m.v_address[static_cast<std::size_t>(r.Segment("b.hand"))]);
   EXPECT_NEAR(m.v0[hand_v], 3, 1e-15);
   std::string notes;
-  for (const std::string& note : r.lowered.notes) notes += note + "\n";
+  for (const std::string& note : r.notes()) notes += note + "\n";
   EXPECT_THAT(notes, HasSubstr("angular velocity of `b.hand` is matched only in part"));
   EXPECT_THAT(notes, HasSubstr("initial position of `b.hand` is left out"));
   EXPECT_THAT(notes, ::testing::Not(HasSubstr("b.head")));
@@ -729,7 +715,7 @@ TEST(LowerContacts, ContactsBecomePairsWithTheirOutputs) {
   initial b { position = (0, 0, 1) m }
   output { contact_force b.s with floor })"));
   ASSERT_CHECKED(r);
-  EXPECT_THAT(r.lowered.notes, IsEmpty());
+  EXPECT_THAT(r.notes(), IsEmpty());
   const runtime::ContactTable& c = r.model().contacts;
   ASSERT_EQ(c.npair(), 2u);  // one pair per ellipsoid of the segment
   EXPECT_EQ(c.nplane(), 1u);
@@ -794,16 +780,19 @@ TEST(LowerContacts, PairsThatCanNeverTouchAreLeftOut) {
   initial arm { position = (0, 0, 1.8) m })"));
   ASSERT_CHECKED(r);
   EXPECT_THAT(
-      r.lowered.notes,
-      ElementsAre(
-          "test.sled:28:3: note: contact between `arm.upper` and `floor` is left out: they can "
-          "never touch (`arm.upper` is held 2 m from it and reaches 0.15 m)",
-          "test.sled:29:3: note: contact between `arm.lower` and `floor` is left out: they can "
-          "never touch (`arm.lower` is held 2 m from it and reaches 0.84 m)",
-          "test.sled:31:3: note: contact between `arm.upper` and `arm.lower` is left out: they "
-          "can never touch (joint `arm.elbow` keeps them apart)",
-          "test.sled:32:3: note: contact between `arm.lower` and `arm.hand` is left out: they "
-          "can never touch (their segments are joined rigidly by joints locked for good)"));
+      r.notes(),
+      ElementsAre("test.sled:28:3: note[N0401]: contact between `arm.upper` and `floor` is left "
+                  "out: they can "
+                  "never touch (`arm.upper` is held 2 m from it and reaches 0.15 m)",
+                  "test.sled:29:3: note[N0401]: contact between `arm.lower` and `floor` is left "
+                  "out: they can "
+                  "never touch (`arm.lower` is held 2 m from it and reaches 0.84 m)",
+                  "test.sled:31:3: note[N0401]: contact between `arm.upper` and `arm.lower` is "
+                  "left out: they "
+                  "can never touch (joint `arm.elbow` keeps them apart)",
+                  "test.sled:32:3: note[N0401]: contact between `arm.lower` and `arm.hand` is left "
+                  "out: they "
+                  "can never touch (their segments are joined rigidly by joints locked for good)"));
   // Left: the wall (0.5 m from the pivot, within reach), the hand against the upper link, and
   // the post (0.9 m above the pivot, its surface 0.8 m: within the 0.84 m reach).
   EXPECT_EQ(r.model().contacts.npair(), 3u);
@@ -866,7 +855,7 @@ TEST(LowerBelts, PathsFunctionsHarnessesAndTiePoints) {
   EXPECT_EQ(r.model().output_kind[0], runtime::Model::OutputKind::kBeltForce);
   EXPECT_EQ(r.model().output_index[0], 2);
   std::string notes;
-  for (const std::string& note : r.lowered.notes) notes += note + "\n";
+  for (const std::string& note : r.notes()) notes += note + "\n";
   EXPECT_THAT(notes, HasSubstr("segment `c.s` has no ellipsoid: belt `h.two` passes through its "
                                "centre of mass"));
   EXPECT_THAT(notes, HasSubstr("the force of belt `lap` does not reach its pretension of 10000 N"));

@@ -15,12 +15,10 @@ namespace {
 
 TEST(OutputChannels, EveryGroupCountsTheChannelsItNames) {
   const std::filesystem::path root = SLED_SOURCE_ROOT;
-  lang::SourceManager sources;
-  const auto file = sources.Load((root / "examples" / "frontal_sled_airbag.sled").string());
-  ASSERT_TRUE(file.has_value());
-  const verification::Compiled compiled = verification::CompileFile(sources, *file);
+  const verification::Compiled compiled =
+      verification::CompileFile(root / "examples" / "frontal_sled_airbag.sled");
   ASSERT_EQ(compiled.errors, "");
-  const runtime::Model& model = compiled.lowered.model;
+  const runtime::Model& model = compiled.model();
   const std::vector<std::string> names = runtime::ChannelNames(model);
   std::size_t column = 0;
   bool saw_belt = false, saw_airbag_force = false;

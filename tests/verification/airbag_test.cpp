@@ -360,13 +360,10 @@ TEST(VentedBag, EmptiesAsTheOrificeEquationsSay) {
 TEST(FrontalSledAirbag, RunsAndLowersTheHeadLoading) {
   const std::filesystem::path root = SLED_SOURCE_ROOT;
   auto run = [&](const std::string& file, std::map<std::string, double>& criteria) {
-    lang::SourceManager sources;
-    const auto id = sources.Load((root / "examples" / file).string());
-    EXPECT_TRUE(id.has_value()) << file;
-    if (!id) return runtime::TimeSeries{};
-    const Compiled compiled = CompileFile(sources, *id);
+    const Compiled compiled = CompileFile(root / "examples" / file);
     EXPECT_EQ(compiled.errors, "") << file;
-    const runtime::Model& model = compiled.lowered.model;
+    if (!compiled.errors.empty()) return runtime::TimeSeries{};
+    const runtime::Model& model = compiled.model();
     runtime::Data data = runtime::MakeData(model);
     runtime::TimeSeries series;
     const runtime::RunSummary summary = runtime::Run(model, data, series);

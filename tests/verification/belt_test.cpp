@@ -19,12 +19,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "compiler/check/check.h"
-#include "compiler/lower/lower.h"
-#include "lang/diagnostics/render.h"
-#include "lang/syntax/parser.h"
 #include "runtime/forces.h"
 #include "runtime/outputs.h"
+#include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 
 namespace sled::verification {
@@ -88,26 +85,14 @@ std::string Text(const Scene& s) {
                      s.slack, s.pretension, s.friction, s.x0, s.speed, s.spin);
 }
 
-// Parses, checks and lowers a scene; an empty model (and a test failure) when it does not check.
+// Compiles a scene; an empty model (and a test failure) when it does not compile.
 Model Compile(const std::string& text) {
-  lang::SourceManager sources;
-  const lang::FileId file = sources.Add("belt.sled", text);
-  lang::DiagnosticCollector collector;
-  lang::ParseOptions parse_options;
-  parse_options.diagnostics = &collector;
-  const auto ast = lang::Parse(sources, file, parse_options);
-  compiler::CheckOptions check_options;
-  check_options.diagnostics = &collector;
-  check_options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
-  const compiler::CheckedScenario scenario = compiler::Check(sources, ast, check_options);
-  if (collector.has_errors()) {
-    std::string errors;
-    for (const auto& d : collector.diagnostics()) errors += lang::RenderCompact(sources, d) + "\n";
-    ADD_FAILURE() << "the scene does not check:\n" << errors << text;
+  const Compiled compiled = CompileText(text);
+  if (!compiled.errors.empty()) {
+    ADD_FAILURE() << "the scene does not check:\n" << compiled.errors << text;
     return Model{};
   }
-  compiler::LowerOptions lower_options;
-  return compiler::Lower(scenario, sources, lower_options).model;
+  return compiled.model();
 }
 
 // The webbing's length with the sphere's centre at x > 0 (circle geometry, above).

@@ -20,7 +20,7 @@ TEST(ChannelColumns, GroupCountsMatchTheChannelNamesOfTheFlagship) {
   text << in.rdbuf();
   const Compiled compiled = CompileText(text.str());
   ASSERT_TRUE(compiled.errors.empty()) << compiled.errors;
-  const runtime::Model& model = compiled.lowered.model;
+  const runtime::Model& model = compiled.model();
   const std::vector<std::string> names = runtime::ChannelNames(model);
   const std::vector<std::size_t> first = runtime::post::GroupColumns(model);
   bool has_belt = false;

@@ -1,5 +1,5 @@
-// Compiles a scenario for the verification tests as `sled run` does (parse, check against the
-// standard library, lower), and runs it, so a test can use a scene written in the language.
+// Scenes for the verification tests through the public API (sled/sled.h), as `sled run` takes
+// them: sled::Compile against the source tree's standard library, then sled::Simulate.
 #pragma once
 
 #include <filesystem>
@@ -7,48 +7,49 @@
 #include <utility>
 #include <vector>
 
-#include "compiler/check/check.h"
-#include "compiler/lower/lower.h"
-#include "lang/diagnostics/render.h"
-#include "lang/syntax/parser.h"
-#include "runtime/run.h"
+#include "sled/compile.h"
+#include "sled/simulate.h"
 
 namespace sled::verification {
 
 struct Compiled {
-  compiler::Lowered lowered;
-  std::string errors;  // rendered diagnostics; empty when the scene checks
+  Compilation compilation;
+  std::string errors;  // compact diagnostics when the scene has errors; empty when it compiled
+
+  const runtime::Model& model() const { return compilation.model(); }
+  // The lowering's notes (N04xx), compact, one per line.
+  std::string notes() const {
+    std::string text;
+    for (const std::string& note : compilation.Notes()) text += note + "\n";
+    return text;
+  }
 };
 
-// `overrides` are `--set NAME=VALUE` pairs, the value as source text.
-inline Compiled CompileFile(
-    lang::SourceManager& sources, lang::FileId file,
-    const std::vector<std::pair<std::string, std::string>>& overrides = {}) {
-  const std::filesystem::path root = SLED_SOURCE_ROOT;
-  lang::DiagnosticCollector collector;
-  compiler::CheckOptions check_options;
-  check_options.diagnostics = &collector;
-  check_options.overrides = overrides;
-  check_options.stdlib_root = (root / "stdlib").string();
-  const compiler::CheckedScenario scenario = compiler::ParseAndCheck(sources, file, check_options);
-  Compiled compiled;
-  if (collector.has_errors()) {
-    for (const auto& d : collector.diagnostics()) {
-      compiled.errors += lang::RenderCompact(sources, d) + "\n";
-    }
-    return compiled;
+inline Compiled CompileSource(Source source,
+                              const std::vector<std::pair<std::string, std::string>>& overrides) {
+  CompileOptions options;
+  options.stdlib = (std::filesystem::path(SLED_SOURCE_ROOT) / "stdlib").string();
+  options.overrides = overrides;
+  Compiled compiled{Compile(std::move(source), options), {}};
+  if (!compiled.compilation.ok()) {
+    compiled.errors = compiled.compilation.Render(lang::DiagnosticStyle::kCompact);
   }
-  compiled.lowered = compiler::Lower(scenario, sources, {});
   return compiled;
 }
 
+// `overrides` are `--set NAME=VALUE` pairs, the value as source text.
+inline Compiled CompileFile(
+    const std::filesystem::path& path,
+    const std::vector<std::pair<std::string, std::string>>& overrides = {}) {
+  return CompileSource(Source::File(path.string()), overrides);
+}
+
 inline Compiled CompileText(const std::string& text) {
-  lang::SourceManager sources;
-  return CompileFile(sources, sources.Add("scene.sled", text));
+  return CompileSource(Source::Text(text, "scene.sled"), {});
 }
 
 // A scene compiled and run as `sled run` runs it: its outputs, and what the run and the model
-// were (errors is empty when the scene checked).
+// were (errors is empty when the scene compiled).
 struct SceneRun {
   std::string errors;
   std::size_t nv = 0;
@@ -61,10 +62,11 @@ inline SceneRun RunText(const std::string& text) {
   const Compiled compiled = CompileText(text);
   run.errors = compiled.errors;
   if (!run.errors.empty()) return run;
-  const runtime::Model& model = compiled.lowered.model;
+  const runtime::Model& model = compiled.model();
   run.nv = static_cast<std::size_t>(model.nv);
-  runtime::Data data = runtime::MakeData(model);
-  run.summary = runtime::Run(model, data, run.series, {});
+  RunResult result = Simulate(model);
+  run.series = std::move(result.series);
+  run.summary = std::move(result.summary);
   return run;
 }
 

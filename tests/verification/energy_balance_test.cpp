@@ -42,7 +42,7 @@ double EnergyRate(const runtime::Model& model, const runtime::Data& data) {
 void ExpectPowerMatches(const std::string& text, const std::vector<double>& times) {
   const Compiled compiled = CompileText(text);
   ASSERT_EQ(compiled.errors, "");
-  const runtime::Model& model = compiled.lowered.model;
+  const runtime::Model& model = compiled.model();
   runtime::Data data = runtime::MakeData(model);
   int samples = 0;
   const bool ok = Simulate(model, data, "exponential", 1e-6, times, [&](const runtime::Data& d) {

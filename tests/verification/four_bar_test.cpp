@@ -221,13 +221,9 @@ INSTANTIATE_TEST_SUITE_P(EveryIntegrator, FourBar, ::testing::ValuesIn(AllCases(
 // examples/four_bar.sled as `sled run` runs it: the loop stays closed at every output row.
 TEST(FourBarExample, LoopStaysClosed) {
   const std::filesystem::path root = SLED_SOURCE_ROOT;
-  lang::SourceManager sources;
-  const auto file = sources.Load((root / "examples" / "four_bar.sled").string());
-  ASSERT_TRUE(file);
-  const Compiled compiled = CompileFile(sources, *file);
+  const Compiled compiled = CompileFile(root / "examples" / "four_bar.sled");
   ASSERT_EQ(compiled.errors, "");
-  const compiler::Lowered& lowered = compiled.lowered;
-  const Model& model = lowered.model;
+  const Model& model = compiled.model();
   ASSERT_EQ(model.nconstraint(), 1u);  // pivot A became the crank's joint to the ground
   runtime::Data data = runtime::MakeData(model);
   struct Watch {

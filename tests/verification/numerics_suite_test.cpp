@@ -24,12 +24,9 @@ class NumericsSuite : public ::testing::TestWithParam<SuiteParam> {};
 
 TEST_P(NumericsSuite, FiniteAndCompleteOrFailsWithACause) {
   const auto& [suite_case, method] = GetParam();
-  lang::SourceManager sources;
-  const auto file = sources.Load(suite_case.file.string());
-  ASSERT_TRUE(file) << suite_case.file;
-  const Compiled compiled = CompileFile(sources, *file, suite_case.overrides);
-  ASSERT_EQ(compiled.errors, "");
-  const runtime::Model& scene = compiled.lowered.model;
+  const Compiled compiled = CompileFile(suite_case.file, suite_case.overrides);
+  ASSERT_EQ(compiled.errors, "") << suite_case.file;
+  const runtime::Model& scene = compiled.model();
 
   for (const double tolerance : {1e-2, 1e-4, 1e-6}) {
     SCOPED_TRACE(testing::Message() << method << " at " << tolerance);

@@ -1,0 +1,46 @@
+// The folder `sled run` writes, as a RunSink: timeseries.csv, timeseries_filtered.csv (when any
+// group has a filter class), summary.json, animation.glb, with `iso_mme` the ISO-MME data set in
+// DIR/iso-mme, and at every stop time of the run the complete state in DIR/dump_<T>.txt
+// (docs/outputs.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "runtime/export/animation_recorder.h"
+#include "sled/simulate.h"
+
+namespace sled {
+
+struct OutputFolderOptions {
+  std::string directory;           // an existing folder
+  std::string test_name = "sled";  // the ISO-MME test name
+  bool iso_mme = false;            // also write the ISO-MME data set into DIR/iso-mme
+  // Listed first among summary.json's warnings: the compile's notes (Compilation::Notes).
+  std::vector<std::string> notes;
+};
+
+class OutputFolder : public RunSink {
+ public:
+  OutputFolder(const runtime::Model& model, OutputFolderOptions options);
+
+  // An animation frame.
+  void OnRow(const runtime::Model& model, const runtime::Data& data) override;
+  // The state printout DIR/dump_<T>.txt.
+  void OnStop(const runtime::Model& model, const runtime::Data& data) override;
+  // Every file of the folder; false with `error` naming the first file that could not be
+  // written.
+  bool OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) override;
+
+  // The state printouts written, and why others could not be.
+  const std::vector<std::string>& dumps_written() const { return dumps_written_; }
+  const std::vector<std::string>& dump_errors() const { return dump_errors_; }
+
+ private:
+  OutputFolderOptions options_;
+  runtime::AnimationRecorder animation_;
+  std::vector<std::string> dumps_written_;
+  std::vector<std::string> dump_errors_;
+};
+
+}  // namespace sled

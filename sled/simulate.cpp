@@ -1,0 +1,121 @@
+#include "sled/simulate.h"
+
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "runtime/post/channel_filters.h"
+#include "runtime/post/injury_criteria.h"
+
+namespace sled {
+namespace {
+
+// Hands the runtime's observer calls to every sink in turn.
+class SinkFanOut : public runtime::RunObserver {
+ public:
+  explicit SinkFanOut(const std::vector<RunSink*>& sinks) : sinks_(sinks) {}
+  void OnRow(const runtime::Model& model, const runtime::Data& data) override {
+    for (RunSink* sink : sinks_) sink->OnRow(model, data);
+  }
+  void OnStop(const runtime::Model& model, const runtime::Data& data) override {
+    for (RunSink* sink : sinks_) sink->OnStop(model, data);
+  }
+
+ private:
+  const std::vector<RunSink*>& sinks_;
+};
+
+void ReportProgress(double fraction, void* context) {
+  (*static_cast<std::function<void(double)>*>(context))(fraction);
+}
+
+}  // namespace
+
+void RunSink::OnRow(const runtime::Model& model, const runtime::Data& data) {
+  (void)model;
+  (void)data;
+}
+
+void RunSink::OnStop(const runtime::Model& model, const runtime::Data& data) {
+  (void)model;
+  (void)data;
+}
+
+bool RunSink::OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) {
+  (void)model;
+  (void)result;
+  (void)error;
+  return true;
+}
+
+RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
+                   const std::vector<RunSink*>& sinks) {
+  RunResult result;
+  runtime::Data data = runtime::MakeData(model);
+  SinkFanOut fan_out(sinks);
+  runtime::RunOptions run_options;
+  std::function<void(double)> progress = options.progress;
+  if (progress) {
+    run_options.progress = ReportProgress;
+    run_options.progress_context = &progress;
+  }
+  run_options.observer = sinks.empty() ? nullptr : &fan_out;
+  run_options.stop_times = options.stop_times;
+  run_options.checkpoint_every = options.checkpoint_every;
+  run_options.checkpoint_directory = options.checkpoint_directory;
+  run_options.resume = options.resume;
+  result.summary = runtime::Run(model, data, result.series, run_options);
+  if (result.summary.failed) LocateFailure(model, result.summary.failure);
+
+  // Filtered channels and injury criteria, from the rows there are (up to a failure).
+  runtime::post::FilteredChannels filtered =
+      runtime::post::FilterOutputChannels(model, result.series);
+  result.filtered = std::move(filtered.series);
+  result.criteria = runtime::post::EvaluateCriteria(model, result.series);
+  result.warnings = result.summary.notes;
+  for (std::string& warning : filtered.warnings) result.warnings.push_back(std::move(warning));
+
+  for (RunSink* sink : sinks) {
+    std::string error;
+    if (!sink->OnEnd(model, result, &error)) result.sink_errors.push_back(std::move(error));
+  }
+  return result;
+}
+
+std::string CheckpointStepError(const runtime::Model& model, double every) {
+  const double rows = every / model.output_every;
+  if (every > 0 && model.output_every > 0 && std::llround(rows) >= 1 &&
+      std::abs(rows - static_cast<double>(std::llround(rows))) <= 1e-9 * rows) {
+    return {};
+  }
+  return fmt::format(
+      "{} s is not a multiple of the output step {} s; checkpoints are taken at output rows", every,
+      model.output_every);
+}
+
+void LocateFailure(const runtime::Model& model, runtime::Failure& failure) {
+  if (failure.where.empty()) return;
+  for (std::size_t s = 0; s < model.nsegment() && failure.source.file.empty(); ++s) {
+    if (model.segment_name[s] == failure.where) {
+      failure.source = model.segment_source[s];
+    } else if (model.joint_name[s] == failure.where) {
+      failure.source = model.joint_source[s];
+    }
+  }
+  for (std::size_t c = 0; c < model.constraint_source.size() && failure.source.file.empty(); ++c) {
+    if (model.constraint_name[c] == failure.where) failure.source = model.constraint_source[c];
+  }
+}
+
+std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure) {
+  LocateFailure(model, failure);
+  return fmt::format(
+      "at t = {:.6g} s{}: {}{}", failure.time,
+      failure.where.empty() ? "" : fmt::format(" in `{}`", failure.where), failure.cause,
+      failure.source.file.empty() ? ""
+                                  : fmt::format(" ({}:{}:{})", failure.source.file,
+                                                failure.source.line, failure.source.column));
+}
+
+}  // namespace sled

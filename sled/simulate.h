@@ -1,0 +1,85 @@
+// sled::Simulate: a compiled Model from its start to its end time, with the post-processing every
+// run gets (SAE J211 filtered channels, injury criteria), handing the run to sinks as it goes.
+// The one run loop of `sled run`, `sled study`, the tests and programs that embed sled.
+//
+//   sled::OutputFolder folder(model, {.directory = "out"});   // sled/output_folder.h
+//   sled::RunResult run = sled::Simulate(model, {}, {&folder});
+//   if (run.failed()) std::cerr << sled::DescribeFailure(model, run.summary.failure) << '\n';
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "runtime/checkpoint.h"
+#include "runtime/data.h"
+#include "runtime/model.h"
+#include "runtime/post/criterion_value.h"
+#include "runtime/run.h"
+
+namespace sled {
+
+// Everything a run produced. A run that failed numerically keeps its rows up to the failure,
+// and its filtered channels and criteria are computed from those rows.
+struct RunResult {
+  // Integrator and its statistics, wall time, energy balance, checkpoints written, and the
+  // failure (time, element, cause and its scene line) when `summary.failed`.
+  runtime::RunSummary summary;
+  runtime::TimeSeries series;    // time, then every channel of runtime::ChannelNames(model)
+  runtime::TimeSeries filtered;  // the channels of groups with an SAE J211 class, filtered
+  std::vector<runtime::post::CriterionValue> criteria;
+  // What the user should know, one line each: the run's notes (a resume's changes) and the
+  // groups the filters left unfiltered.
+  std::vector<std::string> warnings;
+  // Sinks that could not keep the result (RunSink::OnEnd returned false), one line each.
+  std::vector<std::string> sink_errors;
+
+  bool failed() const { return summary.failed; }
+};
+
+// Receives a run as it goes and its result at the end: the output folder, state dumps, a
+// study's or sweep's collector. Every method has a do-nothing default.
+class RunSink {
+ public:
+  virtual ~RunSink() = default;
+  // At each output row, after the state there is evaluated (forces, accelerations, joint
+  // wrenches current). A resumed run shows the rows from its checkpoint on.
+  virtual void OnRow(const runtime::Model& model, const runtime::Data& data);
+  // At each of SimulateOptions::stop_times the run reaches, evaluated the same way.
+  virtual void OnStop(const runtime::Model& model, const runtime::Data& data);
+  // Once, after the run, numerical failure included. False with `error` set when the sink could
+  // not keep the result (a file it could not write); Simulate lists it in sink_errors.
+  virtual bool OnEnd(const runtime::Model& model, const RunResult& result, std::string* error);
+};
+
+struct SimulateOptions {
+  // Called after each output row with the fraction of the run done; may be empty.
+  std::function<void(double fraction)> progress;
+  // Increasing times where the integrator lands exactly and the sinks' OnStop see the state
+  // (they add no output row); times outside the run are never reached.
+  std::vector<double> stop_times;
+  // A checkpoint every this many seconds of simulated time, a multiple of the output step
+  // (CheckpointStepError says whether it is), into checkpoint_directory; 0: none.
+  double checkpoint_every = 0.0;
+  std::string checkpoint_directory = ".";
+  // Continue from this checkpoint, read and checked against the Model by the caller
+  // (runtime::ReadCheckpoint, runtime::CheckpointMismatch); null: start at the start time.
+  const runtime::Checkpoint* resume = nullptr;
+};
+
+// Runs the Model with a fresh Data, post-processes the rows, then calls every sink's OnEnd in
+// order. Never throws for a numerical failure: it is in result.summary.
+RunResult Simulate(const runtime::Model& model, const SimulateOptions& options = {},
+                   const std::vector<RunSink*>& sinks = {});
+
+// Why `every` seconds cannot be the checkpoint step of the Model (not a positive multiple of its
+// output step); empty when it can.
+std::string CheckpointStepError(const runtime::Model& model, double every);
+
+// Sets a failure's scene line from the segment, joint or constraint it names, when the runtime
+// gave none.
+void LocateFailure(const runtime::Model& model, runtime::Failure& failure);
+// A numerical failure in one line: `at t = 0.0638 s in `ball.sphere`: why (scene.sled:6:13)`.
+std::string DescribeFailure(const runtime::Model& model, runtime::Failure failure);
+
+}  // namespace sled
