@@ -9,10 +9,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "compiler/check/check.h"
-#include "compiler/lower/lower.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "runtime/dynamics.h"
+#include "sled/compile.h"
 
 namespace sled::compiler {
 namespace {
@@ -25,27 +24,21 @@ struct Verdict {
 };
 
 Verdict Judge(const std::string& text) {
-  lang::SourceManager sources;
-  const lang::FileId file = sources.Add("scene.sled", text);
-  lang::DiagnosticCollector collector;
-  CheckOptions options;
-  options.diagnostics = &collector;
-  options.stdlib_root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
-  const CheckedScenario scenario = ParseAndCheck(sources, file, options);
+  CompileOptions options;
+  options.stdlib = std::string(SLED_SOURCE_ROOT) + "/stdlib";
+  const Compilation compiled = Compile(Source::Text(text), options);
   Verdict verdict;
-  for (const auto& d : collector.diagnostics()) {
+  for (const auto& d : compiled.diagnostics()) {
     if (d.code() == "W0004") ++verdict.lint_warnings;
     if (d.severity == lang::Severity::kError) verdict.errors.push_back(d.message);
   }
-  if (collector.has_errors()) return verdict;
-  LowerOptions lower_options;
-  lower_options.diagnostics = &collector;
-  const Lowered lowered = Lower(scenario, sources, lower_options);
-  runtime::Data data = runtime::MakeData(lowered.model);
+  if (!compiled.ok()) return verdict;
+  const runtime::Model& model = compiled.model();
+  runtime::Data data = runtime::MakeData(model);
   runtime::Failure failure;
-  if (!runtime::Forward(lowered.model, data, &failure)) return verdict;
+  if (!runtime::Forward(model, data, &failure)) return verdict;
   verdict.checked = true;
-  for (std::size_t k = 0; k < lowered.model.contacts.npair(); ++k) {
+  for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     if (data.contacts.deflection[k] > 1e-3 && data.contacts.normal_force[k] > 0) {
       ++verdict.runtime_buried;
     }
