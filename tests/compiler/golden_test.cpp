@@ -210,7 +210,7 @@ std::string CompileGolden(const std::string& relative_path, const std::string& t
                           bool* has_errors) {
   CompileOptions options;
   options.stdlib = (kRoot / "stdlib").string();
-  options.overrides = OverridesIn(text);
+  options.overrides = DirectivesIn(text).overrides;
   const Compilation compiled = Compile(Source::Text(text, relative_path), options);
   *has_errors = !compiled.ok();
   return compiled.Render(lang::DiagnosticStyle::kCompact);
