@@ -247,7 +247,7 @@ struct Model {
   std::vector<std::int16_t> output_filter_class;
   std::vector<std::uint8_t> output_filter_iso;
 
-  // --- Injury criteria, computed after the run from the output channels (runtime/post/).
+  // --- Injury criteria, computed after the run from the output channels (output/post/).
   enum class CriterionKind : std::uint8_t {
     kHic15,
     kHic36,

@@ -3,11 +3,11 @@
 #include <filesystem>
 #include <utility>
 
-#include "runtime/export/animation_glb.h"
-#include "runtime/export/iso_mme_writer.h"
-#include "runtime/export/state_dump.h"
-#include "runtime/output_writer.h"
-#include "runtime/post/channel_peaks.h"
+#include "output/export/animation_glb.h"
+#include "output/export/iso_mme_writer.h"
+#include "output/export/state_dump.h"
+#include "output/output_writer.h"
+#include "output/post/channel_peaks.h"
 
 namespace sled {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/export/animation_recorder.h"
+#include "output/export/animation_recorder.h"
 #include "sled/simulate.h"
 
 namespace sled {

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "runtime/post/channel_filters.h"
-#include "runtime/post/injury_criteria.h"
+#include "output/post/channel_filters.h"
+#include "output/post/injury_criteria.h"
 
 namespace sled {
 namespace {

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "output/post/criterion_value.h"
 #include "runtime/checkpoint.h"
 #include "runtime/data.h"
 #include "runtime/model.h"
-#include "runtime/post/criterion_value.h"
 #include "runtime/run.h"
 
 namespace sled {

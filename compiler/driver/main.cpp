@@ -26,7 +26,7 @@
 #include "lang/format/formatter.h"
 #include "lang/legacy/convert.h"
 #include "lang/syntax/parser.h"
-#include "runtime/atomic_file.h"
+#include "output/atomic_file.h"
 #include "sled/compile.h"
 
 namespace {

@@ -16,7 +16,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "runtime/atomic_file.h"
+#include "output/atomic_file.h"
 
 namespace sled::driver {
 namespace {

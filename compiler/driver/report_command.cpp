@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/report/report.h"
+#include "output/report/report.h"
 
 namespace sled::driver {
 

@@ -13,8 +13,8 @@
 #include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
+#include "output/post/criterion_value.h"
 #include "runtime/checkpoint.h"
-#include "runtime/post/criterion_value.h"
 #include "sled/output_folder.h"
 #include "sled/simulate.h"
 

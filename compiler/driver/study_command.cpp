@@ -12,12 +12,12 @@
 
 #include "compiler/driver/process_pool.h"
 #include "compiler/driver/progress_line.h"
-#include "compiler/report/svg_plot.h"
-#include "runtime/output_writer.h"
-#include "runtime/post/injury_criteria.h"
-#include "runtime/post/series_error.h"
+#include "output/output_writer.h"
+#include "output/post/injury_criteria.h"
+#include "output/post/series_error.h"
+#include "output/report/svg_plot.h"
+#include "output/run_record.h"
 #include "runtime/run.h"
-#include "runtime/run_record.h"
 #include "sled/simulate.h"
 
 namespace sled::driver {
@@ -75,7 +75,7 @@ Sample RunSample(const runtime::Model& scene, const std::string& method, double 
 
 // Runs each (method, tolerance) as RunSample does, in worker processes, `jobs` at a time
 // (process_pool.h): a forked child computes what this process would, bit for bit, and sends its
-// summary and rows back (runtime/run_record.h); the criteria are evaluated here from the rows.
+// summary and rows back (output/run_record.h); the criteria are evaluated here from the rows.
 // kExitOk; kExitInterrupted when interrupted, kExitInputErrors after saying which worker ended
 // without its result.
 int RunSamples(const runtime::Model& scene,

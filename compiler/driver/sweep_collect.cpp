@@ -7,10 +7,10 @@
 #include <fmt/format.h>
 
 #include "compiler/driver/sweep_folder.h"
-#include "compiler/report/run_summary.h"
-#include "compiler/report/sweep_page.h"
 #include "lang/source/source_manager.h"
-#include "runtime/atomic_file.h"
+#include "output/atomic_file.h"
+#include "output/report/run_summary.h"
+#include "output/report/sweep_page.h"
 
 namespace sled::driver {
 namespace {

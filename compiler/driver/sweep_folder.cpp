@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lang/source/source_manager.h"
-#include "runtime/atomic_file.h"
+#include "output/atomic_file.h"
 #include "runtime/fnv1a.h"
 
 namespace sled::driver {

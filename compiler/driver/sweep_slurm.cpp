@@ -13,7 +13,7 @@
 #include "compiler/driver/process_pool.h"
 #include "compiler/driver/sweep_collect.h"
 #include "lang/source/source_manager.h"
-#include "runtime/atomic_file.h"
+#include "output/atomic_file.h"
 
 namespace sled::driver {
 namespace {

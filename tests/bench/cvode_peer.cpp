@@ -18,7 +18,7 @@
 //
 // Each run is measured as `sled study` measures it: its outputs at the scene's output times
 // against a dopri5 reference at 1e-10, the largest deviation of a channel over the largest range
-// of its kind (runtime/post/series_error.h).
+// of its kind (output/post/series_error.h).
 //
 //   sled_bench_cvode_peer [CASE...]     (default: every case of the suite)
 //
@@ -44,10 +44,10 @@
 
 #include <fmt/format.h>
 
+#include "output/post/injury_criteria.h"
+#include "output/post/series_error.h"
 #include "runtime/dynamics.h"
 #include "runtime/outputs.h"
-#include "runtime/post/injury_criteria.h"
-#include "runtime/post/series_error.h"
 #include "runtime/run.h"
 #include "runtime/system.h"
 #include "tests/verification/compile.h"

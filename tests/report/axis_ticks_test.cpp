@@ -1,6 +1,6 @@
 // Axis ranges and ticks of the report's plots: round steps, ranges that start and end on a tick
 // and hold the data, labels with the decimals the step needs.
-#include "compiler/report/axis_ticks.h"
+#include "output/report/axis_ticks.h"
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,6 @@
 // Which channels share a plot: names split into base, component and unit; bases split into the
 // request and the quantity it measures.
-#include "compiler/report/channel_groups.h"
+#include "output/report/channel_groups.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

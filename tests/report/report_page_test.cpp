@@ -2,15 +2,15 @@
 // table with its verdicts, one plot per channel group with filtered and raw series, the
 // warnings, and the animation's bytes as base64 with the viewer script; and WriteReport reads
 // a run folder, noting what is missing, refusing a folder without summary.json.
-#include "compiler/report/report_page.h"
+#include "output/report/report_page.h"
 
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "compiler/report/base64.h"
-#include "compiler/report/report.h"
+#include "output/report/base64.h"
+#include "output/report/report.h"
 #include "tests/compiler/sled_process.h"
 
 namespace sled::report {

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "compiler/report/base64.h"
-#include "compiler/report/channel_table.h"
-#include "compiler/report/run_summary.h"
+#include "output/report/base64.h"
+#include "output/report/channel_table.h"
+#include "output/report/run_summary.h"
 
 namespace sled::report {
 namespace {

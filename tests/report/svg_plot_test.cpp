@@ -1,6 +1,6 @@
 // The SVG plot generator: where data lands in the plot area, the ticks and labels it draws, a
 // path thinned to the pixel columns that still holds every peak, and breaks at missing values.
-#include "compiler/report/svg_plot.h"
+#include "output/report/svg_plot.h"
 
 #include <cmath>
 #include <limits>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "compiler/report/polyline_thinning.h"
+#include "output/report/polyline_thinning.h"
 
 namespace sled::report {
 namespace {

@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "compiler/report/sweep_page.h"
+#include "output/report/sweep_page.h"
 
 namespace sled::report {
 namespace {

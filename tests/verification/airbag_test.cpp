@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "runtime/post/injury_criteria.h"
+#include "output/post/injury_criteria.h"
 #include "runtime/run.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/verification.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "output/post/channel_filters.h"
 #include "runtime/outputs.h"
-#include "runtime/post/channel_filters.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {

@@ -1,0 +1,156 @@
+// The scene-level post-processing: a Model's criteria read their output groups, filter them at
+// the criterion's class, and give the reference values of the half-sine pulse; joint loads take
+// the sense of the child segment's axis; a sample rate too low for a class is reported, not
+// computed; only the groups with a class appear among the filtered channels.
+#include <cmath>
+#include <numbers>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "output/post/channel_filters.h"
+#include "output/post/injury_criteria.h"
+
+namespace sled::runtime::post {
+namespace {
+
+using ::testing::HasSubstr;
+
+constexpr double kG = 9.80665;
+
+// A Model with two segments (a head, and a thigh whose hip is 174 mm up its z axis), the head's
+// acceleration group and the hip's joint-force group, and no criteria yet.
+Model PostModel(double output_every) {
+  Model model;
+  model.start_time = 0;
+  model.end_time = 0.06;
+  model.output_every = output_every;
+  model.segment_name = {"dummy.head", "dummy.thigh"};
+  model.joint_point_in_child = {Vec3::Zero(), Vec3(0, 0, 0.174)};
+  model.output_kind = {Model::OutputKind::kAcceleration, Model::OutputKind::kJointForce};
+  model.output_label = {"dummy.head", "dummy.hip"};
+  model.output_index = {0, 1};
+  model.output_point = {Vec3::Zero(), Vec3::Zero()};
+  model.output_filter_class = {1000, 0};
+  model.output_filter_iso = {0, 0};
+  return model;
+}
+
+void AddCriterion(Model& model, Model::CriterionKind kind, const char* name, int output) {
+  model.criterion_kind.push_back(kind);
+  model.criterion_name.emplace_back(name);
+  model.criterion_target.emplace_back(model.output_label[static_cast<std::size_t>(output)]);
+  model.criterion_output.push_back(output);
+  model.criterion_moment_output.push_back(-1);
+  model.criterion_filter_iso.push_back(0);
+}
+
+// Rows of time, head acceleration (x, y, z) and hip force (x, y, z): a 60 g, 15 ms half-sine
+// along x from 10 ms, and a force pushing the thigh down its axis, 5 kN at the peak of a 20 ms
+// half-sine.
+TimeSeries PulseSeries(const Model& model) {
+  TimeSeries series;
+  series.names = {"a.x", "a.y", "a.z", "f.x", "f.y", "f.z"};
+  series.columns = 7;
+  const auto rows = static_cast<std::size_t>(std::lround(model.end_time / model.output_every)) + 1;
+  for (std::size_t k = 0; k < rows; ++k) {
+    const double t = static_cast<double>(k) * model.output_every;
+    const double head =
+        t >= 0.01 && t <= 0.025 ? 60 * kG * std::sin(std::numbers::pi * (t - 0.01) / 0.015) : 0.0;
+    const double force =
+        t >= 0.01 && t <= 0.03 ? -5000 * std::sin(std::numbers::pi * (t - 0.01) / 0.02) : 0.0;
+    for (const double v : {t, head, 0.0, 0.0, 0.0, 0.0, force}) series.values.push_back(v);
+  }
+  return series;
+}
+
+const CriterionValue& Find(const std::vector<CriterionValue>& values, const std::string& name,
+                           const std::string& variant = "") {
+  for (const CriterionValue& v : values) {
+    if (v.name == name && v.variant == variant) return v;
+  }
+  ADD_FAILURE() << "no " << name << " " << variant;
+  return values.front();
+}
+
+TEST(EvaluateCriteria, HeadAndChestCriteriaOfTheHalfSinePulse) {
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kHic15, "hic15", 0);
+  AddCriterion(model, Model::CriterionKind::kHead3ms, "head_3ms", 0);
+  AddCriterion(model, Model::CriterionKind::kChest3ms, "chest_3ms", 0);
+  const std::vector<CriterionValue> values = EvaluateCriteria(model, PulseSeries(model));
+  ASSERT_EQ(values.size(), 5u);  // hic15, then both variants of each 3 ms criterion
+  const CriterionValue& hic = Find(values, "hic15");
+  ASSERT_TRUE(hic.computed) << hic.reason;
+  // crash-conventions.md §2.2: 173.4 over 2.5-12.5 ms of the pulse; CFC 1000 barely touches a
+  // 15 ms pulse.
+  EXPECT_NEAR(hic.value, 173.4, 0.5);
+  EXPECT_NEAR(hic.window_start, 0.0125, 2e-4);
+  EXPECT_NEAR(hic.window_end, 0.0225, 2e-4);
+  EXPECT_EQ(hic.filter_class, 1000);
+  EXPECT_EQ(hic.limit, 700);
+  EXPECT_TRUE(hic.pass);
+  for (const char* name : {"head_3ms", "chest_3ms"}) {
+    for (const char* variant : {"cumulative", "continuous"}) {
+      const CriterionValue& clip = Find(values, name, variant);
+      ASSERT_TRUE(clip.computed) << name << " " << variant;
+      EXPECT_NEAR(clip.value, 57.06, 0.2) << name << " " << variant;
+      EXPECT_EQ(clip.unit, "g");
+    }
+  }
+  EXPECT_EQ(Find(values, "chest_3ms", "continuous").filter_class, 180);
+  EXPECT_EQ(Find(values, "chest_3ms", "cumulative").limit, 60);
+  EXPECT_TRUE(Find(values, "chest_3ms", "cumulative").pass);  // 57 g is below 60 g
+}
+
+TEST(EvaluateCriteria, FemurCompressionFollowsTheChildAxis) {
+  // The hip sits at +z of the thigh, so a force on the thigh along -z pushes it away from the
+  // hip: compression.
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kFemurLoad, "femur_load", 1);
+  AddCriterion(model, Model::CriterionKind::kNeckTension, "neck_tension", 1);
+  const std::vector<CriterionValue> values = EvaluateCriteria(model, PulseSeries(model));
+  const CriterionValue& femur = Find(values, "femur_load");
+  ASSERT_TRUE(femur.computed) << femur.reason;
+  EXPECT_NEAR(femur.value, 5000, 5);
+  EXPECT_NEAR(femur.window_start, 0.02, 1e-4);
+  EXPECT_EQ(femur.unit, "N");
+  EXPECT_EQ(femur.limit, 10008);
+  EXPECT_TRUE(femur.pass);
+  EXPECT_NEAR(Find(values, "neck_tension").value, 0.0, 5);  // never pulled
+}
+
+TEST(EvaluateCriteria, TooLowASampleRateIsReportedNotComputed) {
+  Model model = PostModel(1e-3);  // 1 kHz: enough for CFC 60 only
+  AddCriterion(model, Model::CriterionKind::kHic36, "hic36", 0);
+  const std::vector<CriterionValue> values = EvaluateCriteria(model, PulseSeries(model));
+  ASSERT_EQ(values.size(), 1u);
+  EXPECT_FALSE(values[0].computed);
+  EXPECT_THAT(values[0].reason, HasSubstr("CFC 1000"));
+  EXPECT_THAT(values[0].reason, HasSubstr("output_every"));
+}
+
+TEST(FilterOutputChannels, OnlyGroupsWithAClassAreFiltered) {
+  const Model model = PostModel(1e-4);
+  const TimeSeries raw = PulseSeries(model);
+  const FilteredChannels filtered = FilterOutputChannels(model, raw);
+  EXPECT_TRUE(filtered.warnings.empty());
+  ASSERT_EQ(filtered.series.names, (std::vector<std::string>{"a.x", "a.y", "a.z"}));
+  ASSERT_EQ(filtered.series.rows(), raw.rows());
+  // The pulse's peak survives CFC 1000 within a tenth of a percent.
+  double peak = 0;
+  for (std::size_t row = 0; row < raw.rows(); ++row) {
+    EXPECT_EQ(filtered.series.values[row * 4], raw.values[row * 7]);
+    peak = std::max(peak, filtered.series.values[row * 4 + 1]);
+  }
+  EXPECT_NEAR(peak / (60 * kG), 1.0, 1e-3);
+
+  const Model coarse = PostModel(1e-3);
+  const FilteredChannels refused = FilterOutputChannels(coarse, PulseSeries(coarse));
+  ASSERT_EQ(refused.warnings.size(), 1u);
+  EXPECT_THAT(refused.warnings[0], HasSubstr("dummy.head"));
+  EXPECT_TRUE(refused.series.names.empty());
+}
+
+}  // namespace
+}  // namespace sled::runtime::post
