@@ -7,16 +7,9 @@
 
 #include "runtime/data.h"
 #include "runtime/integrate/ode.h"
+#include "runtime/time_series.h"
 
 namespace sled::runtime {
-
-// Rows of `columns` values: time, then the channels of ChannelNames(model).
-struct TimeSeries {
-  std::vector<std::string> names;  // without the time column
-  std::size_t columns = 0;         // 1 + names.size()
-  std::vector<double> values;      // row-major
-  std::size_t rows() const { return columns == 0 ? 0 : values.size() / columns; }
-};
 
 // The energy balance of a run (runtime/energy.h) at its last row, and the largest residual of
 // any row against the largest term of the balance at any row.

@@ -15,7 +15,8 @@
 #include <vector>
 
 #include "output/post/criterion_value.h"
-#include "runtime/run.h"
+#include "runtime/model.h"
+#include "runtime/time_series.h"
 
 namespace sled::runtime {
 

@@ -6,7 +6,8 @@
 #include <vector>
 
 #include "output/post/j211_filter.h"
-#include "runtime/run.h"
+#include "runtime/model.h"
+#include "runtime/time_series.h"
 
 namespace sled::runtime::post {
 

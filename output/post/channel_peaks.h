@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/run.h"
+#include "runtime/time_series.h"
 
 namespace sled::runtime::post {
 
