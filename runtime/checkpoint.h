@@ -12,7 +12,7 @@
 
 #include "runtime/archive.h"
 #include "runtime/data.h"
-#include "runtime/run.h"
+#include "runtime/time_series.h"
 
 namespace sled::runtime {
 
@@ -32,8 +32,15 @@ struct Checkpoint {
   std::string state;          // the integrator's and the Data's archive (SerializeRunState)
 };
 
-bool WriteCheckpoint(const std::string& path, const Checkpoint& checkpoint, std::string* error);
-bool ReadCheckpoint(const std::string& path, Checkpoint* checkpoint, std::string* error);
+// Keeps the checkpoints a run takes (runtime::Run calls it at each checkpoint row): a file per
+// checkpoint in a folder (output/checkpoint_file.h), memory, a test's counter.
+class CheckpointSink {
+ public:
+  virtual ~CheckpointSink() = default;
+  // Keeps `checkpoint`: true with `where` (a file's path) set, or false with `error` set, which
+  // stops the run as failed.
+  virtual bool Keep(const Checkpoint& checkpoint, std::string* where, std::string* error) = 0;
+};
 
 // Why the checkpoint cannot continue the Model with this fingerprint; empty when it can.
 std::string CheckpointMismatch(const Checkpoint& checkpoint, const ModelFingerprint& model);

@@ -63,8 +63,6 @@ std::size_t OutputRowCount(const Model& model) {
          1;
 }
 
-std::string CheckpointFileName(double time) { return fmt::format("checkpoint_{:.6f}s.bin", time); }
-
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options) {
   const auto wall_start = std::chrono::steady_clock::now();
   RunSummary summary;
@@ -77,8 +75,10 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   series.values.clear();
   series.values.reserve(outputs * series.columns);
   // Checkpoints fall on output rows: every `checkpoint_rows` rows.
-  const auto checkpoint_rows = static_cast<std::size_t>(
-      options.checkpoint_every > 0 ? std::llround(options.checkpoint_every / step) : 0);
+  const auto checkpoint_rows =
+      static_cast<std::size_t>(options.checkpoint_every > 0 && options.checkpoints != nullptr
+                                   ? std::llround(options.checkpoint_every / step)
+                                   : 0);
 
   auto integrator = MakeIntegrator(model.integrator);
   if (!integrator) {
@@ -203,13 +203,13 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       Archive archive = Archive::ForWriting();
       SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
       checkpoint.state = archive.bytes();
-      const std::string path = options.checkpoint_directory + "/" + CheckpointFileName(data.time);
+      std::string where;
       std::string error;
-      if (!WriteCheckpoint(path, checkpoint, &error)) {
+      if (!options.checkpoints->Keep(checkpoint, &where, &error)) {
         fail_because(error, data.time);
         break;
       }
-      summary.checkpoints.push_back(path);
+      summary.checkpoints.push_back(where);
     }
     if (options.progress)
       options.progress(static_cast<double>(k) / static_cast<double>(outputs - 1),

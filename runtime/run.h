@@ -33,7 +33,7 @@ struct RunSummary {
   Failure failure;
   double end_time = 0.0;  // where the run stopped
   EnergySummary energy;
-  std::vector<std::string> checkpoints;  // files written
+  std::vector<std::string> checkpoints;  // where the checkpoint sink kept them (files)
   std::vector<std::string> notes;        // what the user should know (a resume's changes)
 };
 
@@ -46,16 +46,17 @@ class RunObserver {
   virtual void OnStop(const Model& model, const Data& data) = 0;
 };
 
-struct Checkpoint;  // runtime/checkpoint.h
+struct Checkpoint;     // runtime/checkpoint.h
+class CheckpointSink;  // runtime/checkpoint.h
 
 struct RunOptions {
   // Called after each output row, e.g. to show progress; may be empty.
   void (*progress)(double fraction, void* context) = nullptr;
   void* progress_context = nullptr;
   // A checkpoint every this many seconds of simulated time (a multiple of the output step; the
-  // caller checks), into checkpoint_directory, named by CheckpointFileName; 0: none.
+  // caller checks), handed to `checkpoints`; 0 (or no sink): none.
   double checkpoint_every = 0.0;
-  std::string checkpoint_directory = ".";
+  CheckpointSink* checkpoints = nullptr;
   // Continue from this checkpoint (its fingerprint already checked against the Model).
   const Checkpoint* resume = nullptr;
   // Sees each output row and stop time (the animation, the state dumps); may be null. A resumed
@@ -66,9 +67,6 @@ struct RunOptions {
   // never reached.
   std::vector<double> stop_times;
 };
-
-// `checkpoint_<time>s.bin`, with the time to the microsecond.
-std::string CheckpointFileName(double time);
 
 // The rows a complete run writes: the start, then one per output step up to the end.
 std::size_t OutputRowCount(const Model& model);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "output/checkpoint_file.h"
 #include "output/post/channel_filters.h"
 #include "output/post/injury_criteria.h"
 
@@ -62,8 +63,9 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   }
   run_options.observer = sinks.empty() ? nullptr : &fan_out;
   run_options.stop_times = options.stop_times;
+  output::CheckpointFolder checkpoint_folder(options.checkpoint_directory);
   run_options.checkpoint_every = options.checkpoint_every;
-  run_options.checkpoint_directory = options.checkpoint_directory;
+  run_options.checkpoints = &checkpoint_folder;
   run_options.resume = options.resume;
   result.summary = runtime::Run(model, data, result.series, run_options);
   if (result.summary.failed) LocateFailure(model, result.summary.failure);

@@ -59,11 +59,12 @@ struct SimulateOptions {
   // (they add no output row); times outside the run are never reached.
   std::vector<double> stop_times;
   // A checkpoint every this many seconds of simulated time, a multiple of the output step
-  // (CheckpointStepError says whether it is), into checkpoint_directory; 0: none.
+  // (CheckpointStepError says whether it is), into checkpoint_directory, each a file named by
+  // output::CheckpointFileName; 0: none.
   double checkpoint_every = 0.0;
   std::string checkpoint_directory = ".";
   // Continue from this checkpoint, read and checked against the Model by the caller
-  // (runtime::ReadCheckpoint, runtime::CheckpointMismatch); null: start at the start time.
+  // (output::ReadCheckpoint, runtime::CheckpointMismatch); null: start at the start time.
   const runtime::Checkpoint* resume = nullptr;
 };
 

@@ -13,6 +13,7 @@
 #include "compiler/driver/driver_diagnostics.h"
 #include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
+#include "output/checkpoint_file.h"
 #include "output/post/criterion_value.h"
 #include "runtime/checkpoint.h"
 #include "sled/output_folder.h"
@@ -158,7 +159,7 @@ int RunCommand(const RunCommandOptions& options) {
   runtime::Checkpoint checkpoint;
   if (!resume.empty()) {
     std::string why;
-    if (runtime::ReadCheckpoint(resume, &checkpoint, &why)) {
+    if (output::ReadCheckpoint(resume, &checkpoint, &why)) {
       why = runtime::CheckpointMismatch(checkpoint, runtime::FingerprintOf(model));
     }
     if (why.empty() && !(checkpoint.time < model.end_time)) {

@@ -1,0 +1,116 @@
+#include "output/checkpoint_file.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "runtime/archive.h"
+#include "runtime/fnv1a.h"
+
+namespace sled::output {
+namespace {
+
+using runtime::Archive;
+using runtime::Checkpoint;
+
+// Format 2 ends with a 16-hex-digit FNV-1a checksum of everything between the magic line and
+// it, so that a damaged file (a flipped byte, a torn write) is refused rather than resumed from.
+constexpr char kMagic[] = "sled checkpoint 2\n";
+constexpr char kMagicPrefix[] = "sled checkpoint ";
+constexpr std::size_t kChecksumDigits = 16;
+
+// The checksum that ends a format-2 file: FNV-1a of the payload in kChecksumDigits hex digits.
+std::string ChecksumText(const std::string& payload) {
+  return fmt::format("{:0{}x}", runtime::Fnv1a(payload), kChecksumDigits);
+}
+
+void SerializeFingerprint(Archive& archive, runtime::ModelFingerprint& model) {
+  archive.Field(model.physics);
+  archive.Resizable(model.settings);
+  archive.Resizable(model.outputs);
+}
+
+}  // namespace
+
+std::string CheckpointFileName(double time) { return fmt::format("checkpoint_{:.6f}s.bin", time); }
+
+bool WriteCheckpoint(const std::string& path, const Checkpoint& checkpoint, std::string* error) {
+  Archive archive = Archive::ForWriting();
+  Checkpoint copy = checkpoint;  // Serialize takes references; the writer does not change them
+  SerializeFingerprint(archive, copy.model);
+  archive.Field(copy.time);
+  archive.Field(copy.next_row);
+  std::string names;
+  for (const std::string& name : copy.series.names) names += name + "\n";
+  archive.Resizable(names);
+  std::int64_t columns = static_cast<std::int64_t>(copy.series.columns);
+  archive.Field(columns);
+  archive.Resizable(copy.series.values);
+  archive.Resizable(copy.state);
+  std::ofstream out(path, std::ios::binary);
+  out << kMagic << archive.bytes() << ChecksumText(archive.bytes());
+  if (!out) {
+    *error = fmt::format("cannot write the checkpoint `{}`", path);
+    return false;
+  }
+  return true;
+}
+
+bool ReadCheckpoint(const std::string& path, Checkpoint* checkpoint, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    *error = fmt::format("cannot read the checkpoint `{}`", path);
+    return false;
+  }
+  std::stringstream content;
+  content << in.rdbuf();
+  std::string bytes = content.str();
+  const std::string magic = kMagic;
+  if (!bytes.starts_with(magic)) {
+    const std::string version = bytes.substr(0, bytes.find('\n'));
+    *error = version.starts_with(kMagicPrefix) && version.size() < 40
+                 ? fmt::format(
+                       "`{}` is a checkpoint of another format (`{}`); this sled reads "
+                       "`{}`: run the scene again to write it",
+                       path, version, magic.substr(0, magic.size() - 1))
+                 : fmt::format("`{}` is not a sled checkpoint (it does not start with `{}`)", path,
+                               magic.substr(0, magic.size() - 1));
+    return false;
+  }
+  const std::string_view rest = std::string_view(bytes).substr(magic.size());
+  const std::string payload(rest.substr(0, rest.size() - std::min(rest.size(), kChecksumDigits)));
+  if (rest.size() < kChecksumDigits || rest.substr(payload.size()) != ChecksumText(payload)) {
+    *error = fmt::format(
+        "the checkpoint `{}` is truncated or damaged: its checksum does not match its contents",
+        path);
+    return false;
+  }
+  Archive archive = Archive::ForReading(payload);
+  SerializeFingerprint(archive, checkpoint->model);
+  archive.Field(checkpoint->time);
+  archive.Field(checkpoint->next_row);
+  std::string names;
+  archive.Resizable(names);
+  std::int64_t columns = 0;
+  archive.Field(columns);
+  archive.Resizable(checkpoint->series.values);
+  archive.Resizable(checkpoint->state);
+  if (!archive.ok() || !archive.at_end() || columns < 1 ||
+      checkpoint->series.values.size() % static_cast<std::size_t>(columns) != 0) {
+    *error = fmt::format("the checkpoint `{}` is truncated or damaged", path);
+    return false;
+  }
+  checkpoint->series.columns = static_cast<std::size_t>(columns);
+  checkpoint->series.names.clear();
+  std::istringstream lines(names);
+  for (std::string name; std::getline(lines, name);) checkpoint->series.names.push_back(name);
+  return true;
+}
+
+bool CheckpointFolder::Keep(const Checkpoint& checkpoint, std::string* where, std::string* error) {
+  *where = directory_ + "/" + CheckpointFileName(checkpoint.time);
+  return WriteCheckpoint(*where, checkpoint, error);
+}
+
+}  // namespace sled::output
