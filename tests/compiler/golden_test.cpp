@@ -318,7 +318,7 @@ INSTANTIATE_TEST_SUITE_P(Golden, GoldenTest, ::testing::ValuesIn(GoldenFiles()),
 
 // Codes that need no golden file: E0107 (an unreadable file, tested through the driver) and the
 // legacy-deck codes E05xx and W05xx, which have their own tests
-// (tests/lang/legacy_reader_test.cpp).
+// (tests/legacy/legacy_reader_test.cpp).
 bool ExemptFromGolden(std::string_view code) {
   return code == "E0107" || StartsWith(code, "E05") || StartsWith(code, "W05");
 }

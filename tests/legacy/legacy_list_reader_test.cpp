@@ -17,7 +17,7 @@
 #include "lang/format/formatter.h"
 #include "lang/legacy/convert.h"
 #include "lang/source/source_manager.h"
-#include "tests/lang/legacy_test_deck.h"
+#include "tests/legacy/legacy_test_deck.h"
 
 namespace sled::lang::legacy {
 namespace {

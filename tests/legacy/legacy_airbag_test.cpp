@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "lang/legacy/airbag_inflow.h"
-#include "tests/lang/legacy_test_deck.h"
+#include "tests/legacy/legacy_test_deck.h"
 
 namespace sled::lang::legacy {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/lang/legacy_test_deck.h"
+#include "tests/legacy/legacy_test_deck.h"
 
 namespace sled::lang::legacy {
 namespace {
