@@ -1,6 +1,6 @@
 // The `sled` command-line program (DESIGN.md §6): exit codes, where diagnostics go, `explain`,
-// `fmt --check` and `--set`. Runs the built binary, found next to this test executable's build
-// folder: <build>/tests/sled_compiler_tests -> <build>/compiler/driver/sled.
+// `fmt --check` and `--set`. Runs the built binary, whose path CMake gives
+// (tests/compiler/sled_process.h).
 #include <filesystem>
 #include <string>
 #include <vector>

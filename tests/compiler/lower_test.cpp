@@ -865,10 +865,7 @@ TEST(LowerBelts, PathsFunctionsHarnessesAndTiePoints) {
 // --- `sled check --dump-model` -----------------------------------------------------------------
 
 TEST(LowerDriver, CheckDumpModelPrintsTheModel) {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  ASSERT_FALSE(error);
-  const fs::path sled = self.parent_path().parent_path() / "compiler" / "driver" / "sled";
+  const fs::path sled = testing::SledBinary();
   const fs::path scene = kRoot / "tests" / "golden" / "model" / "pendulum.sled";
   const std::string command =
       fmt::format("'{}' check '{}' --dump-model 2>/dev/null", sled.string(), scene.string());

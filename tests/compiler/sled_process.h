@@ -1,6 +1,6 @@
 // Runs the built `sled` program from a test: each test gets a temporary folder of its own, so
-// tests that ctest runs side by side never share a file. The binary is found next to the test
-// executable's build folder: <build>/tests/<test binary> -> <build>/compiler/driver/sled.
+// tests that ctest runs side by side never share a file. CMake gives the binary's path
+// (SLED_BINARY, tests/CMakeLists.txt) and builds it before the tests.
 #pragma once
 
 #include <sys/wait.h>
@@ -34,12 +34,7 @@ inline void WriteText(const fs::path& path, const std::string& text) {
   out << text;
 }
 
-inline fs::path SledBinary() {
-  std::error_code error;
-  const fs::path self = fs::read_symlink("/proc/self/exe", error);
-  if (error) return {};
-  return (self.parent_path().parent_path() / "compiler" / "driver" / "sled").lexically_normal();
-}
+inline fs::path SledBinary() { return SLED_BINARY; }
 
 // A word for /bin/sh: single quotes, with embedded single quotes closed and escaped.
 inline std::string Quote(const std::string& word) {
