@@ -121,6 +121,9 @@ int main(int argc, char** argv) {
   const std::string text = sled::lang::Format(file);
 
   sled::CompileOptions options;
+#ifdef SLED_STDLIB_DIR
+  options.stdlib = SLED_STDLIB_DIR;  // the package's standard library (CMakeLists.txt)
+#endif
   options.lower = run_directory != nullptr;
   const sled::Compilation compiled =
       sled::Compile(sled::Source::Tree(std::move(sources), std::move(file)), options);
