@@ -11,6 +11,7 @@
 #    (scripts/slurm_cluster.sh), one array task per run, against the local sweep with as many
 #    jobs as the node has cores; prints the overhead per run.
 # Measure on a quiet machine (`uptime`): other work on the cores shows up as a lower speed-up.
+# SWEEP_BENCH_SLURM=0 leaves out part 2.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -48,6 +49,7 @@ m2="$(median "${two[@]}")"
 echo "sweep_speedup: load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "sweep_speedup: median ${m1} s with 1 job, ${m2} s with 2 jobs: speed-up $(awk -v a="${m1}" -v b="${m2}" 'BEGIN { printf "%.2f", a / b }')x (runs byte-identical)"
 
+if [[ "${SWEEP_BENCH_SLURM:-1}" == 0 ]]; then exit 0; fi
 if [[ $(id -u) -ne 0 ]] || ! command -v sbatch >/dev/null || ! [[ -x /usr/sbin/munged ]]; then
   echo "sweep_speedup: the Slurm part needs root and the slurm-wlm and munge packages; skipped"
   exit 0
