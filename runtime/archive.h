@@ -74,6 +74,8 @@ class Archive {
 };
 
 inline void Archive::Raw(void* data, std::size_t size) {
+  // Nothing to copy: an empty vector's data() may be null, which memcpy must not be given.
+  if (size == 0) return;
   if (!ok_) return;
   if (!reading_) {
     bytes_.append(static_cast<const char*>(data), size);
