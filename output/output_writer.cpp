@@ -115,8 +115,9 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   out << fmt::format("    \"relative_tolerance\": {},\n    \"absolute_tolerance\": {},\n",
                      model.relative_tolerance, model.absolute_tolerance);
   out << fmt::format("    \"steps\": {},\n    \"rejected_steps\": {},\n", s.steps, s.rejected);
-  out << fmt::format("    \"evaluations\": {},\n    \"jacobians\": {},\n", s.evaluations,
-                     s.jacobians);
+  out << fmt::format("    \"evaluations\": {},\n    \"output_evaluations\": {},\n", s.evaluations,
+                     summary.output_evaluations);
+  out << fmt::format("    \"jacobians\": {},\n", s.jacobians);
   out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
                      s.events);
   out << fmt::format("    \"decaying_steps\": {},\n", s.decaying_steps);

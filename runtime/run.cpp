@@ -8,6 +8,7 @@
 #include "runtime/checkpoint.h"
 #include "runtime/dynamics.h"
 #include "runtime/energy.h"
+#include "runtime/input_discontinuities.h"
 #include "runtime/integrate/make_integrator.h"
 #include "runtime/outputs.h"
 #include "runtime/state_owner.h"
@@ -74,11 +75,9 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   const std::size_t outputs = OutputRowCount(model);
   series.values.clear();
   series.values.reserve(outputs * series.columns);
-  // Checkpoints fall on output rows: every `checkpoint_rows` rows.
-  const auto checkpoint_rows =
-      static_cast<std::size_t>(options.checkpoint_every > 0 && options.checkpoints != nullptr
-                                   ? std::llround(options.checkpoint_every / step)
-                                   : 0);
+  auto row_time = [&](std::size_t k) {
+    return std::min(model.start_time + static_cast<double>(k) * step, model.end_time);
+  };
 
   auto integrator = MakeIntegrator(model.integrator);
   if (!integrator) {
@@ -98,8 +97,6 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   integrator_options.initial_step = model.initial_step;
   integrator->Reset(system, data.time, y, integrator_options);
 
-  // Integrates to t and evaluates the state there; false (and the summary says why) on failure.
-  Failure failure;
   auto fail = [&](const Failure& why, double t) {
     summary.failed = true;
     summary.failure = why;
@@ -110,29 +107,23 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     why.cause = std::move(cause);
     fail(why, t);
   };
-  auto advance_to = [&](double t) {
-    const AdvanceResult result = integrator->Advance(t);
-    system.Load(integrator->time(), integrator->state());
-    if (result.status != IntegratorStatus::kOk) {
-      fail(system.failure(), result.t);
-      if (summary.failure.cause.empty()) summary.failure.cause = result.reason;
-      if (result.component >= 0) {
-        NameStateOwner(model, static_cast<std::size_t>(result.component), summary.failure);
-      }
-      return false;
-    }
-    if (!Forward(model, data, &failure)) {
-      fail(failure, data.time);
-      return false;
-    }
-    return true;
+  // The state at t on the last step (its dense output), evaluated into data: false (and the
+  // summary says why) on failure. A time on the step's end reads the evaluation already made.
+  auto evaluate_at = [&](double t) {
+    integrator->Interpolate(t, y);
+    const std::int64_t before = data.evaluations;
+    const bool ok = system.Evaluate(t, y);
+    summary.output_evaluations += data.evaluations - before;
+    if (!ok) fail(system.failure(), t);
+    return ok;
   };
 
   double initial_potential = 0.0;
-  std::size_t first_row = 1;
+  std::size_t next_row = 1;
   if (options.resume != nullptr) {
     // Continue where the checkpoint stopped: its integrator and Data, and its rows when the
-    // channels are the same (otherwise the rows start again at the checkpoint).
+    // channels are the same (otherwise the rows start again at the checkpoint's time, read from
+    // the dense output of the step the checkpoint ended).
     const Checkpoint& checkpoint = *options.resume;
     Archive archive = Archive::ForReading(checkpoint.state);
     SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
@@ -140,17 +131,19 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       fail_because("the checkpoint's state does not fit this model", data.time);
       return summary;
     }
-    first_row = static_cast<std::size_t>(checkpoint.next_row);
+    next_row = static_cast<std::size_t>(checkpoint.next_row);
     if (checkpoint.series.names == series.names) {
       series.values.assign(checkpoint.series.values.begin(), checkpoint.series.values.end());
-    } else if (Forward(model, data, &failure)) {
-      summary.notes.push_back(fmt::format(
-          "the output requests differ from the checkpoint's: the rows start at {} s", data.time));
-      AppendRow(model, data, series);
     } else {
-      fail(failure, data.time);
+      next_row = 0;
+      while (next_row < outputs && row_time(next_row) < checkpoint.time) ++next_row;
+      if (next_row < outputs) {
+        summary.notes.push_back(
+            fmt::format("the output requests differ from the checkpoint's: the rows start at {} s",
+                        row_time(next_row)));
+      }
     }
-  } else if (Forward(model, data, &failure)) {
+  } else if (Failure failure; Forward(model, data, &failure)) {
     // The first row: the initial state.
     initial_potential = PotentialEnergy(model, data);
     data.energy.initial = KineticEnergy(model, data) + initial_potential;
@@ -161,44 +154,83 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     fail(failure, data.time);
   }
 
-  // The stop times at the current time (they coincide with an output row or the start).
+  // The stop times at the start (a dump of the initial state).
   const std::vector<double>& stops = options.stop_times;
   auto same_time = [](double a, double b) {
     return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
   };
   std::size_t next_stop = 0;
-  while (next_stop < stops.size() && stops[next_stop] < data.time &&
-         !same_time(stops[next_stop], data.time)) {
+  const double t_start = integrator->time();
+  while (next_stop < stops.size() && stops[next_stop] < t_start &&
+         !same_time(stops[next_stop], t_start)) {
     ++next_stop;  // before the start: never reached
   }
-  auto at_stop = [&](double t) {
-    return next_stop < stops.size() && same_time(stops[next_stop], t);
-  };
-  auto observe_stops_here = [&] {
-    for (; at_stop(data.time); ++next_stop) {
+  if (!summary.failed && options.resume == nullptr) {
+    for (; next_stop < stops.size() && same_time(stops[next_stop], t_start); ++next_stop) {
       if (options.observer) options.observer->OnStop(model, data);
     }
-  };
-  if (!summary.failed && options.resume == nullptr) observe_stops_here();
+  }
 
-  for (std::size_t k = first_row; k < outputs && !summary.failed; ++k) {
-    const double target =
-        std::min(model.start_time + static_cast<double>(k) * step, model.end_time);
-    // Stop times before this row: the integrator lands on each of them.
-    while (next_stop < stops.size() && stops[next_stop] < target && !at_stop(target)) {
-      if (!advance_to(stops[next_stop])) break;
-      observe_stops_here();
+  // Checkpoints: at the end of the first step at or after each multiple of checkpoint_every,
+  // named by that multiple, so taking them changes no step.
+  const double every = options.checkpoints != nullptr ? options.checkpoint_every : 0.0;
+  auto checkpoint_time = [&](long m) { return model.start_time + static_cast<double>(m) * every; };
+  long next_checkpoint = 0;
+  if (every > 0) {
+    while (checkpoint_time(next_checkpoint) <= integrator->time() + 1e-12 * every)
+      ++next_checkpoint;
+  }
+
+  const std::vector<double> kinks = InputDiscontinuities(model);
+  std::size_t next_kink = 0;
+  while (!summary.failed && integrator->time() < model.end_time) {
+    const double t_now = integrator->time();
+    while (next_kink < kinks.size() && kinks[next_kink] <= t_now) ++next_kink;
+    const double t_stop =
+        next_kink < kinks.size() ? std::min(kinks[next_kink], model.end_time) : model.end_time;
+    const AdvanceResult result = integrator->Step(t_stop);
+    if (result.status != IntegratorStatus::kOk) {
+      system.Load(integrator->time(), integrator->state());
+      fail(system.failure(), result.t);
+      if (summary.failure.cause.empty()) summary.failure.cause = result.reason;
+      if (result.component >= 0) {
+        NameStateOwner(model, static_cast<std::size_t>(result.component), summary.failure);
+      }
+      break;
     }
-    if (summary.failed || !advance_to(target)) break;
-    UpdateEnergy(model, data, initial_potential, summary.energy);
-    AppendRow(model, data, series);
-    if (options.observer) options.observer->OnRow(model, data);
-    observe_stops_here();
-    if (checkpoint_rows > 0 && k % checkpoint_rows == 0 && k + 1 < outputs) {
+    const double t_end = integrator->time();
+    // Rows and stop times on the step, in time order, from its dense output.
+    while (!summary.failed) {
+      const bool row_next = next_row < outputs && row_time(next_row) <= t_end;
+      const bool stop_next = next_stop < stops.size() && stops[next_stop] <= t_end;
+      if (!row_next && !stop_next) break;
+      if (row_next && (!stop_next || row_time(next_row) <= stops[next_stop])) {
+        if (!evaluate_at(row_time(next_row))) break;
+        UpdateEnergy(model, data, initial_potential, summary.energy);
+        AppendRow(model, data, series);
+        if (options.observer) options.observer->OnRow(model, data);
+        ++next_row;
+        if (options.progress) {
+          options.progress(static_cast<double>(next_row - 1) / static_cast<double>(outputs - 1),
+                           options.progress_context);
+        }
+        // A stop at the row's time sees the same state.
+        for (; next_stop < stops.size() && same_time(stops[next_stop], data.time); ++next_stop) {
+          if (options.observer) options.observer->OnStop(model, data);
+        }
+      } else {
+        if (!evaluate_at(stops[next_stop])) break;
+        if (options.observer) options.observer->OnStop(model, data);
+        ++next_stop;
+      }
+    }
+    if (summary.failed) break;
+    if (every > 0 && t_end >= checkpoint_time(next_checkpoint) - 1e-12 * every &&
+        t_end < model.end_time) {
       Checkpoint checkpoint;
       checkpoint.model = FingerprintOf(model);
-      checkpoint.time = data.time;
-      checkpoint.next_row = static_cast<std::int64_t>(k + 1);
+      checkpoint.time = checkpoint_time(next_checkpoint);
+      checkpoint.next_row = static_cast<std::int64_t>(next_row);
       checkpoint.series = series;
       Archive archive = Archive::ForWriting();
       SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
@@ -206,14 +238,12 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       std::string where;
       std::string error;
       if (!options.checkpoints->Keep(checkpoint, &where, &error)) {
-        fail_because(error, data.time);
+        fail_because(error, t_end);
         break;
       }
       summary.checkpoints.push_back(where);
+      while (checkpoint_time(next_checkpoint) <= t_end + 1e-12 * every) ++next_checkpoint;
     }
-    if (options.progress)
-      options.progress(static_cast<double>(k) / static_cast<double>(outputs - 1),
-                       options.progress_context);
   }
   summary.stats = integrator->stats();
   summary.end_time = data.time;

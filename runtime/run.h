@@ -28,6 +28,9 @@ struct EnergySummary {
 struct RunSummary {
   std::string integrator;
   IntegratorStats stats;
+  // Evaluations of the dynamics for output rows and stop times that lie inside a step (a row on
+  // a step's end reads the evaluation the step made there); not in stats.evaluations.
+  long output_evaluations = 0;
   double wall_seconds = 0.0;
   bool failed = false;
   Failure failure;
@@ -37,8 +40,9 @@ struct RunSummary {
   std::vector<std::string> notes;        // what the user should know (a resume's changes)
 };
 
-// Sees the state of the run where it stops: at each output row, and at the extra stop times.
-// Both are called after Forward, so accelerations, forces and joint wrenches are current.
+// Sees the state of the run at each output row and at the extra stop times, both read from the
+// integrator's dense output. Both are called after Forward, so accelerations, forces and joint
+// wrenches are current.
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
@@ -54,7 +58,9 @@ struct RunOptions {
   void (*progress)(double fraction, void* context) = nullptr;
   void* progress_context = nullptr;
   // A checkpoint every this many seconds of simulated time (a multiple of the output step; the
-  // caller checks), handed to `checkpoints`; 0 (or no sink): none.
+  // caller checks), handed to `checkpoints`, named by that multiple (CheckpointFileName) and
+  // taken at the end of the first step that reaches it (so taking them changes no step); 0 (or
+  // no sink): none.
   double checkpoint_every = 0.0;
   CheckpointSink* checkpoints = nullptr;
   // Continue from this checkpoint (its fingerprint already checked against the Model).
@@ -62,9 +68,9 @@ struct RunOptions {
   // Sees each output row and stop time (the animation, the state dumps); may be null. A resumed
   // run shows it the rows from the checkpoint on.
   RunObserver* observer = nullptr;
-  // Increasing times inside [start, end] where the integrator lands exactly, as on output times,
-  // and the observer's OnStop sees the state (they add no output row); times outside the run are
-  // never reached.
+  // Increasing times inside [start, end] where the observer's OnStop sees the state, read from
+  // the dense output as the rows are (they add no output row); times outside the run are never
+  // reached.
   std::vector<double> stop_times;
 };
 

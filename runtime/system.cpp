@@ -48,7 +48,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model)
     }
   }
   // Workspace for impulses, sized once.
+  evaluated_y_.assign(StateSize(model), 0.0);
   saved_v_.assign(static_cast<std::size_t>(model.nv), 0.0);
+  event_v_.assign(static_cast<std::size_t>(model.nv), 0.0);
   responses_.assign(6, std::vector<double>(static_cast<std::size_t>(model.nv), 0.0));
 }
 
@@ -56,17 +58,32 @@ std::size_t MultibodySystem::ControlledSize() const { return StateSize(model_) -
 
 std::size_t MultibodySystem::size() const { return StateSize(model_); }
 
-void MultibodySystem::Load(double t, std::span<const double> y) { LoadState(data_, t, y); }
+void MultibodySystem::Load(double t, std::span<const double> y) {
+  evaluated_ = false;
+  LoadState(data_, t, y);
+}
 
-void MultibodySystem::Store(std::span<double> y) const { StoreState(data_, y); }
-
-bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<double> dy) {
+bool MultibodySystem::Evaluate(double t, std::span<const double> y) {
+  if (evaluated_ && t == evaluated_t_ &&
+      std::equal(y.begin(), y.end(), evaluated_y_.begin(), evaluated_y_.end())) {
+    return true;
+  }
   Load(t, y);
   failure_ = Failure{};
   if (!Forward(model_, data_, &failure_)) {
     failure_.time = t;
     return false;
   }
+  evaluated_ = true;
+  evaluated_t_ = t;
+  std::copy(y.begin(), y.end(), evaluated_y_.begin());
+  return true;
+}
+
+void MultibodySystem::Store(std::span<double> y) const { StoreState(data_, y); }
+
+bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<double> dy) {
+  if (!Evaluate(t, y)) return false;
   if (data_.airbags.failed_bag >= 0) {
     const auto b = static_cast<std::size_t>(data_.airbags.failed_bag);
     failure_.time = t;
@@ -117,11 +134,6 @@ std::vector<std::size_t> MultibodySystem::VectorGroups() const {
   return groups;
 }
 
-void MultibodySystem::Project(double t, std::span<double> y) {
-  ProjectState(t, y);
-  CommitStep(t, y);
-}
-
 void MultibodySystem::ProjectState(double t, std::span<double> y) {
   // Unit quaternions: the integrators move them off the unit sphere by the local error.
   for (std::size_t s = 0; s < model_.nsegment(); ++s) {
@@ -138,11 +150,14 @@ void MultibodySystem::ProjectState(double t, std::span<double> y) {
     }
   }
   // Loop constraints: back onto the constraint manifold, so loops stay closed to rounding.
-  if (model_.nconstraint() > 0) ProjectConstraints(model_, data_, t, y, &failure_);
+  if (model_.nconstraint() > 0) {
+    Invalidate();
+    ProjectConstraints(model_, data_, t, y, &failure_);
+  }
 }
 
 void MultibodySystem::CommitStep(double t, std::span<const double> y) {
-  Load(t, y);
+  Load(t, y);  // (forgets the last evaluation: the histories change)
   CommitContactHistory(model_, data_);
   // Belts: the webbing distribution and loading histories of the accepted step.
   CommitBelts(model_, data_);
@@ -184,9 +199,7 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
 }
 
 void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {
-  Load(t, y);
-  Failure ignored;
-  Forward(model_, data_, &ignored);
+  Evaluate(t, y);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     if (events_[k].kind == EventKind::kContactImpulse) {
       g[k] = data_.contacts.gap[events_[k].segment];  // > 0 while the surfaces are apart
@@ -284,25 +297,31 @@ void MultibodySystem::ApplyJointImpulse(std::size_t s, const SmallMatrix& direct
   }
 }
 
-void MultibodySystem::HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
+OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction, double t,
+                                                    std::span<double> y) {
+  Invalidate();
   if (events_[k].kind == EventKind::kAirbagFull) {
     data_.airbags.full[events_[k].segment] = direction > 0 ? 1 : 0;
-    return;
+    return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kAirbagInflow) {
     // Just past the event's time (which it may have been located a hair before).
     data_.airbags.inflow_phase[events_[k].segment] =
         AirbagInflowPhase(model_, events_[k].segment, std::max(t, events_[k].time));
-    return;
+    return EventEffect::kModeChanged;
   }
   Load(t, y);
   // The kinetic energy the impulse adds (or, mostly, takes), for the energy balance.
   ComputeKinematics(model_, data_);
   const double before = KineticEnergy(model_, data_);
+  std::copy(data_.v.begin(), data_.v.end(), event_v_.begin());
   ApplyEvent(k, direction);
   ComputeKinematics(model_, data_);
   data_.energy.impulses += KineticEnergy(model_, data_) - before;
   Store(y);
+  // Impulses change velocities only.
+  return std::equal(data_.v.begin(), data_.v.end(), event_v_.begin()) ? EventEffect::kModeChanged
+                                                                      : EventEffect::kStateChanged;
 }
 
 void MultibodySystem::ApplyEvent(std::size_t k, int direction) {

@@ -20,20 +20,22 @@ class MultibodySystem : public OdeSystem {
   std::size_t ControlledSize() const override;
   bool Derivative(double t, std::span<const double> y, std::span<double> dy) override;
   std::vector<std::size_t> VectorGroups() const override;
-  // Project = ProjectState, then CommitStep. The two halves are public for a driver that
-  // projects inside its step (before its error test: CVODE's projection, tests/bench) and so
-  // must commit the histories separately, after the step is accepted.
-  void Project(double t, std::span<double> y) override;
   // Unit quaternions and loop constraints: y moved back onto its manifold (by the drift only).
+  void Project(double t, std::span<double> y) override { ProjectState(t, y); }
   void ProjectState(double t, std::span<double> y);
   // The load histories of an accepted step at (t, y): contacts' largest deflections and impulse
   // engagement, belts' webbing distribution and loading histories.
-  void CommitStep(double t, std::span<const double> y);
+  void CommitStep(double t, std::span<const double> y) override;
   std::string FailureReason() const override;
 
   std::size_t EventCount() const override { return events_.size(); }
   void Events(double t, std::span<const double> y, std::span<double> g) override;
-  void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
+  EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
+
+  // Loads (t, y) into data and runs Forward there, unless the last Forward was at exactly this
+  // (t, y) with nothing changed since: then data already holds its results. An output row on a
+  // step end reads the evaluation the step made there. False (failure() says why) on failure.
+  bool Evaluate(double t, std::span<const double> y);
 
   // Copies a state vector into data (q, v, w, the work integrals, time) and back.
   void Load(double t, std::span<const double> y);
@@ -68,11 +70,19 @@ class MultibodySystem : public OdeSystem {
   double JointTorqueMagnitude(std::size_t segment) const;
   std::uint8_t LockableAxes(std::size_t segment) const;
 
+  // Forgets the last evaluation (data was changed some other way).
+  void Invalidate() { evaluated_ = false; }
+
   const Model& model_;
   Data& data_;
   Failure failure_;
+  // The (t, y) of the last successful Forward, while data still holds its results.
+  bool evaluated_ = false;
+  double evaluated_t_ = 0.0;
+  std::vector<double> evaluated_y_;
   std::vector<Event> events_;
   std::vector<double> saved_v_;                 // scratch for UnitResponse
+  std::vector<double> event_v_;                 // velocities before an event's impulse
   std::vector<std::vector<double>> responses_;  // up to six unit responses, nv each
 };
 

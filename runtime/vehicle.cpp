@@ -136,9 +136,9 @@ BodyAcceleration BodyAccelerationAt(const VehicleMotion& m, double local, double
   return out;
 }
 
-// Times (from the motion's start) where the accelerations have kinks or jumps; the path is
-// tabulated on each of them so that every fourth-order step sees smooth accelerations.
-std::vector<double> Breakpoints(const VehicleMotion& m) {
+}  // namespace
+
+std::vector<double> MotionBreakpoints(const VehicleMotion& m) {
   std::vector<double> times = {0.0};
   switch (m.kind) {
     case VehicleMotion::Kind::kHalfSine:
@@ -162,6 +162,8 @@ std::vector<double> Breakpoints(const VehicleMotion& m) {
               times.end());
   return times;
 }
+
+namespace {
 
 // d/dt of a path sample's state (rotation, angular velocity, displacement, velocity) in the
 // axes of the vehicle at t = 0: q' = q (0, w)/2, w' = alpha, d' = u, u' = R(q) a.
@@ -229,7 +231,7 @@ std::vector<VehiclePathSample> TabulateVehiclePath(const VehicleMotion& motion,
   std::vector<VehiclePathSample> path = {x};
   // Before the motion starts the vehicle turns at its initial rate: one stretch from t = 0.
   std::vector<double> times = {0.0};
-  for (double b : Breakpoints(motion)) times.push_back(b + motion.start);
+  for (double b : MotionBreakpoints(motion)) times.push_back(b + motion.start);
   std::sort(times.begin(), times.end());
   for (std::size_t k = 0; k + 1 < times.size(); ++k) {
     const double t0 = std::max(times[k], 0.0), t1 = times[k + 1];

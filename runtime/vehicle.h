@@ -29,6 +29,11 @@ std::vector<VehiclePathSample> TabulateVehiclePath(const VehicleMotion& motion,
                                                    const Mat3& orientation,
                                                    const Vec3& angular_velocity);
 
+// Times (from the motion's start) where the accelerations have kinks or jumps: the pulse's
+// start and corners, a table's rows. The turning path is tabulated on each of them, and the
+// integrators stop on them (runtime/input_discontinuities.h).
+std::vector<double> MotionBreakpoints(const VehicleMotion& motion);
+
 // The acceleration of a pulse alone (along its axis, before the vehicle's orientation).
 double PulseAcceleration(const VehicleMotion& motion, double t);
 

@@ -223,9 +223,9 @@ int RunCommand(const RunCommandOptions& options) {
   }
   std::cerr << fmt::format(
       "sled: {} rows to `{}` in {:.3f} s ({} steps, {} rejected, {} "
-      "evaluations)\n",
+      "evaluations, {} more for output rows)\n",
       result.series.rows(), directory, summary.wall_seconds, summary.stats.steps,
-      summary.stats.rejected, summary.stats.evaluations);
+      summary.stats.rejected, summary.stats.evaluations, summary.output_evaluations);
   if (!summary.checkpoints.empty()) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",

@@ -52,6 +52,20 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(f0_);
   archive.Field(h_);
   archive.Field(restart_pending_);
+  archive.Field(keep_step_);
+  archive.Field(commit_pending_);
+  archive.Field(event_pending_);
+  archive.Field(step_start_);
+  // The last step's dense output: a resumed run with other output requests reads its first rows
+  // from it.
+  archive.Field(dense_t0_);
+  archive.Field(dense_t1_);
+  archive.Field(dense_h_);
+  archive.Field(dense_y1_);
+  archive.Field(end_state_);
+  archive.Field(dense_y0_);
+  archive.Field(dense_f0_);
+  archive.Field(dense_f1_);
   archive.Field(stats_);
   controller_.Serialize(archive);
   events_.Serialize(archive);
@@ -95,6 +109,16 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
   f1_.assign(n, 0.0);
   y_event_.assign(n, 0.0);
   y_project_.assign(n, 0.0);
+  dense_y1_.assign(n, 0.0);
+  end_state_.assign(n, 0.0);
+  dense_y0_.assign(n, 0.0);
+  dense_f0_.assign(n, 0.0);
+  dense_f1_.assign(n, 0.0);
+  dense_t0_ = dense_t1_ = step_start_ = t0;
+  dense_h_ = 0.0;
+  keep_step_ = false;
+  commit_pending_ = false;
+  event_pending_ = false;
   controller_.Configure(ErrorPower());
   events_.Reset(system);
   ResizeWorkspace(n);
@@ -102,18 +126,49 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
 }
 
 std::span<double> AdaptiveIntegrator::mutable_state() {
+  FinishPending();
   restart_pending_ = true;
+  keep_step_ = false;
   return y_;
 }
 
-AdvanceResult AdaptiveIntegrator::Advance(double t_end) { return Run(t_end, 0.0); }
+void AdaptiveIntegrator::FinishPending() {
+  if (event_pending_) {
+    event_pending_ = false;
+    const std::span<const int> crossings = events_.crossings();
+    bool state_changed = false;
+    for (std::size_t k = 0; k < crossings.size(); ++k) {
+      if (crossings[k] == 0) continue;
+      ++stats_.events;
+      state_changed =
+          system_->HandleEvent(k, crossings[k], t_, y_) == OdeSystem::EventEffect::kStateChanged ||
+          state_changed;
+    }
+    system_->Project(t_, y_);
+    restart_pending_ = true;  // the next step restarts f0, the history and the events
+    keep_step_ = !state_changed;
+  }
+  if (commit_pending_) {
+    commit_pending_ = false;
+    system_->CommitStep(t_, y_);
+  }
+}
+
+AdvanceResult AdaptiveIntegrator::Step(double t_stop) { return StepOnce(t_stop, 0.0); }
 
 AdvanceResult AdaptiveIntegrator::AdvanceFixed(double t_end, long steps) {
   if (steps <= 0) {
     throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
                                 ": AdvanceFixed needs a positive number of steps");
   }
-  return Run(t_end, (t_end - t_) / static_cast<double>(steps));
+  const double fixed = (t_end - t_) / static_cast<double>(steps);
+  AdvanceResult result;
+  result.t = t_;
+  while (t_ < t_end) {
+    result = StepOnce(t_end, fixed);
+    if (result.status != IntegratorStatus::kOk) return result;
+  }
+  return result;
 }
 
 bool AdaptiveIntegrator::Evaluate(double t, std::span<const double> y, std::span<double> dy) {
@@ -122,8 +177,24 @@ bool AdaptiveIntegrator::Evaluate(double t, std::span<const double> y, std::span
 }
 
 void AdaptiveIntegrator::Interpolate(double t, std::span<double> y) const {
-  const double theta = step_ != 0.0 ? (t - t_) / step_ : 0.0;
-  HermiteInterpolate(theta, step_, y_, f0_, y1_, f1_, y);
+  if (t >= dense_t1_ || dense_h_ == 0.0) {
+    // The end itself: the stored state, bit for bit (a row there reads the evaluation the step
+    // already made); before the first step, the state.
+    const std::vector<double>& end = dense_h_ == 0.0 ? y_ : end_state_;
+    std::copy(end.begin(), end.end(), y.begin());
+    return;
+  }
+  DenseOutput(std::max(0.0, (t - dense_t0_) / dense_h_), y);
+}
+
+void AdaptiveIntegrator::PrepareDenseOutput() {
+  std::copy(y_.begin(), y_.end(), dense_y0_.begin());
+  std::copy(f0_.begin(), f0_.end(), dense_f0_.begin());
+  std::copy(f1_.begin(), f1_.end(), dense_f1_.begin());
+}
+
+void AdaptiveIntegrator::DenseOutput(double theta, std::span<double> y) const {
+  HermiteInterpolate(theta, dense_h_, dense_y0_, dense_f0_, dense_y1_, dense_f1_, y);
 }
 
 double AdaptiveIntegrator::MaxStep() const {
@@ -205,10 +276,11 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   if (events_.active()) {
     events_.Start(t_, y_, f0_, kLookAheadTolerances * EventTolerance(), y_event_);
   }
-  if (!fixed) {
+  if (!fixed && !(keep_step_ && h_ > 0.0)) {  // (after an event that changed no state)
     h_ = ClampStep(options_.initial_step > 0.0 ? options_.initial_step : InitialStep());
   }
   restart_pending_ = false;
+  keep_step_ = false;
   return true;
 }
 
@@ -242,28 +314,25 @@ AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) 
   return result;
 }
 
-AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
+AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
   if (system_ == nullptr) {
     throw std::logic_error("sled::runtime integrator " + std::string(name()) +
-                           ": Advance before Reset");
+                           ": Step before Reset");
   }
-  if (t_end < t_) {
-    throw std::invalid_argument("sled::runtime integrator " + std::string(name()) +
-                                ": Advance to " + std::to_string(t_end) +
-                                ", before the current time " + std::to_string(t_));
-  }
+  FinishPending();
   const bool fixed = fixed_step > 0.0;
   AdvanceResult result;
   result.t = t_;
+  if (!(t_ < t_stop)) return result;
 
-  while (t_ < t_end) {
+  for (;;) {
     if (restart_pending_ && !Restart(fixed, &result)) return result;
 
     const double natural = fixed ? fixed_step : std::min(h_, MaxStep());
     double h = natural;
     bool last = false;
-    if (t_ + kLandingStretch * h >= t_end) {
-      h = t_end - t_;
+    if (t_ + kLandingStretch * h >= t_stop) {
+      h = t_stop - t_;
       last = true;
     }
     step_ = h;
@@ -293,28 +362,35 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
       continue;
     }
 
-    // Accepted.
-    const double t1 = last ? t_end : t_ + h;
+    // Accepted: the dense output of the step, then events, projection and the next step size.
+    const double t1 = last ? t_stop : t_ + h;
     ++stats_.steps;
     stats_.max_local_error = std::max(stats_.max_local_error, error);
     stats_.accumulated_error +=
         error * ToleranceScale(std::span<const double>(y1_).first(controlled_),
                                options_.relative_tolerance, options_.absolute_tolerance);
+    std::copy(y1_.begin(), y1_.end(), dense_y1_.begin());
+    std::copy(y1_.begin(), y1_.end(), end_state_.begin());
+    dense_t0_ = t_;
+    dense_t1_ = t1;
+    dense_h_ = h;
+    PrepareDenseOutput();
+    step_start_ = t_;
+    commit_pending_ = true;
 
     if (events_.active() && events_.Check(t1, y1_)) {
+      // The step ends at the event, with the state before it; the event's change waits for
+      // the next step, so whatever the caller evaluates on this step sees the system as the
+      // step did.
       const double t_event = events_.Locate(*this, t_, t1, EventTolerance(), y_event_);
       StepAccepted();
       t_ = t_event;
       std::copy(y_event_.begin(), y_event_.end(), y_.begin());
-      const std::span<const int> crossings = events_.crossings();
-      for (std::size_t k = 0; k < crossings.size(); ++k) {
-        if (crossings[k] == 0) continue;
-        ++stats_.events;
-        system_->HandleEvent(k, crossings[k], t_, y_);
-      }
-      system_->Project(t_, y_);
-      restart_pending_ = true;  // the next pass restarts f0, the history and the first step
-      continue;
+      dense_t1_ = t_event;
+      std::copy(y_event_.begin(), y_event_.end(), end_state_.begin());
+      event_pending_ = true;
+      result.t = t_;
+      return result;
     }
 
     // Project, and re-evaluate the end derivative only if the projection moved the state by
@@ -331,6 +407,7 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
     if (!(moved <= kProjectionReevaluation) || (moved > 0.0 && !ToleratesProjectedStart())) {
       if (!Evaluate(t1, y1_, f1_) || !AllFinite(f1_)) {
         ++stats_.rejected;
+        commit_pending_ = false;
         return Fail(Failure::kEvaluation, h, error);
       }
     }
@@ -342,14 +419,13 @@ AdvanceResult AdaptiveIntegrator::Run(double t_end, double fixed_step) {
 
     if (!fixed) {
       double next = controller_.Accepted(h, error);
-      // A step shortened to land on t_end says nothing against the step it replaced.
+      // A step shortened to land on t_stop says nothing against the step it replaced.
       if (last && h < natural && next >= h) next = std::max(next, natural);
       h_ = ClampStep(AdjustStep(next, h));
     }
+    result.t = t_;
+    return result;
   }
-  result.status = IntegratorStatus::kOk;
-  result.t = t_;
-  return result;
 }
 
 }  // namespace sled::runtime

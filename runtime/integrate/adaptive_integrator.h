@@ -1,7 +1,14 @@
-// The step loop every method shares: landing exactly on the target time, step-size control,
-// rejection, the minimum and maximum step, non-finite and failed evaluations, projection, event
-// location and the statistics. A method supplies one step attempt with its local error estimate
-// (and, optionally, a dense output); everything else is here, once.
+// The step loop every method shares: step-size control, rejection, the minimum and maximum step,
+// landing on a stop, non-finite and failed evaluations, projection, event location, the dense
+// output's bookkeeping and the statistics. A method supplies one step attempt with its local
+// error estimate (TryStep) and, optionally, its own continuous extension (PrepareDenseOutput and
+// DenseOutput; the default is a cubic Hermite interpolant); everything else is here, once.
+//
+// To add a method: derive from AdaptiveIntegrator, implement name, order, ErrorPower,
+// ResizeWorkspace and TryStep (fill y1_ from y_, f0_ and the step, and the weighted error), and
+// if the method has a better interpolant than the cubic Hermite one, PrepareDenseOutput (called
+// once per accepted step, before y_ and f0_ move on: store what DenseOutput needs) and
+// DenseOutput. The event locator and the output rows both read DenseOutput.
 #pragma once
 
 #include <cstddef>
@@ -19,7 +26,7 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
  public:
   void Reset(OdeSystem& system, double t0, std::span<const double> y0,
              const IntegratorOptions& options) final;
-  AdvanceResult Advance(double t_end) final;
+  AdvanceResult Step(double t_stop) final;
 
   // Takes `steps` equal steps to t_end with no error control (for convergence studies and
   // tests): the local error estimates still go into the statistics, but never reject a step.
@@ -27,6 +34,10 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   AdvanceResult AdvanceFixed(double t_end, long steps);
 
   double time() const final { return t_; }
+  double step_start() const final { return step_start_; }
+  // The dense output of the step [step_start(), time()] (and, while a step is being checked for
+  // events, of the step attempted).
+  void Interpolate(double t, std::span<double> y) const final;
   std::span<const double> state() const final { return y_; }
   std::span<double> mutable_state() final;
   const IntegratorStats& stats() const final { return stats_; }
@@ -56,7 +67,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // then moved by less than kProjectionReevaluation of the tolerance. A method whose stages or
   // difference Jacobian rely on f0_ being exactly f(t_, y_) says false.
   virtual bool ToleratesProjectedStart() const { return true; }
-  // What the method itself carries between steps (decay rates, a Jacobian), for Serialize.
+  // What the method itself carries between steps (decay rates, a Jacobian, its dense output's
+  // data), for Serialize.
   virtual void SerializeHistory(Archive& archive) { (void)archive; }
   // Told after each accepted or rejected attempt.
   virtual void StepAccepted() {}
@@ -67,9 +79,16 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
     (void)current;
     return proposed;
   }
-  // y(t) on the step just attempted, [t_, t_ + step_]. Default: cubic Hermite from
-  // (y_, f0_, y1_, f1_).
-  void Interpolate(double t, std::span<double> y) const override;
+  // After a step passed the error test, before y_ and f0_ move on: stores what DenseOutput
+  // needs for the step from (t_, y_) to (t_ + step_, y1_). Default: y_, f0_ and f1_ for the
+  // cubic Hermite interpolant (y1_ is kept by the loop).
+  virtual void PrepareDenseOutput();
+  // y at the fraction theta (0 <= theta <= 1) of the step PrepareDenseOutput stored, whose end
+  // state is dense_end(). Default: cubic Hermite, third order.
+  virtual void DenseOutput(double theta, std::span<double> y) const;
+  // The stored step's size and its end state at dense_step() (before projection).
+  double dense_step() const { return dense_h_; }
+  std::span<const double> dense_end() const { return dense_y1_; }
 
   // The weighted RMS norm (error_norm.h) of a local error estimate for the step from y_ to
   // y1_, over the components the system's error control measures (ControlledSize).
@@ -94,7 +113,11 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
  private:
   enum class Failure { kNone, kEvaluation, kNotFinite, kErrorTest };
 
-  AdvanceResult Run(double t_end, double fixed_step);
+  // One accepted step towards t_stop (fixed_step > 0: of that size, without error control).
+  AdvanceResult StepOnce(double t_stop, double fixed_step);
+  // What the last step left for the next one to do first: the event it ended at (the system's
+  // HandleEvent, the projection and a restart), then the system's CommitStep.
+  void FinishPending();
   // Evaluates f0_ at the current state, restarts history and events, and (adaptive runs) picks
   // a first step. Returns false with `result` filled when the state cannot be started from.
   bool Restart(bool fixed, AdvanceResult* result);
@@ -114,6 +137,20 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   double h_ = 0.0;              // next step to try
   std::size_t controlled_ = 0;  // system().ControlledSize()
   bool restart_pending_ = true;
+  // After an event that only changed the system's equations: the restart keeps the step size.
+  bool keep_step_ = false;
+  bool commit_pending_ = false;  // the last step's CommitStep is still to be made
+  bool event_pending_ = false;   // the last step ended at an event not yet handled
+  double step_start_ = 0.0;      // start of the last accepted step
+  // The dense output's step: from dense_t0_ over dense_h_ (its end state before projection
+  // dense_y1_), read up to dense_t1_ (the step's end, or the event that cut it short), where the
+  // state is end_state_ (bit for bit what the step ended with); and the Hermite default's data.
+  double dense_t0_ = 0.0;
+  double dense_t1_ = 0.0;
+  double dense_h_ = 0.0;
+  std::vector<double> dense_y1_;
+  std::vector<double> end_state_;
+  std::vector<double> dense_y0_, dense_f0_, dense_f1_;
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state
   LargestComponent largest_;       // of the error estimates of the attempt under way

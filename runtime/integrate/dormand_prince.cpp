@@ -1,5 +1,6 @@
 #include "runtime/integrate/dormand_prince.h"
 
+#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
 
 namespace sled::runtime {
@@ -29,7 +30,9 @@ constexpr double kD1 = -12715105075.0 / 11282082432.0, kD3 = 87487479700.0 / 327
 }  // namespace
 
 void DormandPrince::ResizeWorkspace(std::size_t size) {
-  for (auto* v : {&k2_, &k3_, &k4_, &k5_, &k6_, &stage_, &error_}) v->assign(size, 0.0);
+  for (auto* v : {&k2_, &k3_, &k4_, &k5_, &k6_, &stage_, &error_, &r1_, &r2_, &r3_, &r4_, &r5_}) {
+    v->assign(size, 0.0);
+  }
 }
 
 bool DormandPrince::TryStep(double h, double* error) {
@@ -66,19 +69,31 @@ bool DormandPrince::TryStep(double h, double* error) {
   return true;
 }
 
-void DormandPrince::Interpolate(double t, std::span<double> y) const {
-  // dopri5.f's form: y0 + s (r2 + (1-s) (r3 + s (r4 + (1-s) r5))), with the r's built on the fly
-  // (event location is rare, so there is no need to store them at every step).
+void DormandPrince::PrepareDenseOutput() {
+  // dopri5.f's CONTD5 form, stored once per accepted step: the rows between step ends and the
+  // event location read it.
   const double h = step_;
-  const double s = h != 0.0 ? (t - t_) / h : 0.0;
-  const double s1 = 1.0 - s;
-  for (std::size_t i = 0; i < y.size(); ++i) {
+  for (std::size_t i = 0; i < y_.size(); ++i) {
     const double r2 = y1_[i] - y_[i];
     const double r3 = h * f0_[i] - r2;
-    const double r4 = r2 - h * f1_[i] - r3;
-    const double r5 = h * (kD1 * f0_[i] + kD3 * k3_[i] + kD4 * k4_[i] + kD5 * k5_[i] +
-                           kD6 * k6_[i] + kD7 * f1_[i]);
-    y[i] = y_[i] + s * (r2 + s1 * (r3 + s * (r4 + s1 * r5)));
+    r1_[i] = y_[i];
+    r2_[i] = r2;
+    r3_[i] = r3;
+    r4_[i] = r2 - h * f1_[i] - r3;
+    r5_[i] = h * (kD1 * f0_[i] + kD3 * k3_[i] + kD4 * k4_[i] + kD5 * k5_[i] + kD6 * k6_[i] +
+                  kD7 * f1_[i]);
+  }
+}
+
+void DormandPrince::SerializeHistory(Archive& archive) {
+  for (auto* r : {&r1_, &r2_, &r3_, &r4_, &r5_}) archive.Field(*r);
+}
+
+void DormandPrince::DenseOutput(double theta, std::span<double> y) const {
+  const double s = theta;
+  const double s1 = 1.0 - s;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    y[i] = r1_[i] + s * (r2_[i] + s1 * (r3_[i] + s * (r4_[i] + s1 * r5_[i])));
   }
 }
 

@@ -23,13 +23,18 @@ class DormandPrince final : public AdaptiveIntegrator {
   void ResizeWorkspace(std::size_t size) override;
   bool TryStep(double h, double* error) override;
   bool HasEndDerivative() const override { return true; }  // stage 7 is f(t + h, y1)
-  void Interpolate(double t, std::span<double> y) const override;
+  void PrepareDenseOutput() override;
+  void SerializeHistory(Archive& archive) override;
+  void DenseOutput(double theta, std::span<double> y) const override;
 
  private:
   // Stages 2..6; stage 1 is f0_ and stage 7 is f1_.
   std::vector<double> k2_, k3_, k4_, k5_, k6_;
   std::vector<double> stage_;  // the argument of the next stage evaluation
   std::vector<double> error_;  // the embedded error estimate
+  // The continuous extension of the last accepted step, y0 + s (r2 + (1-s) (r3 + s (r4 + (1-s)
+  // r5))): r1 = y0, then r2 .. r5.
+  std::vector<double> r1_, r2_, r3_, r4_, r5_;
 };
 
 }  // namespace sled::runtime

@@ -73,7 +73,12 @@ void ExponentialIntegrator::ResizeWorkspace(std::size_t size) {
   lambda_step_.assign(groups + 1, 0.0);
   phi_half_.assign(groups + 1, PhiValues{});
   phi_.assign(groups + 1, PhiValues{});
-  for (auto* v : {&a_, &fa_, &na_, &b_, &fb_, &nb_, &error_}) v->assign(size, 0.0);
+  for (auto* v : {&a_, &fa_, &na_, &b_, &fb_, &nb_, &error_, &dense_start_, &dense_n0_, &dense_na_,
+                  &dense_nb_}) {
+    v->assign(size, 0.0);
+  }
+  dense_lambda_.assign(groups + 1, 0.0);
+  dense_phi_.assign(groups + 1, PhiValues{});
   rates_known_ = false;
   step_rates_valid_ = false;
 }
@@ -204,6 +209,31 @@ void ExponentialIntegrator::SerializeHistory(Archive& archive) {
   archive.Field(phi_);
   archive.Field(rates_known_);
   archive.Field(step_rates_valid_);
+  for (auto* v : {&dense_start_, &dense_n0_, &dense_na_, &dense_nb_, &dense_lambda_}) {
+    archive.Field(*v);
+  }
+}
+
+void ExponentialIntegrator::PrepareDenseOutput() {
+  std::copy(y_.begin(), y_.end(), dense_start_.begin());
+  std::copy(f0_.begin(), f0_.end(), dense_n0_.begin());
+  std::copy(na_.begin(), na_.end(), dense_na_.begin());
+  std::copy(nb_.begin(), nb_.end(), dense_nb_.begin());
+  std::copy(lambda_step_.begin(), lambda_step_.end(), dense_lambda_.begin());
+}
+
+void ExponentialIntegrator::DenseOutput(double theta, std::span<double> y) const {
+  const double h = dense_step();
+  for (std::size_t g = 0; g < dense_phi_.size(); ++g) {
+    dense_phi_[g] = ComputePhi(theta * h * dense_lambda_[g]);
+  }
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const PhiValues& p = dense_phi_[group_of_[i]];
+    const double n0 = dense_n0_[i], na = dense_na_[i], nb = dense_nb_[i];
+    y[i] = dense_start_[i] + theta * h *
+                                 (p.phi1 * n0 + theta * p.phi2 * (-3.0 * n0 + 4.0 * na - nb) +
+                                  4.0 * theta * theta * p.phi3 * (n0 - 2.0 * na + nb));
+  }
 }
 
 void ExponentialIntegrator::StepAccepted() {

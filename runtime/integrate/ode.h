@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sled::runtime {
@@ -45,6 +46,12 @@ class OdeSystem {
   // more than the tolerance; it exists so drift does not accumulate.
   virtual void Project(double t, std::span<double> y) { (void)t, (void)y; }
 
+  // What the system carries from one accepted step to the next outside the state (a history
+  // that only changes between steps). The integrator calls it with the step's end state when
+  // the next step begins (after the caller has read the step's dense output), and after an
+  // event with the state the event left.
+  virtual void CommitStep(double t, std::span<const double> y) { (void)t, (void)y; }
+
   // Events: the integrator locates each sign change of g_k within a step (to `event_tolerance`
   // in time), stops there, and calls HandleEvent, which may change y (an impulse) and the
   // system itself (a joint locks). After an event the integrator restarts its history.
@@ -52,9 +59,14 @@ class OdeSystem {
   virtual void Events(double t, std::span<const double> y, std::span<double> g) {
     (void)t, (void)y, (void)g;
   }
-  // `direction` is +1 when g_k went from negative to positive, -1 the other way.
-  virtual void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
+  // `direction` is +1 when g_k went from negative to positive, -1 the other way. Returns
+  // kStateChanged when it changed y (an impulse): the integrator then starts afresh with its
+  // starting-step heuristic; kModeChanged when only the system's equations changed (a joint locks
+  // its axes' equations, a loading history turns): the next step keeps the step size.
+  enum class EventEffect { kModeChanged, kStateChanged };
+  virtual EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) {
     (void)k, (void)direction, (void)t, (void)y;
+    return EventEffect::kModeChanged;
   }
 
   // Why Derivative last returned false, for the failure report.
@@ -104,20 +116,53 @@ struct AdvanceResult {
   std::ptrdiff_t component = -1;
 };
 
-// One interface for every method. Advance integrates from the current (t, y) to t_end, taking
-// as many internal steps as the tolerances need, and leaves the state at t_end (or where it
-// failed). Calling Advance repeatedly with increasing t_end continues the same solution, so
-// output at fixed times is Advance(t1), Advance(t2), ...
+// One interface for every method.
+//
+// Stepping. Step(t_stop) takes one accepted step from time() towards t_stop and never past it:
+// the step ends at t_stop exactly when it reaches it (stretched by up to 1% rather than leave a
+// sliver), or earlier where the error control or an event (located inside the step) ends it.
+// Callers pass as t_stop the next time the solution must not be stepped over: the end of the run
+// and the input's discontinuities (a pulse's kinks, a table's breakpoints). Output times are not
+// stops: they are read from the dense output.
+//
+// Dense output. After a step, Interpolate(t, y) gives the method's continuous extension of the
+// step just taken, for step_start() <= t <= time() (dopri5: Shampine's fourth-order
+// interpolant; the exponential method: its own exponential model of the step; rosenbrock: cubic
+// Hermite from the end values and derivatives). At time() it returns the step's end state before
+// projection, and at a located event the state before the event's change. The system's
+// step-to-step histories (OdeSystem::CommitStep) are committed only when the next step begins,
+// so the caller evaluates anything on the step just taken with the histories that step used.
+//
+// Advance(t_end) is Step(t_end) until time() == t_end, for callers that need the state exactly
+// at given times (tests, fixed-interval drivers); it lands on t_end, which Step only does at a
+// stop.
 class Integrator {
  public:
   virtual ~Integrator() = default;
   virtual std::string_view name() const = 0;
   virtual int order() const = 0;
-  // Starts a solution at (t0, y0). Allocates all workspace here, never in Advance.
+  // Starts a solution at (t0, y0). Allocates all workspace here, never in Step or Advance.
   virtual void Reset(OdeSystem& system, double t0, std::span<const double> y0,
                      const IntegratorOptions& options) = 0;
-  virtual AdvanceResult Advance(double t_end) = 0;
+  // One accepted step towards t_stop (see above). Returns kOk with t = time() after it; a call
+  // with time() >= t_stop takes no step. On a failure the state stays at the last accepted step.
+  virtual AdvanceResult Step(double t_stop) = 0;
+  // Steps until time() == t_end exactly.
+  AdvanceResult Advance(double t_end) {
+    AdvanceResult result;
+    result.t = time();
+    while (time() < t_end) {
+      result = Step(t_end);
+      if (result.status != IntegratorStatus::kOk) return result;
+    }
+    result.t = time();
+    return result;
+  }
   virtual double time() const = 0;
+  // Where the last step started (time() before the first step).
+  virtual double step_start() const = 0;
+  // The continuous extension of the last step at step_start() <= t <= time(). Must not allocate.
+  virtual void Interpolate(double t, std::span<double> y) const = 0;
   virtual std::span<const double> state() const = 0;
   // Lets the caller change the state between calls (an external event); restarts history.
   virtual std::span<double> mutable_state() = 0;

@@ -201,6 +201,7 @@ Outcome RunCvode(const Model& model) {
           system.HandleEvent(k, roots[k], t, state);
         }
         system.Project(t, state);
+        system.CommitStep(t, state);
         const CvodeCounts since = CountsOf(cvode);
         counted.steps += since.steps;
         counted.evaluations += since.evaluations;

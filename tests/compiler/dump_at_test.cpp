@@ -1,5 +1,6 @@
-// `sled run --dump-at T,...` writes the complete state at each time, landing exactly on it: a
-// ball in free fall (no drag) is where the parabola puts it at times between the output rows;
+// `sled run --dump-at T,...` writes the complete state at each time, read from the dense output: a
+// ball in free fall (no drag) is where the parabola puts it at times between the output rows, and
+// the rows are those of a run without dumps;
 // the flagship's printout lists every kind of force element, and its joint torque at an output
 // time is the one timeseries.csv holds. Bad option values are usage errors (exit 2).
 #include <cmath>
@@ -69,8 +70,11 @@ TEST_F(DumpAt, TheFreeFallIsPrintedExactlyAtTimesBetweenTheRows) {
     EXPECT_NEAR(a[2], -9.81, 1e-8);
     EXPECT_THAT(dump, HasSubstr("== generalized coordinates: nq = 7, nv = 6"));
   }
-  // The rows stay where they were: a dump adds no row.
+  // The rows stay where they were: a dump adds no row and no step.
   EXPECT_EQ(testing::ReadCsv(out / "timeseries.csv").rows.size(), 6u);
+  const fs::path plain = temp() / "plain";
+  ASSERT_EQ(Sled({"run", (temp() / "fall.sled").string(), "-o", plain.string()}).exit_code, 0);
+  EXPECT_EQ(ReadText(out / "timeseries.csv"), ReadText(plain / "timeseries.csv"));
 }
 
 TEST_F(DumpAt, TheFlagshipPrintoutHoldsEveryForceElement) {

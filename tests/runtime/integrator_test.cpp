@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstddef>
@@ -160,13 +161,14 @@ class BouncingBall : public OdeSystem {
     g[0] = y[0];
     g[1] = y[1];
   }
-  void HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override {
+  EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override {
     if (k == 0 && direction < 0) {
       impacts.push_back(t);
       y[1] = -kRestitution * y[1];
-    } else if (k == 1 && direction < 0) {
-      apexes.push_back(y[0]);
+      return EventEffect::kStateChanged;
     }
+    if (k == 1 && direction < 0) apexes.push_back(y[0]);
+    return EventEffect::kModeChanged;
   }
   void Reserve() {
     impacts.reserve(64);
@@ -553,13 +555,19 @@ TEST(StiffTest, RosenbrockSolvesVanDerPolWithMu1000) {
   }
 }
 
+// An integrator for the ball dropped from 1 m at rest, at a tolerance of 1e-8.
+std::unique_ptr<Integrator> Dropped(BouncingBall& ball, const char* method) {
+  ball.Reserve();
+  auto integrator = Make(method);
+  const double y0[] = {1.0, 0.0};
+  integrator->Reset(ball, 0.0, y0, Tolerance(1e-8));
+  return integrator;
+}
+
 // (d) Event location: the bouncing ball.
 TEST_P(EveryMethod, BouncingBallFindsImpactsAndApexes) {
   BouncingBall ball;
-  ball.Reserve();
-  auto integrator = Make(GetParam());
-  const double y0[] = {1.0, 0.0};
-  integrator->Reset(ball, 0.0, y0, Tolerance(1e-8));
+  auto integrator = Dropped(ball, GetParam());
   // Output every 50 ms: events and output times interleave.
   for (int k = 1; k <= 40; ++k) {
     ASSERT_EQ(integrator->Advance(0.05 * k).status, IntegratorStatus::kOk);
@@ -579,6 +587,82 @@ TEST_P(EveryMethod, BouncingBallFindsImpactsAndApexes) {
   EXPECT_EQ(ball.impacts.size(), 3u);
   EXPECT_EQ(ball.apexes.size(), 3u);
   EXPECT_EQ(integrator->stats().events, 6);
+}
+
+// Dense output: the damped rotation read between step ends is as accurate as at them, steps
+// go past any output time (only t_stop is landed on), and the interpolant joins the step ends.
+TEST_P(EveryMethod, DenseOutputFollowsTheSolutionBetweenStepEnds) {
+  const double a = -0.1, b = 2.0;
+  LinearSystem oscillator(2, {a, -b, b, a});
+  auto exact = [&](double t) {
+    const double decay = std::exp(a * t);
+    return std::array<double, 2>{decay * std::cos(b * t), decay * std::sin(b * t)};
+  };
+  for (const double tol : {1e-4, 1e-7}) {
+    auto integrator = Make(GetParam());
+    const double y0[] = {1.0, 0.0};
+    integrator->Reset(oscillator, 0.0, y0, Tolerance(tol));
+    double worst_end = 0.0, worst_between = 0.0;
+    long steps = 0;
+    std::array<double, 2> y{};
+    while (integrator->time() < 10.0) {
+      const double before = integrator->time();
+      const std::array<double, 2> start = {integrator->state()[0], integrator->state()[1]};
+      ASSERT_EQ(integrator->Step(10.0).status, IntegratorStatus::kOk);
+      ++steps;
+      EXPECT_EQ(integrator->step_start(), before);
+      EXPECT_LE(integrator->time(), 10.0);
+      integrator->Interpolate(before, y);
+      EXPECT_EQ(y, start);  // the interpolant starts where the step did
+      for (const double f : {0.25, 0.5, 0.75}) {
+        const double t = before + f * (integrator->time() - before);
+        integrator->Interpolate(t, y);
+        worst_between = std::max(worst_between, MaxAbsDifference(y, exact(t)));
+      }
+      integrator->Interpolate(integrator->time(), y);
+      EXPECT_EQ(y[0], integrator->state()[0]);  // the end itself, bit for bit (no projection)
+      worst_end =
+          std::max(worst_end, MaxAbsDifference(integrator->state(), exact(integrator->time())));
+    }
+    EXPECT_EQ(integrator->time(), 10.0);  // the stop is landed on
+    EXPECT_EQ(steps, integrator->stats().steps);
+    // Between step ends within a few times the error at them.
+    EXPECT_LT(worst_between, 3.0 * worst_end + tol) << GetParam() << " tol " << tol;
+    EXPECT_LT(worst_between, 100.0 * tol) << GetParam() << " tol " << tol;
+  }
+}
+
+// A linear decay inside a vector group is the exponential method's own model: its dense output
+// is exact at every point of the step, however stiff (h lambda = -50), where a cubic Hermite
+// interpolant would swing to -7 of the initial value.
+TEST(ExponentialTest, DenseOutputOfALinearDecayIsExactInsideTheStep) {
+  const double k = 50.0;
+  LinearSystem decay(3, {-k, 0, 0, 0, -k, 0, 0, 0, -k}, {0});
+  ExponentialIntegrator integrator;
+  const double y0[] = {1.0, -2.0, 0.5};
+  integrator.Reset(decay, 0.0, y0, Tolerance(1e-6));
+  ASSERT_EQ(integrator.AdvanceFixed(1.0, 1).status, IntegratorStatus::kOk);
+  std::array<double, 3> y{};
+  for (const double t : {0.001, 0.01, 0.1, 0.5, 0.9}) {
+    integrator.Interpolate(t, y);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(y[i], y0[i] * std::exp(-k * t), 1e-12) << t;
+  }
+}
+
+// A step that reaches an event ends there with the state before it; the system's handler (and
+// the histories' commit) runs when the next step begins.
+TEST_P(EveryMethod, AStepEndsAtAnEventWithTheStateBeforeIt) {
+  BouncingBall ball;
+  auto integrator = Dropped(ball, GetParam());
+  while (ball.impacts.empty()) {
+    ASSERT_EQ(integrator->Step(2.0).status, IntegratorStatus::kOk);
+    if (std::abs(integrator->time() - std::sqrt(2.0 / BouncingBall::kG)) < 1e-9) {
+      EXPECT_TRUE(ball.impacts.empty());
+      EXPECT_LT(integrator->state()[1], 0.0);  // still falling: the impulse waits
+      EXPECT_NEAR(integrator->state()[0], 0.0, 1e-9);
+    }
+  }
+  EXPECT_GT(integrator->state()[1], 0.0);  // the next step began with the rebound
 }
 
 // (e) Failures are reported with their time and cause.
