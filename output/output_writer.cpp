@@ -121,8 +121,11 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
                      s.events);
   out << fmt::format("    \"decaying_steps\": {},\n", s.decaying_steps);
-  out << fmt::format("    \"max_local_error\": {},\n    \"error_estimate\": {}\n",
-                     s.max_local_error, s.accumulated_error);
+  out << fmt::format("    \"max_local_error\": {},\n", s.max_local_error);
+  // The global error estimate when the run asked for one (output/post/global_error.h).
+  out << fmt::format("    \"error_estimate\": {}\n", summary.error_estimate >= 0
+                                                         ? fmt::format("{}", summary.error_estimate)
+                                                         : std::string("null"));
   out << "  },\n";
   out << fmt::format("  \"wall_time_seconds\": {},\n", summary.wall_seconds);
   const EnergySummary& e = summary.energy;

@@ -31,6 +31,9 @@ struct RunSummary {
   // Evaluations of the dynamics for output rows and stop times that lie inside a step (a row on
   // a step's end reads the evaluation the step made there); not in stats.evaluations.
   long output_evaluations = 0;
+  // The global error estimate of the run, of the channels' ranges (output/post/
+  // global_error.h), when the caller computed one; -1 otherwise.
+  double error_estimate = -1.0;
   double wall_seconds = 0.0;
   bool failed = false;
   Failure failure;

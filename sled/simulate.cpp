@@ -7,6 +7,7 @@
 
 #include "output/checkpoint_file.h"
 #include "output/post/channel_filters.h"
+#include "output/post/global_error.h"
 #include "output/post/injury_criteria.h"
 
 namespace sled {
@@ -77,6 +78,15 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   result.criteria = runtime::post::EvaluateCriteria(model, result.series);
   result.warnings = result.summary.notes;
   for (std::string& warning : filtered.warnings) result.warnings.push_back(std::move(warning));
+  if (options.error_estimate && !result.summary.failed) {
+    const runtime::post::GlobalErrorEstimate estimate =
+        runtime::post::EstimateGlobalError(model, result.series, result.criteria);
+    if (estimate.computed) {
+      result.summary.error_estimate = estimate.overall;
+    } else {
+      result.warnings.push_back("no global error estimate: " + estimate.reason);
+    }
+  }
 
   for (RunSink* sink : sinks) {
     std::string error;

@@ -55,8 +55,8 @@ class RunSink {
 struct SimulateOptions {
   // Called after each output row with the fraction of the run done; may be empty.
   std::function<void(double fraction)> progress;
-  // Increasing times where the integrator lands exactly and the sinks' OnStop see the state
-  // (they add no output row); times outside the run are never reached.
+  // Increasing times where the sinks' OnStop see the state, read from the dense output as the
+  // rows are (they add no output row and no step); times outside the run are never reached.
   std::vector<double> stop_times;
   // A checkpoint every this many seconds of simulated time, a multiple of the output step
   // (CheckpointStepError says whether it is), into checkpoint_directory, each a file named by
@@ -66,6 +66,9 @@ struct SimulateOptions {
   // Continue from this checkpoint, read and checked against the Model by the caller
   // (output::ReadCheckpoint, runtime::CheckpointMismatch); null: start at the start time.
   const runtime::Checkpoint* resume = nullptr;
+  // Also run a companion at a tenth of the tolerances for the global error estimate
+  // (output/post/global_error.h) in summary.error_estimate; a warning says why when it cannot.
+  bool error_estimate = false;
 };
 
 // Runs the Model with a fresh Data, post-processes the rows, then calls every sink's OnEnd in

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
+#include "runtime/integrate/ode.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -14,6 +15,9 @@ namespace {
 // The shortest output step, as a fraction of the end time: a step then spans at least 1e10
 // of the time's rounding steps.
 constexpr double kTimeResolution = 1e-10;
+
+// The default absolute tolerance, as a fraction of the relative one (1e-9 at the default 1e-6).
+constexpr double kAbsoluteToleranceRatio = 1e-3;
 
 }  // namespace
 
@@ -80,8 +84,23 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
           Bind(BlockKind::kIntegrator, statement->block.get(), statement->range);
       run.relative_tolerance =
           ReadQuantity(scope, bound, BlockKind::kIntegrator, "tolerance").value_or(1e-6);
-      run.absolute_tolerance =
-          ReadQuantity(scope, bound, BlockKind::kIntegrator, "abs_tolerance").value_or(1e-9);
+      // The absolute tolerance follows the relative one unless it is given: a component near
+      // zero (a joint angle, a velocity at rest) is then held to the same thousandth of the
+      // tolerance in SI units at every tolerance, so tightening `tolerance` tightens it too.
+      run.absolute_tolerance = ReadQuantity(scope, bound, BlockKind::kIntegrator, "abs_tolerance")
+                                   .value_or(kAbsoluteToleranceRatio * run.relative_tolerance);
+      if (run.relative_tolerance < runtime::kMinRelativeTolerance) {
+        const ast::Statement* tolerance = One(bound, "tolerance");
+        Report(DiagnosticKind::kToleranceBelowRounding,
+               tolerance ? tolerance->range : statement->range,
+               fmt::format("a tolerance of {:.3g} is tighter than a double can meet: the rounding "
+                           "errors of one step are already about {:.1e} of the state",
+                           run.relative_tolerance, runtime::kMinRelativeTolerance),
+               "below what doubles can resolve",
+               fmt::format("use a tolerance of at least {:.1e}; 1e-12 is about as tight as a "
+                           "reference run needs",
+                           runtime::kMinRelativeTolerance));
+      }
       run.min_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "min_step").value_or(1e-9);
       run.max_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "max_step");
       run.initial_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "initial_step");

@@ -65,7 +65,7 @@ std::vector<CommandHelp> MakeCommands() {
        "2 a usage error, 3 a numerical failure (the outputs up to it are kept),\n"
        "129/130/143 stopped by SIGHUP/SIGINT/SIGTERM.\n",
        {"-o", "--output", "--set", "--stdlib", "--diagnostics", "--format", "--dump-at",
-        "--checkpoint-every", "--resume", "--report"},
+        "--checkpoint-every", "--resume", "--report", "--error-estimate"},
        R"(  -o, --output DIR       the output folder (default: FILE's name with `-out`)
   --format csv|iso-mme   iso-mme: also write the ISO-MME data set into DIR/iso-mme
                          (the CSV files are always written)
@@ -75,6 +75,8 @@ std::vector<CommandHelp> MakeCommands() {
                          into DIR/checkpoint_<t>s.bin
   --resume FILE          continue from a checkpoint, bit for bit as the run that wrote it
   --report               also write DIR/report.html, as `sled report DIR` does
+  --error-estimate       also run the scene at a tenth of its tolerances and write the
+                         difference as the global error estimate (summary.json)
 )",
        "  sled run examples/frontal_sled.sled -o out\n"
        "  sled run examples/frontal_sled.sled -o out --set \"speed=50 km/h\" --format iso-mme\n"

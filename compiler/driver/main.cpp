@@ -59,6 +59,7 @@ struct Options {
   double checkpoint_every = 0.0;
   std::string resume;
   bool report = false;
+  bool error_estimate = false;
   std::vector<double> tolerances;
   int jobs = 0;  // study: worker processes; 0: every core
 };
@@ -328,6 +329,8 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--report") {
       options.report = true;
+    } else if (arg == "--error-estimate") {
+      options.error_estimate = true;
     } else if (arg == "--resume") {
       if (i + 1 >= args.size())
         return UsageError(fmt::format("`{}` needs a checkpoint file", arg), options.command);
@@ -381,6 +384,7 @@ int main(int argc, char** argv) {
       run.checkpoint_every = options.checkpoint_every;
       run.resume = options.resume;
       run.report = options.report;
+      run.error_estimate = options.error_estimate;
       if (options.command == "study")
         return sled::driver::StudyCommand({run, options.tolerances, options.jobs});
       return sled::driver::RunCommand(run);

@@ -198,6 +198,7 @@ int RunCommand(const RunCommandOptions& options) {
   simulate_options.checkpoint_every = checkpoint_every;
   simulate_options.checkpoint_directory = directory;
   if (!resume.empty()) simulate_options.resume = &checkpoint;
+  simulate_options.error_estimate = options.error_estimate;
   const RunResult result = Simulate(model, simulate_options, {&folder});
   const runtime::RunSummary& summary = result.summary;
   progress.Clear();
@@ -230,6 +231,12 @@ int RunCommand(const RunCommandOptions& options) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",
                              summary.checkpoints.back());
+  }
+  if (summary.error_estimate >= 0) {
+    std::cerr << fmt::format(
+        "sled: global error estimate {:.2g} of the channels' ranges (from a run at a tenth of the "
+        "tolerances)\n",
+        summary.error_estimate);
   }
   const runtime::EnergySummary& energy = summary.energy;
   std::cerr << fmt::format(

@@ -29,6 +29,9 @@ struct RunCommandOptions {
   double checkpoint_every = 0.0;   // [s]; 0: no checkpoints
   std::string resume;              // a checkpoint file to continue from
   bool report = false;             // also write DIR/report.html (sled report)
+  // Also run a companion at a tenth of the tolerances for a global error estimate
+  // (output/post/global_error.h) in summary.json.
+  bool error_estimate = false;
 };
 
 // The items of a comma-separated option value, empty ones included ("a,,b" has three).

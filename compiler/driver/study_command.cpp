@@ -13,10 +13,12 @@
 #include "compiler/driver/process_pool.h"
 #include "compiler/driver/progress_line.h"
 #include "output/output_writer.h"
+#include "output/post/global_error.h"
 #include "output/post/injury_criteria.h"
 #include "output/post/series_error.h"
 #include "output/report/svg_plot.h"
 #include "output/run_record.h"
+#include "runtime/integrate/ode.h"
 #include "runtime/run.h"
 #include "sled/simulate.h"
 
@@ -38,7 +40,10 @@ struct Sample {
   runtime::TimeSeries series;
   std::vector<runtime::post::CriterionValue> criteria;
   runtime::post::SeriesError error;
+  double estimate = -1.0;  // the global error estimate; -1: none
 };
+
+using runtime::post::SeriesError;
 
 // The scene with another method and relative tolerance (the absolute tolerance keeps the
 // scene's ratio to it).
@@ -115,23 +120,47 @@ void Compare(const runtime::Model& model, Sample& sample, const Sample& referenc
                                               reference.series, reference.criteria);
 }
 
-// A measure for the table: `-` when the scene has nothing to measure, `<R` below the
-// reference's own uncertainty R.
-std::string Measure(double value, double floor = 0.0) {
-  if (value < 0) return "-";
-  if (value < floor) return fmt::format("<{:.1e}", floor);
+// A measure for the table: `-` when the scene has nothing to measure, `<F` below the floor F
+// (what the two references differ by: errors below it are not resolved).
+std::string Measure(double value, double floor = -1.0) {
+  if (value < 0 || std::isnan(value)) return "-";
+  if (floor > 0 && value < floor) return fmt::format("<{:.1e}", floor);
   return fmt::format("{:.2e}", value);
 }
 
-std::string Row(const runtime::Model& model, const Sample& s, double floor) {
-  return fmt::format("{:<12} {:>8.0e} {:>9.4f} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}{}",
-                     s.method, s.tolerance, s.wall_seconds, s.summary.stats.steps,
-                     s.summary.stats.rejected, s.summary.stats.evaluations,
-                     Measure(s.error.overall, floor), Measure(s.error.position, floor),
-                     Measure(s.error.peak_acceleration), Measure(s.error.criteria),
-                     s.summary.failed
-                         ? fmt::format("  failed {}", DescribeFailure(model, s.summary.failure))
-                         : "");
+std::string Row(const runtime::Model& model, const Sample& s, const SeriesError& floor) {
+  return fmt::format(
+      "{:<12} {:>8.0e} {:>9.4f} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}  {:>9}{}", s.method,
+      s.tolerance, s.wall_seconds, s.summary.stats.steps, s.summary.stats.rejected,
+      s.summary.stats.evaluations, Measure(s.error.overall, floor.overall),
+      Measure(s.error.position, floor.position),
+      Measure(s.error.peak_acceleration, floor.peak_acceleration),
+      Measure(s.error.criteria, floor.criteria), Measure(s.estimate),
+      s.summary.failed ? fmt::format("  failed {}", DescribeFailure(model, s.summary.failure))
+                       : "");
+}
+
+// The floor row under the table: what the two references differ by, column by column.
+std::string FloorRow(const SeriesError& floor) {
+  return fmt::format("{:<56}  {:>9} {:>9} {:>9} {:>9}", "floor (the references differ by)",
+                     Measure(floor.overall), Measure(floor.position),
+                     Measure(floor.peak_acceleration), Measure(floor.criteria));
+}
+
+// Each run's global error estimate (output/post/global_error.h) from the run of the same
+// method at a tenth of its tolerance, when the ladder holds one.
+void EstimateFromLadder(const runtime::Model& model, std::vector<Sample>& samples) {
+  for (Sample& s : samples) {
+    for (const Sample& tighter : samples) {
+      if (tighter.method != s.method ||
+          std::abs(tighter.tolerance * runtime::post::kCompanionRatio / s.tolerance - 1) > 1e-9) {
+        continue;
+      }
+      if (s.summary.failed || tighter.summary.failed) break;
+      s.estimate = runtime::post::ErrorFromCompanion(model, s.series, s.criteria, tighter.series,
+                                                     tighter.criteria);
+    }
+  }
 }
 
 // What the ladder says of the scene's own settings: the fastest run of any method whose error
@@ -139,7 +168,9 @@ std::string Row(const runtime::Model& model, const Sample& s, double floor) {
 // cheapest way the study found to the same accuracy. The integrator's own running sum of local
 // error estimates is not used: it is in the state's units and bounds the error loosely (1e-1
 // against a measured 2.5e-6 on the mass-ratio case).
-std::string FastestAsAccurate(const std::vector<Sample>& samples, const Sample& own, double floor) {
+std::string FastestAsAccurate(const std::vector<Sample>& samples, const Sample& own,
+                              const SeriesError& floors) {
+  const double floor = std::max(floors.overall, 0.0);
   if (own.summary.failed || !(own.error.overall >= 0)) {
     return "the scene's own settings did not finish, so there is no accuracy to match";
   }
@@ -159,7 +190,7 @@ std::string FastestAsAccurate(const std::vector<Sample>& samples, const Sample& 
   return fmt::format(
       "the same accuracy, fastest in the ladder: {} at {:.0e}, error {} in {:.4f} s (the scene's "
       "own settings: {:.4f} s)",
-      fastest->method, fastest->tolerance, Measure(fastest->error.overall, floor),
+      fastest->method, fastest->tolerance, Measure(fastest->error.overall, floors.overall),
       fastest->wall_seconds, own.wall_seconds);
 }
 
@@ -198,6 +229,15 @@ bool ParseTolerances(const std::string& text, std::vector<double>* tolerances, s
           "`--tolerances {}`: `{}` is not a relative tolerance; write numbers between 0 and 1 "
           "separated by commas (1e-3,1e-5)",
           text, item);
+      return false;
+    }
+    // The reference runs at a hundredth of the tightest tolerance; doubles must meet that.
+    if (value / 100 < runtime::kMinRelativeTolerance) {
+      *error = fmt::format(
+          "`--tolerances {}`: {} is too tight: the reference would run at {:.1e}, tighter than "
+          "doubles can meet ({:.1e}); the tightest tolerance is {:.1e}",
+          text, item, value / 100, runtime::kMinRelativeTolerance,
+          100 * runtime::kMinRelativeTolerance);
       return false;
     }
     tolerances->push_back(value);
@@ -257,6 +297,8 @@ int StudyCommand(const StudyOptions& options) {
   }
   Sample check = first[1];
   Compare(scene, check, reference);
+  // The floor under every column: what the two references differ by.
+  const SeriesError floor = check.error;
 
   // The ladder, then the scene's own settings last.
   std::vector<std::pair<std::string, double>> wanted;
@@ -272,36 +314,59 @@ int StudyCommand(const StudyOptions& options) {
   for (Sample& sample : samples) Compare(scene, sample, reference);
   Sample own = std::move(samples.back());
   samples.pop_back();
+  EstimateFromLadder(scene, samples);
 
-  std::cout << fmt::format("{:<12} {:>8} {:>9} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}\n",
+  std::cout << fmt::format("{:<12} {:>8} {:>9} {:>7} {:>6} {:>9}  {:>9} {:>9} {:>9} {:>9}  {:>9}\n",
                            "method", "tol", "time [s]", "steps", "rej", "evals", "all", "position",
-                           "peak acc", "criteria");
-  const double floor = check.error.overall;
+                           "peak acc", "criteria", "estimate");
   for (const Sample& s : samples) std::cout << Row(scene, s, floor) << '\n';
+  std::cout << FloorRow(floor) << '\n';
   std::cout << fmt::format(
       "\nerrors are relative: a channel's largest deviation from the reference over the largest "
-      "range of its kind (all channels, positions), a peak's or a criterion's relative error\n"
-      "reference: dopri5 at {:.0e} ({:.4f} s); the exponential method there differs from it by "
-      "{} (errors below that are not resolved)\n",
-      tightest, reference.wall_seconds, Measure(check.error.overall));
+      "range of its kind (all channels, positions), a peak's or a criterion's relative error; "
+      "`<F`: below the floor F, not resolved; estimate: the run's global error estimate from "
+      "the run of its method at a tenth of its tolerance\n"
+      "reference: dopri5 at {:.0e} ({:.4f} s), checked by the exponential method at {:.0e} "
+      "({:.4f} s)\n",
+      tightest, reference.wall_seconds, tightest, check.wall_seconds);
   std::cout << fmt::format(
       "the scene's own settings ({} at {:.0e}): error {} of the channels' ranges, {} in the "
       "criteria, in {:.4f} s\n",
-      own.method, own.tolerance, Measure(own.error.overall, floor), Measure(own.error.criteria),
-      own.wall_seconds);
+      own.method, own.tolerance, Measure(own.error.overall, floor.overall),
+      Measure(own.error.criteria, floor.criteria), own.wall_seconds);
   std::cout << FastestAsAccurate(samples, own, floor) << '\n';
+
+  // A reference that cannot be confirmed makes every figure above meaningless: said loudly, and
+  // the study fails (after writing its files, for a look).
+  std::string unconfirmed;
+  if (check.summary.failed) {
+    unconfirmed = fmt::format(
+        "the reference's cross-check (the exponential method at {:.0e}) failed {}, so the "
+        "reference is confirmed only up to there; the errors cannot be trusted",
+        tightest, DescribeFailure(scene, check.summary.failure));
+  } else if (!(floor.overall <= ladder.back())) {
+    unconfirmed = fmt::format(
+        "the reference has not converged: dopri5 and the exponential method at {:.0e} differ by "
+        "{:.2e} of the channels' ranges, more than the ladder's tightest tolerance {:.0e}, so the "
+        "errors of the tighter runs are not resolved: the answer is more sensitive than that "
+        "tolerance resolves (chaotic motion, or something the error control does not see); "
+        "tighten the ladder's end, or shorten the run",
+        tightest, floor.overall, ladder.back());
+  }
 
   std::error_code code;
   std::filesystem::create_directories(directory, code);
   std::ofstream csv(std::filesystem::path(directory) / "study.csv");
   csv << "method,tolerance,wall_seconds,steps,rejected,evaluations,error_all,error_position,"
-         "error_peak_acceleration,error_criteria,failed,decaying_steps\n";
+         "error_peak_acceleration,error_criteria,failed,decaying_steps,error_estimate,floor_all,"
+         "floor_position,floor_peak_acceleration,floor_criteria\n";
   for (const Sample& s : samples) {
-    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{}\n", s.method, s.tolerance,
-                       s.wall_seconds, s.summary.stats.steps, s.summary.stats.rejected,
+    csv << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.method,
+                       s.tolerance, s.wall_seconds, s.summary.stats.steps, s.summary.stats.rejected,
                        s.summary.stats.evaluations, s.error.overall, s.error.position,
                        s.error.peak_acceleration, s.error.criteria, s.summary.failed ? 1 : 0,
-                       s.summary.stats.decaying_steps);
+                       s.summary.stats.decaying_steps, s.estimate, floor.overall, floor.position,
+                       floor.peak_acceleration, floor.criteria);
   }
   std::ofstream svg(std::filesystem::path(directory) / "study.svg");
   svg << WorkPrecisionSvg(methods, samples);
@@ -310,6 +375,10 @@ int StudyCommand(const StudyOptions& options) {
     return kExitInputErrors;
   }
   std::cerr << fmt::format("sled: study.csv and study.svg in `{}`\n", directory);
+  if (!unconfirmed.empty()) {
+    std::cerr << fmt::format("sled: error: {}\n", unconfirmed);
+    return kExitNumericalFailure;
+  }
   return kExitOk;
 }
 

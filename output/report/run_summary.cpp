@@ -100,7 +100,7 @@ void ReadIntegrator(const Json& object, std::string* error, IntegratorSummary& o
   in.Number("events", out.events);
   in.Number("decaying_steps", out.decaying_steps);
   in.Number("max_local_error", out.max_local_error);
-  in.Number("error_estimate", out.error_estimate);
+  in.OptionalNumber("error_estimate", out.error_estimate);
 }
 
 EnergySummary ReadEnergy(const Json& object, std::string* error) {

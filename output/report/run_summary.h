@@ -20,7 +20,9 @@ struct IntegratorSummary {
   long long events = 0;
   long long decaying_steps = 0;  // exponential method only
   double max_local_error = 0.0;
-  double error_estimate = 0.0;
+  // The global error estimate of the channels' ranges (`sled run --error-estimate`); none when
+  // the run did not compute one. (Older summaries held a sum of local error estimates here.)
+  std::optional<double> error_estimate;
 };
 
 struct EnergySummary {

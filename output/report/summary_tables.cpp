@@ -57,8 +57,10 @@ std::string IntegratorSection(const IntegratorSummary& s) {
       {"Jacobians, factorizations", fmt::format("{}, {}", s.jacobians, s.factorizations)},
       {"events", fmt::format("{}", s.events)},
       {"largest local error", Significant(s.max_local_error, 3)},
-      {"local error estimates, summed", Significant(s.error_estimate, 3)},
   };
+  if (s.error_estimate) {
+    rows.push_back({"global error estimate (of channel range)", Significant(*s.error_estimate, 3)});
+  }
   if (s.method == "exponential") {
     // How much of the run the exponential part carried; the rest were third-order RK steps.
     rows.push_back({"steps with a decay rate", fmt::format("{} of {}", s.decaying_steps, s.steps)});

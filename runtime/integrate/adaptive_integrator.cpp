@@ -366,9 +366,6 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     const double t1 = last ? t_stop : t_ + h;
     ++stats_.steps;
     stats_.max_local_error = std::max(stats_.max_local_error, error);
-    stats_.accumulated_error +=
-        error * ToleranceScale(std::span<const double>(y1_).first(controlled_),
-                               options_.relative_tolerance, options_.absolute_tolerance);
     std::copy(y1_.begin(), y1_.end(), dense_y1_.begin());
     std::copy(y1_.begin(), y1_.end(), end_state_.begin());
     dense_t0_ = t_;

@@ -33,18 +33,6 @@ double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0
   return std::sqrt(sum / static_cast<double>(n));
 }
 
-double ToleranceScale(std::span<const double> y, double relative_tolerance,
-                      double absolute_tolerance) {
-  const std::size_t n = y.size();
-  if (n == 0) return absolute_tolerance;
-  double sum = 0.0;
-  for (const double value : y) {
-    const double weight = absolute_tolerance + relative_tolerance * std::abs(value);
-    sum += weight * weight;
-  }
-  return std::sqrt(sum / static_cast<double>(n));
-}
-
 void StepSizeController::Configure(int error_power) {
   const double k = static_cast<double>(std::max(error_power, 1));
   beta_ = 0.2 / k;

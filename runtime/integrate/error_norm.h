@@ -20,11 +20,6 @@ double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0
                        std::span<const double> y1, double relative_tolerance,
                        double absolute_tolerance, LargestComponent* largest = nullptr);
 
-// The RMS of the weights w_i above: the absolute size of "one tolerance" for the state y, used
-// to turn the weighted local errors back into an absolute accumulated-error estimate.
-double ToleranceScale(std::span<const double> y, double relative_tolerance,
-                      double absolute_tolerance);
-
 // The PI step-size controller of Hairer & Wanner (Solving ODEs I, §II.4, and dopri5.f): with
 // err_n the weighted local error of the step just taken and k the power of h in that error
 // (the lower of the two embedded orders plus one),

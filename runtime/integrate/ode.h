@@ -73,6 +73,11 @@ class OdeSystem {
   virtual std::string FailureReason() const { return {}; }
 };
 
+// The smallest relative tolerance a double can meet: a step's own rounding errors are a few
+// ulps of the state per stage, and the error test needs the tolerance well above them (dopri5.f
+// refuses below 10 ulps). 100 ulps: 2.2e-14.
+inline constexpr double kMinRelativeTolerance = 100.0 * 2.220446049250313e-16;
+
 struct IntegratorOptions {
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-9;
@@ -92,12 +97,9 @@ struct IntegratorStats {
   // Accepted steps of the exponential method in which at least one 3-vector group was integrated
   // with a decay rate (the rest were plain third-order Runge-Kutta steps); 0 for other methods.
   long decaying_steps = 0;
-  // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance),
-  // and the sum over steps of the local error estimates in the weighted norm, times the
-  // tolerance scale: a loose bound on the global error in the state's units (it can exceed the
-  // error measured by `sled study` by orders of magnitude), not a measure of it.
+  // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance).
+  // (A global error estimate needs a second run: output/post/global_error.h.)
   double max_local_error = 0.0;
-  double accumulated_error = 0.0;
 };
 
 enum class IntegratorStatus {

@@ -49,7 +49,8 @@ TEST(RunSummary, ReadsEveryMember) {
   EXPECT_EQ(summary->integrator.method, "rosenbrock");
   EXPECT_EQ(summary->integrator.steps, 1234);
   EXPECT_EQ(summary->integrator.factorizations, 41);
-  EXPECT_DOUBLE_EQ(summary->integrator.error_estimate, 0.0029);
+  ASSERT_TRUE(summary->integrator.error_estimate);
+  EXPECT_DOUBLE_EQ(*summary->integrator.error_estimate, 0.0029);
   ASSERT_TRUE(summary->energy_balance);
   EXPECT_DOUBLE_EQ(summary->energy_balance->relative_residual, 5e-5);
   ASSERT_TRUE(summary->failure);

@@ -802,7 +802,6 @@ TEST_P(EveryMethod, HonoursMaxStepAndCountsWork) {
   EXPECT_GT(s.evaluations, 2 * s.steps);
   EXPECT_GT(s.max_local_error, 0.0);
   EXPECT_LE(s.max_local_error, 1.0);
-  EXPECT_GT(s.accumulated_error, 0.0);
   if (std::string(GetParam()) == "rosenbrock") {
     EXPECT_GT(s.jacobians, 0);
     EXPECT_GE(s.factorizations, s.jacobians);
