@@ -12,7 +12,7 @@ namespace {
 static_assert(std::is_trivially_copyable_v<IntegratorStats>);
 static_assert(std::is_trivially_copyable_v<EnergySummary>);
 static_assert(sizeof(std::string) != 32 ||
-                  (sizeof(RunSummary) == 352 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
+                  (sizeof(RunSummary) == 360 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
               "RunSummary, Failure or TimeSeries changed: list the new field in Serialize");
 
 void Strings(Archive& archive, std::vector<std::string>& texts) {
@@ -31,6 +31,8 @@ void Strings(Archive& archive, std::vector<std::string>& texts) {
 void Serialize(Archive& archive, RunSummary& summary, TimeSeries& series) {
   archive.Resizable(summary.integrator);
   archive.Field(summary.stats);
+  archive.Field(summary.output_evaluations);
+  archive.Field(summary.error_estimate);
   archive.Field(summary.wall_seconds);
   archive.Field(summary.failed);
   archive.Field(summary.failure.time);
