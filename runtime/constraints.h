@@ -1,4 +1,4 @@
-// Loop-closing constraints (DESIGN.md §4): fixed-point, fixed-distance and sliding constraints
+// Loop-closing constraints (docs/runtime.md): fixed-point, fixed-distance and sliding constraints
 // between frames, solved with Lagrange multipliers in joint space.
 //
 // The articulated-body recursion gives the tree accelerations a0 = M^-1 (tau - C). The

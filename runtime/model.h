@@ -22,12 +22,12 @@
 #include "runtime/airbag/airbag_table.h"
 #include "runtime/contact/contact_table.h"
 #include "runtime/model_types.h"
-
 #include "runtime/restraint/belt_table.h"
 
 namespace sled::runtime {
 
-// Typed indices: a SegmentId cannot be passed where a JointId belongs.
+// Typed indices: a SegmentId cannot be passed where a VehicleId belongs. The Model's arrays are
+// still indexed by plain integers (a segment's joint is the joint above it, at the same index).
 template <typename Tag>
 struct Id {
   std::int32_t value = -1;

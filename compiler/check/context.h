@@ -189,7 +189,7 @@ class Checker {
   std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
                                          std::string_view name);
 
-  // --- declarations (check_scene.cpp, check_bodies.cpp, check_outputs.cpp)
+  // --- declarations (check_scene.cpp, check_bodies.cpp, check_restraints.cpp)
   BoundBlock DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
   void CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
                              const std::string& instance_name, SourceRange instance_range);

@@ -1,4 +1,4 @@
-// The `sled` command: check, fmt, run, convert and explain (DESIGN.md §6). Libraries report; this
+// The `sled` command: check, fmt, run, convert and explain (README.md). Libraries report; this
 // prints.
 #include <unistd.h>
 

@@ -1,8 +1,8 @@
-// compiler::Lower: a checked scenario to the runtime's flat Model (DESIGN.md §2, §4). Segments are
-// put in tree order (a parent before its children), joints become generalized coordinates, values
-// stay in SI, and only what the scene uses is copied: functions no lowered element refers to are
-// dropped. Features the runtime does not simulate yet are left out, each with a note.
-// Programs call this through sled::Compile (sled/compile.h), which runs every stage.
+// compiler::Lower: a checked scenario to the runtime's flat Model (docs/architecture.md). Segments
+// are put in tree order (a parent before its children), joints become generalized coordinates,
+// values stay in SI, and only what the scene uses is copied: functions no lowered element refers to
+// are dropped. Features the runtime does not simulate yet are left out, each with a note. Programs
+// call this through sled::Compile (sled/compile.h), which runs every stage.
 #pragma once
 
 #include "compiler/check/checked_scenario.h"

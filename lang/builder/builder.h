@@ -1,6 +1,6 @@
 // The embedded C++ form of the language: a fluent builder that produces exactly the AST the parser
 // produces for the equivalent .sled text, so the checker, the formatter and the runtime serve it
-// like any other front end (DESIGN.md §2).
+// like any other front end (docs/architecture.md, the stages).
 //
 //   using namespace sled::lang::build;
 //   sled::lang::SourceManager sources;
@@ -95,8 +95,8 @@ class Value {
  public:
   template <typename T>
   requires(std::is_arithmetic_v<T> && !std::is_same_v<T, char>)
-      Value(T number,
-            SourceLocation where = SourceLocation::current())  // NOLINT: implicit on purpose
+      Value(T number,  // NOLINT(google-explicit-constructor): implicit on purpose
+            SourceLocation where = SourceLocation::current())
       : node_(std::is_same_v<T, bool> ? MakeBool(number != T{}, where)
                                       : MakeNumber(static_cast<double>(number), where)) {}
 
@@ -116,11 +116,12 @@ class Value {
 
 // An argument of a call: positional (`0`, `Q(2.5, "N*m/deg")`) or named (`{"delta_v", v}`).
 struct Arg {
-  Arg(Value positional) : value(std::move(positional)) {}  // NOLINT: implicit on purpose
+  Arg(Value positional)  // NOLINT(google-explicit-constructor): implicit on purpose
+      : value(std::move(positional)) {}
   template <typename T>
   requires(std::is_arithmetic_v<T> && !std::is_same_v<T, char>)
-      Arg(T number,
-          SourceLocation where = SourceLocation::current())  // NOLINT: implicit on purpose
+      Arg(T number,  // NOLINT(google-explicit-constructor): implicit on purpose
+          SourceLocation where = SourceLocation::current())
       : value(number, where) {}
   Arg(std::string_view argument_name, Value named) : name(argument_name), value(std::move(named)) {}
 

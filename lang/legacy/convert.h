@@ -1,5 +1,6 @@
 // `sled convert`: a CVS-III / ATB deck read into the same AST the .sled parser produces, ready
-// for the formatter to print (DESIGN.md §2). Diagnostics name the deck's line, card and columns.
+// for the formatter to print (docs/architecture.md). Diagnostics name the deck's line, card and
+// columns.
 #pragma once
 
 #include <optional>

@@ -38,7 +38,8 @@
 namespace sled::lang::grammar {
 
 namespace pegtl = tao::pegtl;
-using namespace pegtl;  // NOLINT: the grammar reads best with PEGTL's rule names unqualified
+// The grammar reads best with PEGTL's rule names unqualified.
+using namespace pegtl;  // NOLINT(google-build-using-namespace)
 
 // clang-format off
 

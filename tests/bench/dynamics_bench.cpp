@@ -1,7 +1,7 @@
 // One forward-dynamics evaluation (all generalized accelerations and joint wrenches) of sled
 // against MuJoCo 2.2.2 (mj_forward, contacts disabled) on the same bodies, measured in the same
-// run (DESIGN.md §7); the ratios are printed after the table. The bodies and states come from
-// tests/verification/tree_models.h, which the MuJoCo comparison test checks agree to 1e-9.
+// run (docs/architecture.md); the ratios are printed after the table. The bodies and states come
+// from tests/verification/tree_models.h, which the MuJoCo comparison test checks agree to 1e-9.
 //
 //   sled_bench_dynamics_bench --benchmark_repetitions=5 --benchmark_enable_random_interleaving
 //

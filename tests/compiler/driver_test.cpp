@@ -1,5 +1,5 @@
-// The `sled` command-line program (DESIGN.md §6): exit codes, where diagnostics go, `explain`,
-// `fmt --check` and `--set`. Runs the built binary, whose path CMake gives
+// The `sled` command-line program (README.md, The `sled` command): exit codes, where diagnostics
+// go, `explain`, `fmt --check` and `--set`. Runs the built binary, whose path CMake gives
 // (tests/compiler/sled_process.h).
 #include <filesystem>
 #include <string>

@@ -1,5 +1,6 @@
-// Golden tests of the front end (DESIGN.md §7): every file in tests/golden is parsed and checked
-// as `sled check` would, and what comes out is compared with the expected file next to it.
+// Golden tests of the front end (docs/architecture.md, recipes): every file in tests/golden is
+// parsed and checked as `sled check` would, and what comes out is compared with the expected file
+// next to it.
 //
 //   fail_<code>_<what>.sled  ->  <name>.stderr    compact diagnostics, sorted by position; the
 //                                                  file must report <code> (an error for E codes)

@@ -17,7 +17,7 @@
 namespace sled::lang::legacy {
 namespace {
 
-using namespace deck_testing;  // NOLINT: the deck helpers
+using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
 
 // The seated occupant's cylinder (D.4.d, D.4.e): 2000 psi over 14.7, 30 in^3 at 600 K, gamma 1.4,
 // R 1152.2 in/K per weight, a 1.2 in^2 throat with a discharge coefficient of 0.8; G 386.088.

@@ -14,7 +14,7 @@
 namespace sled::lang::legacy {
 namespace {
 
-using namespace deck_testing;  // NOLINT: the deck helpers
+using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
 
 // The seated-occupant deck with D.1.a's NQ set and `cards` as its D.6 cards; `*first` is the line
 // of the first of them.

@@ -23,7 +23,7 @@ namespace sled::lang::legacy {
 namespace {
 
 namespace fs = std::filesystem;
-using namespace deck_testing;  // NOLINT: the deck helpers
+using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
 
 const fs::path kLegacy = fs::path(SLED_SOURCE_ROOT) / "examples/legacy";
 

@@ -22,7 +22,7 @@
 namespace sled::lang::legacy {
 namespace {
 
-using namespace deck_testing;  // NOLINT: the deck helpers
+using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
 
 const std::string kDeck = kLegacyDir + "seated_occupant.ain";
 

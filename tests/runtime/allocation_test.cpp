@@ -1,6 +1,6 @@
-// No allocation inside a step (DESIGN.md §4): once an integrator is set up, advancing a
-// multibody system through many steps, events included, allocates nothing. Global operator new
-// is replaced in this test binary to count allocations while a flag is raised.
+// No allocation inside a step (docs/architecture.md, Model and Data): once an integrator is set up,
+// advancing a multibody system through many steps, events included, allocates nothing. Global
+// operator new is replaced in this test binary to count allocations while a flag is raised.
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
