@@ -9,6 +9,7 @@ packages=(
   ninja-build
   clang
   clang-format
+  clang-tidy          # scripts/lint.sh tidy, run by CI
   libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes for clang 14
   llvm                # llvm-symbolizer: file and line in sanitizer reports
   libeigen3-dev

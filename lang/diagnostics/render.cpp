@@ -52,8 +52,9 @@ ShownLine ShowLine(std::string_view line, std::size_t at) {
   std::size_t from = 0;
   std::size_t to = line.size();
   // A character is at most four bytes, so only a line of few bytes needs counting.
-  const bool wide = line.size() > kWidestShownLine && (line.size() > 4 * kWidestShownLine ||
-                                                       CountCharacters(line) > kWidestShownLine);
+  const bool wide =
+      line.size() > kWidestShownLine &&
+      (line.size() > std::size_t{4} * kWidestShownLine || CountCharacters(line) > kWidestShownLine);
   if (wide) {
     from = at;
     for (std::uint32_t back = 0; from > 0 && back < kShownBeforeLabel;) {

@@ -43,7 +43,7 @@ Card CardReader::Next(std::string label, const CardSpec& spec) {
 std::string_view CardReader::Columns(const Card& card, int first, int last) const {
   const auto begin = static_cast<std::size_t>(first - 1);
   if (begin >= card.text.size()) return {};
-  return card.text.substr(begin, static_cast<std::size_t>(last - first + 1));
+  return card.text.substr(begin, static_cast<std::size_t>(last) - begin);
 }
 
 std::string_view CardReader::PlacementHint() const {

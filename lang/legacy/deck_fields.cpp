@@ -91,7 +91,8 @@ void DeckFields::ReportField(DiagnosticKind kind, const Card& card, int first, i
             std::move(help));
 }
 
-void DeckFields::Refuse(const Card& card, int first, int last, std::string what, std::string help) {
+void DeckFields::Refuse(const Card& card, int first, int last, std::string_view what,
+                        std::string help) {
   ReportField(DiagnosticKind::kDeckNotExpressible, card, first, last, what, std::move(help));
 }
 
@@ -103,23 +104,23 @@ void DeckFields::RefuseNonZero(const Card& card, int first, int last, double val
   }
 }
 
-void DeckFields::Unverified(const Card& card, int first, int last, std::string what) {
+void DeckFields::Unverified(const Card& card, int first, int last, std::string_view what) {
   ReportField(DiagnosticKind::kDeckUnverifiedField, card, first, last, what,
               "the format reference marks this unverified: compare the converted scenario with "
               "the deck's documentation before trusting it");
 }
 
-void DeckFields::Ignored(const Card& card, int first, int last, std::string what,
+void DeckFields::Ignored(const Card& card, int first, int last, std::string_view what,
                          std::string help) {
   ReportField(DiagnosticKind::kDeckIgnoredField, card, first, last, what, std::move(help));
 }
 
-void DeckFields::Invalid(const Card& card, int first, int last, std::string what,
+void DeckFields::Invalid(const Card& card, int first, int last, std::string_view what,
                          std::string help) {
   ReportField(DiagnosticKind::kDeckInvalidValue, card, first, last, what, std::move(help));
 }
 
-void DeckFields::Approximated(const Card& card, int first, int last, std::string what) {
+void DeckFields::Approximated(const Card& card, int first, int last, std::string_view what) {
   ReportField(DiagnosticKind::kDeckApproximated, card, first, last, what,
               "sled's model differs here from ATB's: compare the converted scenario's results "
               "with the deck's before trusting them");

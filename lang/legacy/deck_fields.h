@@ -43,13 +43,13 @@ class DeckFields {
   std::optional<DeckFrame> FrameOf(const Card& card, int first, int last, int number, int bags,
                                    std::string_view what);
 
-  void Refuse(const Card& card, int first, int last, std::string what, std::string help);
+  void Refuse(const Card& card, int first, int last, std::string_view what, std::string help);
   void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,
                      std::string help);
-  void Unverified(const Card& card, int first, int last, std::string what);
-  void Ignored(const Card& card, int first, int last, std::string what, std::string help);
-  void Invalid(const Card& card, int first, int last, std::string what, std::string help);
-  void Approximated(const Card& card, int first, int last, std::string what);
+  void Unverified(const Card& card, int first, int last, std::string_view what);
+  void Ignored(const Card& card, int first, int last, std::string_view what, std::string help);
+  void Invalid(const Card& card, int first, int last, std::string_view what, std::string help);
+  void Approximated(const Card& card, int first, int last, std::string_view what);
 
  protected:
   // "card LABEL, COLUMNS: WHAT" at the columns, with `help`.

@@ -82,8 +82,9 @@ ast::Expr Call(std::string callee, std::vector<std::pair<std::string, ast::Expr>
   ast::Expr expr;
   expr.kind = ast::ExprKind::kCall;
   expr.path.push_back(std::move(callee));
-  for (auto& [name, value] : arguments) {
-    expr.arguments.push_back({name, {}, std::make_unique<ast::Expr>(std::move(value))});
+  for (auto& argument : arguments) {
+    expr.arguments.push_back(
+        {std::move(argument.first), {}, std::make_unique<ast::Expr>(std::move(argument.second))});
   }
   return expr;
 }
@@ -101,7 +102,7 @@ ast::Statement Declaration(std::string keyword, ast::Expr target, std::string co
   statement.keyword = std::move(keyword);
   statement.target = std::move(target);
   statement.block = std::make_unique<ast::Block>();
-  if (!comment.empty()) statement.leading_comments.push_back({" " + comment, {}, false});
+  if (!comment.empty()) statement.leading_comments.push_back({" " + std::move(comment), {}, false});
   return statement;
 }
 

@@ -26,8 +26,9 @@ SourceBuffer::SourceBuffer(std::string path, std::string text)
 std::uint32_t SourceBuffer::CharactersBefore(std::uint32_t offset) const {
   offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
   const std::uint32_t block = offset / kBlockBytes;
-  return characters_before_block_[block] + CountCharacters(std::string_view(text_).substr(
-                                               block * kBlockBytes, offset - block * kBlockBytes));
+  return characters_before_block_[block] +
+         CountCharacters(std::string_view(text_).substr(std::size_t{block} * kBlockBytes,
+                                                        offset - block * kBlockBytes));
 }
 
 LineColumn SourceBuffer::Locate(std::uint32_t offset) const {

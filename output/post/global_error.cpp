@@ -4,9 +4,9 @@
 
 #include <fmt/format.h>
 
-#include "runtime/integrate/ode.h"
 #include "output/post/injury_criteria.h"
 #include "output/post/series_error.h"
+#include "runtime/integrate/ode.h"
 
 namespace sled::runtime::post {
 

@@ -230,8 +230,10 @@ std::string FirstDifference(const std::string& actual, const std::string& expect
     if (!more_a) line_a = "<end>";
     if (!more_e) line_e = "<end>";
     if (line_a != line_e || !more_a || !more_e) {
-      return "first difference at line " + std::to_string(line) + ":\n  actual:   " + line_a +
-             "\n  expected: " + line_e;
+      std::ostringstream difference;
+      difference << "first difference at line " << line << ":\n  actual:   " << line_a
+                 << "\n  expected: " << line_e;
+      return difference.str();
     }
   }
 }
@@ -387,7 +389,8 @@ TEST(GoldenCoverage, EveryCodeHasADocumentationPage) {
     // The pages are embedded in raw string literals delimited by `)sledpage"`.
     EXPECT_EQ(page->find(")sledpage\""), std::string::npos) << code << ".md";
     EXPECT_NE(page->find("```sled"), std::string::npos) << code << ".md has no example";
-    EXPECT_NE(index.find("[" + code + "](" + code + ".md)"), std::string::npos)
+    const std::string link = std::string("[").append(code).append("](").append(code).append(".md)");
+    EXPECT_NE(index.find(link), std::string::npos)
         << "docs/diagnostics/README.md does not link " << code;
   }
 }

@@ -152,7 +152,8 @@ std::string InitialBlock(const std::string& scenario, std::string_view body) {
 TEST(LegacyConvert, G1aI3ChoosesTheVehiclesVelocityOrTheGCards) {
   const std::vector<std::string> lines = Lines(CorpusDeck());
   const std::size_t g1 = LineStarting(lines, "# ---- G cards") + 1;  // G.1.a, then G.2, G.3.a
-  auto convert = [&](std::string i3, std::string g2_velocity, std::string g3_rate) {
+  auto convert = [&](const std::string& i3, const std::string& g2_velocity,
+                     const std::string& g3_rate) {
     std::vector<std::string> copy = lines;
     copy[g1 - 1] = std::string(46, ' ') + i3;
     copy[g1].replace(30, 30, g2_velocity);
@@ -191,7 +192,7 @@ TEST(LegacyConvert, G1aI3ChoosesTheVehiclesVelocityOrTheGCards) {
 TEST(LegacyConvert, VehicleVelocityLiesAlongTheVehiclesXAxis) {
   const std::vector<std::string> lines = Lines(CorpusDeck());
   const std::size_t c2 = LineStarting(lines, "SLED 30 MPH") + 1;
-  auto convert = [&](std::string yaw_pitch_roll) {
+  auto convert = [&](const std::string& yaw_pitch_roll) {
     std::vector<std::string> copy = lines;
     copy[c2 - 1].replace(0, 18, yaw_pitch_roll);
     return Convert(Join(copy, copy.size()));

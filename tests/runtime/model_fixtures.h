@@ -30,11 +30,11 @@ inline std::size_t AddSegment(Model& model, std::string name, int parent, JointK
   model.v_address.push_back(model.nv);
   model.q_count.push_back(nq);
   model.v_count.push_back(nv);
-  model.q0.resize(static_cast<std::size_t>(model.nq + nq), 0.0);
-  model.v0.resize(static_cast<std::size_t>(model.nv + nv), 0.0);
+  model.q0.resize(static_cast<std::size_t>(model.nq) + static_cast<std::size_t>(nq), 0.0);
+  model.v0.resize(static_cast<std::size_t>(model.nv) + static_cast<std::size_t>(nv), 0.0);
   if (kind == JointKind::kFree || kind == JointKind::kBall) {
     // Identity quaternion (w first), after the position for a free joint.
-    model.q0[static_cast<std::size_t>(model.nq + (kind == JointKind::kFree ? 3 : 0))] = 1.0;
+    model.q0[static_cast<std::size_t>(model.nq) + (kind == JointKind::kFree ? 3U : 0U)] = 1.0;
   }
   model.nq += nq;
   model.nv += nv;
