@@ -1,10 +1,15 @@
 #include "output/checkpoint_file.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "output/atomic_file.h"
 #include "runtime/archive.h"
 #include "runtime/fnv1a.h"
 
@@ -48,19 +53,27 @@ bool WriteCheckpoint(const std::string& path, const Checkpoint& checkpoint, std:
   archive.Field(columns);
   archive.Resizable(copy.series.values);
   archive.Resizable(copy.state);
-  std::ofstream out(path, std::ios::binary);
+  // Through a temporary file: a full disk leaves no truncated checkpoint under its name.
+  runtime::AtomicFile out(path);
   out << kMagic << archive.bytes() << ChecksumText(archive.bytes());
-  if (!out) {
-    *error = fmt::format("cannot write the checkpoint `{}`", path);
-    return false;
-  }
-  return true;
+  return out.Commit(error);
 }
 
 bool ReadCheckpoint(const std::string& path, Checkpoint* checkpoint, std::string* error) {
+  // A device or a pipe (`--resume /dev/zero`) would be read until memory runs out.
+  struct stat status {};
+  if (stat(path.c_str(), &status) != 0) {
+    *error = fmt::format("cannot read the checkpoint `{}`: {}", path, std::strerror(errno));
+    return false;
+  }
+  if (!S_ISREG(status.st_mode)) {
+    *error = fmt::format("`{}` is not a checkpoint: it is {}", path,
+                         S_ISDIR(status.st_mode) ? "a folder" : "not a regular file");
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
-    *error = fmt::format("cannot read the checkpoint `{}`", path);
+    *error = fmt::format("cannot read the checkpoint `{}`: {}", path, std::strerror(errno));
     return false;
   }
   std::stringstream content;

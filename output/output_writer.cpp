@@ -8,10 +8,124 @@
 #include "output/atomic_file.h"
 
 namespace sled::runtime {
+namespace {
+
+// The length of the valid UTF-8 sequence at text[i], or 0 when the bytes there are none
+// (overlong forms, surrogates and code points above U+10FFFF included).
+std::size_t Utf8SequenceLength(const std::string& text, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char lead = byte(i);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  unsigned char low = 0x80, high = 0xbf;  // the range of the second byte
+  if (lead >= 0xc2 && lead <= 0xdf) {
+    length = 2;
+  } else if (lead >= 0xe0 && lead <= 0xef) {
+    length = 3;
+    if (lead == 0xe0) low = 0xa0;
+    if (lead == 0xed) high = 0x9f;
+  } else if (lead >= 0xf0 && lead <= 0xf4) {
+    length = 4;
+    if (lead == 0xf0) low = 0x90;
+    if (lead == 0xf4) high = 0x8f;
+  } else {
+    return 0;
+  }
+  if (i + length > text.size()) return 0;
+  if (byte(i + 1) < low || byte(i + 1) > high) return 0;
+  for (std::size_t k = 2; k < length; ++k) {
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) return 0;
+  }
+  return length;
+}
+
+// Numbers for summary.json: a value that is not finite becomes null, and a warning names it.
+class JsonNumbers {
+ public:
+  std::string operator()(std::string_view name, double value) {
+    if (std::isfinite(value)) return fmt::format("{}", value);
+    notes_.push_back(fmt::format("`{}` was not finite ({}) and is written as null", name, value));
+    return "null";
+  }
+  const std::vector<std::string>& notes() const { return notes_; }
+
+ private:
+  std::vector<std::string> notes_;
+};
+
+// "pass", "fail", "no limit", "not computed" or, when the run stopped early, "incomplete".
+std::string Verdict(const post::CriterionValue& c) {
+  if (!c.computed) return "not computed";
+  if (c.incomplete) return "incomplete";
+  if (!c.has_limit) return "no limit";
+  return c.pass ? "pass" : "fail";
+}
+
+// The "criteria" array; a value that was not computed is null, with the reason; a criterion of
+// a run that stopped early is "incomplete", with the time it saw up to, and never passes.
+void WriteCriteria(AtomicFile& out, const std::vector<post::CriterionValue>& criteria,
+                   JsonNumbers& number) {
+  out << "  \"criteria\": [";
+  for (std::size_t i = 0; i < criteria.size(); ++i) {
+    const post::CriterionValue& c = criteria[i];
+    const std::string name = fmt::format("criteria {}({})", c.name, c.target);
+    auto known = [&](bool is_known, std::string_view field, double value) {
+      return is_known ? number(fmt::format("{} {}", name, field), value) : std::string("null");
+    };
+    out << (i == 0 ? "\n    {" : ",\n    {");
+    out << fmt::format("\"name\": {}, \"variant\": {}, \"target\": {}, ", JsonString(c.name),
+                       JsonString(c.variant), JsonString(c.target));
+    out << fmt::format("\"value\": {}, \"unit\": {}, ", known(c.computed, "value", c.value),
+                       JsonString(c.unit));
+    out << fmt::format("\"window_start\": {}, \"window_end\": {}, \"filter_class\": {}, ",
+                       known(c.computed, "window_start", c.window_start),
+                       known(c.computed, "window_end", c.window_end), c.filter_class);
+    out << fmt::format("\"limit\": {}, \"limit_source\": {}, \"pass\": {}, \"verdict\": {}",
+                       known(c.has_limit, "limit", c.limit), JsonString(c.limit_source),
+                       c.computed && !c.incomplete ? (c.pass ? "true" : "false") : "null",
+                       JsonString(Verdict(c)));
+    if (c.incomplete) {
+      out << fmt::format(", \"seen_from\": {}, \"seen_until\": {}",
+                         known(true, "seen_from", c.seen_from),
+                         known(true, "seen_until", c.seen_until));
+    }
+    if (!c.computed) out << fmt::format(", \"reason\": {}", JsonString(c.reason));
+    out << "}";
+  }
+  out << (criteria.empty() ? "],\n" : "\n  ],\n");
+}
+
+// The "peaks" array: each channel's extreme of largest magnitude and its time.
+void WritePeaks(AtomicFile& out, const std::vector<post::ChannelPeak>& peaks, JsonNumbers& number) {
+  out << "  \"peaks\": [";
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    const post::ChannelPeak& p = peaks[i];
+    out << (i == 0 ? "\n    " : ",\n    ");
+    out << fmt::format("{{\"channel\": {}, \"value\": {}, \"time\": {}, \"filtered\": {}}}",
+                       JsonString(p.channel), number("peaks " + p.channel + " value", p.value),
+                       number("peaks " + p.channel + " time", p.time),
+                       p.filtered ? "true" : "false");
+  }
+  out << (peaks.empty() ? "],\n" : "\n  ],\n");
+}
+
+}  // namespace
 
 std::string JsonString(const std::string& text) {
   std::string out = "\"";
-  for (const char c : text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const std::size_t length = Utf8SequenceLength(text, i);
+    if (length == 0) {
+      out += "\\ufffd";  // a byte that is no UTF-8: the replacement character
+      ++i;
+      continue;
+    }
+    if (length > 1) {
+      out.append(text, i, length);
+      i += length;
+      continue;
+    }
+    const char c = text[i++];
     switch (c) {
       case '"':
         out += "\\\"";
@@ -36,46 +150,12 @@ std::string JsonString(const std::string& text) {
   return out + "\"";
 }
 
-namespace {
-
-// The "criteria" array; a value that was not computed is null, with the reason.
-void WriteCriteria(AtomicFile& out, const std::vector<post::CriterionValue>& criteria) {
-  auto number = [](bool known, double value) {
-    return known && std::isfinite(value) ? fmt::format("{}", value) : std::string("null");
-  };
-  out << "  \"criteria\": [";
-  for (std::size_t i = 0; i < criteria.size(); ++i) {
-    const post::CriterionValue& c = criteria[i];
-    out << (i == 0 ? "\n    {" : ",\n    {");
-    out << fmt::format("\"name\": {}, \"variant\": {}, \"target\": {}, ", JsonString(c.name),
-                       JsonString(c.variant), JsonString(c.target));
-    out << fmt::format("\"value\": {}, \"unit\": {}, ", number(c.computed, c.value),
-                       JsonString(c.unit));
-    out << fmt::format("\"window_start\": {}, \"window_end\": {}, \"filter_class\": {}, ",
-                       number(c.computed, c.window_start), number(c.computed, c.window_end),
-                       c.filter_class);
-    out << fmt::format("\"limit\": {}, \"limit_source\": {}, \"pass\": {}",
-                       number(c.has_limit, c.limit), JsonString(c.limit_source),
-                       c.computed ? (c.pass ? "true" : "false") : "null");
-    if (!c.computed) out << fmt::format(", \"reason\": {}", JsonString(c.reason));
-    out << "}";
-  }
-  out << (criteria.empty() ? "],\n" : "\n  ],\n");
+std::string_view RunStatus(const RunSummary& summary) {
+  if (summary.failed) return "failed";
+  if (summary.interrupted) return "interrupted";
+  if (!summary.output_error.empty()) return "write_failed";
+  return "ok";
 }
-
-// The "peaks" array: each channel's extreme of largest magnitude and its time.
-void WritePeaks(AtomicFile& out, const std::vector<post::ChannelPeak>& peaks) {
-  out << "  \"peaks\": [";
-  for (std::size_t i = 0; i < peaks.size(); ++i) {
-    const post::ChannelPeak& p = peaks[i];
-    out << (i == 0 ? "\n    " : ",\n    ");
-    out << fmt::format("{{\"channel\": {}, \"value\": {}, \"time\": {}, \"filtered\": {}}}",
-                       JsonString(p.channel), p.value, p.time, p.filtered ? "true" : "false");
-  }
-  out << (peaks.empty() ? "],\n" : "\n  ],\n");
-}
-
-}  // namespace
 
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
   AtomicFile out(path);
@@ -98,22 +178,24 @@ bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::
 }
 
 bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
-                      const RunSummary& summary, const std::vector<std::string>& warnings,
-                      std::string* error, const std::vector<post::CriterionValue>& criteria,
-                      const std::vector<post::ChannelPeak>& peaks) {
+                      const RunSummary& summary, const SummaryExtras& extras, std::string* error) {
   AtomicFile out(path);
+  JsonNumbers number;
   const IntegratorStats& s = summary.stats;
   out << "{\n";
   out << fmt::format("  \"scenario\": {},\n", JsonString(model.title));
-  out << fmt::format("  \"status\": {},\n", JsonString(summary.failed ? "failed" : "ok"));
+  out << fmt::format("  \"status\": {},\n", JsonString(std::string(RunStatus(summary))));
   out << fmt::format("  \"start_time\": {},\n  \"end_time\": {},\n  \"stopped_at\": {},\n",
-                     model.start_time, model.end_time, summary.end_time);
+                     number("start_time", model.start_time), number("end_time", model.end_time),
+                     number("stopped_at", summary.end_time));
   out << fmt::format("  \"output_every\": {},\n  \"rows\": {},\n  \"channels\": {},\n",
-                     model.output_every, series.rows(), series.names.size());
+                     number("output_every", model.output_every), series.rows(),
+                     series.names.size());
   out << "  \"integrator\": {\n";
   out << fmt::format("    \"method\": {},\n", JsonString(summary.integrator));
   out << fmt::format("    \"relative_tolerance\": {},\n    \"absolute_tolerance\": {},\n",
-                     model.relative_tolerance, model.absolute_tolerance);
+                     number("integrator.relative_tolerance", model.relative_tolerance),
+                     number("integrator.absolute_tolerance", model.absolute_tolerance));
   out << fmt::format("    \"steps\": {},\n    \"rejected_steps\": {},\n", s.steps, s.rejected);
   out << fmt::format("    \"evaluations\": {},\n    \"output_evaluations\": {},\n", s.evaluations,
                      summary.output_evaluations);
@@ -121,27 +203,35 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
                      s.events);
   out << fmt::format("    \"decaying_steps\": {},\n", s.decaying_steps);
-  out << fmt::format("    \"max_local_error\": {},\n", s.max_local_error);
+  out << fmt::format("    \"max_local_error\": {},\n",
+                     number("integrator.max_local_error", s.max_local_error));
   // The global error estimate when the run asked for one (output/post/global_error.h).
-  out << fmt::format("    \"error_estimate\": {}\n", summary.error_estimate >= 0
-                                                         ? fmt::format("{}", summary.error_estimate)
-                                                         : std::string("null"));
+  out << fmt::format("    \"error_estimate\": {}\n",
+                     summary.error_estimate >= 0
+                         ? number("integrator.error_estimate", summary.error_estimate)
+                         : std::string("null"));
   out << "  },\n";
-  out << fmt::format("  \"wall_time_seconds\": {},\n", summary.wall_seconds);
+  out << fmt::format("  \"wall_time_seconds\": {},\n",
+                     number("wall_time_seconds", summary.wall_seconds));
   const EnergySummary& e = summary.energy;
   out << "  \"energy_balance\": {\n";
   out << fmt::format(
       "    \"kinetic\": {},\n    \"potential\": {},\n    \"absorbed\": {},\n"
       "    \"prescribed_work\": {},\n    \"impulses\": {},\n    \"residual\": {},\n"
       "    \"largest_residual\": {},\n    \"scale\": {},\n    \"relative_residual\": {}\n",
-      e.kinetic, e.potential, e.absorbed, e.prescribed_work, e.impulses, e.residual,
-      e.largest_residual, e.scale, e.relative());
+      number("energy_balance.kinetic", e.kinetic), number("energy_balance.potential", e.potential),
+      number("energy_balance.absorbed", e.absorbed),
+      number("energy_balance.prescribed_work", e.prescribed_work),
+      number("energy_balance.impulses", e.impulses), number("energy_balance.residual", e.residual),
+      number("energy_balance.largest_residual", e.largest_residual),
+      number("energy_balance.scale", e.scale),
+      number("energy_balance.relative_residual", e.relative()));
   out << "  },\n";
   if (summary.failed) {
     const Failure& f = summary.failure;
     out << "  \"failure\": {\n";
-    out << fmt::format("    \"time\": {},\n    \"where\": {},\n    \"cause\": {}", f.time,
-                       JsonString(f.where), JsonString(f.cause));
+    out << fmt::format("    \"time\": {},\n    \"where\": {},\n    \"cause\": {}",
+                       number("failure.time", f.time), JsonString(f.where), JsonString(f.cause));
     if (!f.source.file.empty()) {
       out << fmt::format(
           ",\n    \"source\": {}",
@@ -149,8 +239,19 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
     }
     out << "\n  },\n";
   }
-  WriteCriteria(out, criteria);
-  WritePeaks(out, peaks);
+  if (summary.interrupted) {
+    out << fmt::format(
+        "  \"interrupted\": {{\"signal\": {}, \"time\": {}}},\n",
+        JsonString(extras.interrupted_by.empty() ? "request" : extras.interrupted_by),
+        number("interrupted.time", summary.end_time));
+  }
+  if (!summary.output_error.empty()) {
+    out << fmt::format("  \"write_error\": {},\n", JsonString(summary.output_error));
+  }
+  WriteCriteria(out, extras.criteria, number);
+  WritePeaks(out, extras.peaks, number);
+  std::vector<std::string> warnings = extras.warnings;
+  warnings.insert(warnings.end(), number.notes().begin(), number.notes().end());
   out << "  \"warnings\": [";
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     out << (i == 0 ? "\n    " : ",\n    ") << JsonString(warnings[i]);

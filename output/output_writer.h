@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "output/post/channel_peaks.h"
@@ -14,12 +15,24 @@ namespace sled::runtime {
 
 // Both return false with `error` set when a file cannot be written.
 bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error);
-bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
-                      const RunSummary& summary, const std::vector<std::string>& warnings,
-                      std::string* error, const std::vector<post::CriterionValue>& criteria = {},
-                      const std::vector<post::ChannelPeak>& peaks = {});
+// What summary.json says besides the Model, the rows and the RunSummary.
+struct SummaryExtras {
+  std::vector<std::string> warnings;
+  std::vector<post::CriterionValue> criteria;
+  std::string interrupted_by;            // the signal that interrupted the run: "SIGINT", ...
+  std::vector<post::ChannelPeak> peaks;  // each channel's extreme of largest magnitude
+};
 
-// A JSON string literal with the characters JSON requires escaped.
+// The run's status word: "ok", "failed" (numerical failure), "interrupted" or "write_failed"
+// (an output written during the run, a checkpoint, could not be).
+std::string_view RunStatus(const RunSummary& summary);
+
+// summary.json is always valid JSON: a number that is not finite is written as null, with a
+// warning that names it, and text that is not valid UTF-8 has U+FFFD in place of its bad bytes.
+bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSeries& series,
+                      const RunSummary& summary, const SummaryExtras& extras, std::string* error);
+
+// A JSON string literal with the characters JSON requires escaped (and invalid UTF-8 replaced).
 std::string JsonString(const std::string& text);
 
 }  // namespace sled::runtime

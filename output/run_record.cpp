@@ -12,7 +12,7 @@ namespace {
 static_assert(std::is_trivially_copyable_v<IntegratorStats>);
 static_assert(std::is_trivially_copyable_v<EnergySummary>);
 static_assert(sizeof(std::string) != 32 ||
-                  (sizeof(RunSummary) == 360 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
+                  (sizeof(RunSummary) == 392 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
               "RunSummary, Failure or TimeSeries changed: list the new field in Serialize");
 
 void Strings(Archive& archive, std::vector<std::string>& texts) {
@@ -41,6 +41,8 @@ void Serialize(Archive& archive, RunSummary& summary, TimeSeries& series) {
   archive.Resizable(summary.failure.source.file);
   archive.Field(summary.failure.source.line);
   archive.Field(summary.failure.source.column);
+  archive.Field(summary.interrupted);
+  archive.Resizable(summary.output_error);
   archive.Field(summary.end_time);
   archive.Field(summary.energy);
   Strings(archive, summary.checkpoints);

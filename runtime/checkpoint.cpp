@@ -11,30 +11,38 @@
 namespace sled::runtime {
 namespace {
 
-// The Model's dump without what may change between the saved and the resumed run: the title,
-// the run settings (compared separately), the output requests and where things were declared.
-std::string PhysicsText(const Model& model) {
+// The Model's dump in two parts: what the run's physics is (without the title, the run settings,
+// compared separately, and where things were declared), and what it records (the output
+// requests and criteria: kinds, targets, points, filters), which may change between the saved
+// and the resumed run.
+struct DumpParts {
+  std::string physics;
+  std::string outputs;
+};
+DumpParts SplitDump(const Model& model) {
   std::istringstream lines(DumpModel(model));
-  std::string text, line;
+  DumpParts parts;
+  std::string line;
   while (std::getline(lines, line)) {
-    if (line.starts_with("title ") || line.starts_with("run ") || line.starts_with("sizes ") ||
-        line.starts_with("output ")) {
+    if (line.starts_with("title ") || line.starts_with("run ") || line.starts_with("sizes ")) {
       continue;
     }
     if (const auto source = line.find(" source "); source != std::string::npos) {
       line.erase(source);
     }
-    text += line;
-    text += '\n';
+    const bool output = line.starts_with("output ") || line.starts_with("criterion ");
+    (output ? parts.outputs : parts.physics) += line + '\n';
   }
-  return text;
+  return parts;
 }
 
 }  // namespace
 
 ModelFingerprint FingerprintOf(const Model& model) {
   ModelFingerprint fingerprint;
-  fingerprint.physics = Fnv1a(PhysicsText(model));
+  const DumpParts parts = SplitDump(model);
+  fingerprint.physics = Fnv1a(parts.physics);
+  fingerprint.outputs = parts.outputs;
   fingerprint.settings = fmt::format(
       "integrator {} relative_tolerance {} absolute_tolerance {} min_step {} max_step {} "
       "initial_step {} start {} output_every {}",

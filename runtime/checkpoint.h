@@ -20,7 +20,10 @@ namespace sled::runtime {
 struct ModelFingerprint {
   std::uint64_t physics = 0;  // the Model without run settings, outputs and source positions
   std::string settings;       // integrator, tolerances, step limits, start time, output step
-  std::string outputs;        // the channel names, one per line
+  // The output requests and criteria as the Model defines them (kind, target, point, filter),
+  // then the channel names, one per line: rows before a checkpoint are kept only when all of it
+  // is the same.
+  std::string outputs;
 };
 ModelFingerprint FingerprintOf(const Model& model);
 

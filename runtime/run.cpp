@@ -132,7 +132,10 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       return summary;
     }
     next_row = static_cast<std::size_t>(checkpoint.next_row);
-    if (checkpoint.series.names == series.names) {
+    // The rows so far belong to this run only when every channel is defined as it was (the
+    // same names with a point moved are other channels).
+    if (checkpoint.model.outputs == FingerprintOf(model).outputs &&
+        checkpoint.series.names == series.names) {
       series.values.assign(checkpoint.series.values.begin(), checkpoint.series.values.end());
     } else {
       next_row = 0;
@@ -238,7 +241,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       std::string where;
       std::string error;
       if (!options.checkpoints->Keep(checkpoint, &where, &error)) {
-        fail_because(error, t_end);
+        summary.output_error = error;  // not the numerics' fault: the run stops, its rows kept
         break;
       }
       summary.checkpoints.push_back(where);

@@ -2,6 +2,7 @@
 // every output step. A numerical failure stops the run and keeps every row up to it.
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -35,9 +36,13 @@ struct RunSummary {
   // global_error.h), when the caller computed one; -1 otherwise.
   double error_estimate = -1.0;
   double wall_seconds = 0.0;
-  bool failed = false;
+  bool failed = false;  // a numerical failure: `failure` says when, where and why
   Failure failure;
-  double end_time = 0.0;  // where the run stopped
+  bool interrupted = false;  // stopped early on request (RunOptions::stop)
+  std::string output_error;  // a checkpoint that could not be written stopped the run: why
+  double end_time = 0.0;     // where the run stopped
+  // Ran to the end time: no failure, no interruption, no output error.
+  bool complete() const { return !failed && !interrupted && output_error.empty(); }
   EnergySummary energy;
   std::vector<std::string> checkpoints;  // where the checkpoint sink kept them (files)
   std::vector<std::string> notes;        // what the user should know (a resume's changes)
@@ -75,6 +80,9 @@ struct RunOptions {
   // the dense output as the rows are (they add no output row); times outside the run are never
   // reached.
   std::vector<double> stop_times;
+  // When set and true, the run stops after the output row it is at (a signal handler sets it);
+  // the rows so far are kept and RunSummary::interrupted is set.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // The rows a complete run writes: the start, then one per output step up to the end.

@@ -4,6 +4,8 @@
 // (docs/outputs.md).
 #pragma once
 
+#include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@ struct OutputFolderOptions {
   bool iso_mme = false;            // also write the ISO-MME data set into DIR/iso-mme
   // Listed first among summary.json's warnings: the compile's notes (Compilation::Notes).
   std::vector<std::string> notes;
+  // For an interrupted run, the signal's name for summary.json ("SIGINT"); may be empty.
+  std::function<std::string()> interrupted_by;
 };
 
 class OutputFolder : public RunSink {
@@ -28,9 +32,11 @@ class OutputFolder : public RunSink {
   void OnRow(const runtime::Model& model, const runtime::Data& data) override;
   // The state printout DIR/dump_<T>.txt.
   void OnStop(const runtime::Model& model, const runtime::Data& data) override;
-  // Every file of the folder; false with `error` naming the first file that could not be
-  // written.
+  // Every file of the folder, each tried; false with `error` naming every file that could not be
+  // written and why, one line each. summary.json lists those written before it that failed.
   bool OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) override;
+  // The names of the files (and `iso-mme/`) OnEnd wrote.
+  const std::set<std::string>& written() const { return written_; }
 
   // The state printouts written, and why others could not be.
   const std::vector<std::string>& dumps_written() const { return dumps_written_; }
@@ -41,6 +47,7 @@ class OutputFolder : public RunSink {
   runtime::AnimationRecorder animation_;
   std::vector<std::string> dumps_written_;
   std::vector<std::string> dump_errors_;
+  std::set<std::string> written_;
 };
 
 }  // namespace sled

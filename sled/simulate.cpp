@@ -68,6 +68,7 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   run_options.checkpoint_every = options.checkpoint_every;
   run_options.checkpoints = &checkpoint_folder;
   run_options.resume = options.resume;
+  run_options.stop = options.stop;
   result.summary = runtime::Run(model, data, result.series, run_options);
   if (result.summary.failed) LocateFailure(model, result.summary.failure);
 
@@ -76,9 +77,13 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
       runtime::post::FilterOutputChannels(model, result.series);
   result.filtered = std::move(filtered.series);
   result.criteria = runtime::post::EvaluateCriteria(model, result.series);
+  const double first_row = result.series.rows() > 0 ? result.series.values[0] : model.start_time;
+  if (!result.summary.complete() || first_row > model.start_time) {
+    runtime::post::MarkIncomplete(result.criteria, first_row, result.summary.end_time);
+  }
   result.warnings = result.summary.notes;
   for (std::string& warning : filtered.warnings) result.warnings.push_back(std::move(warning));
-  if (options.error_estimate && !result.summary.failed) {
+  if (options.error_estimate && result.summary.complete()) {
     const runtime::post::GlobalErrorEstimate estimate =
         runtime::post::EstimateGlobalError(model, result.series, result.criteria);
     if (estimate.computed) {

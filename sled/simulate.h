@@ -7,6 +7,7 @@
 //   if (run.failed()) std::cerr << sled::DescribeFailure(model, run.summary.failure) << '\n';
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,6 +28,9 @@ struct RunResult {
   runtime::RunSummary summary;
   runtime::TimeSeries series;    // time, then every channel of runtime::ChannelNames(model)
   runtime::TimeSeries filtered;  // the channels of groups with an SAE J211 class, filtered
+  // The criteria from the rows there are; when the rows do not cover the whole run (a failure,
+  // an interruption, a resumed run whose rows start at its checkpoint) they are incomplete and
+  // never pass (CriterionValue::incomplete).
   std::vector<runtime::post::CriterionValue> criteria;
   // What the user should know, one line each: the run's notes (a resume's changes) and the
   // groups the filters left unfiltered.
@@ -69,6 +73,9 @@ struct SimulateOptions {
   // Also run a companion at a tenth of the tolerances for the global error estimate
   // (output/post/global_error.h) in summary.error_estimate; a warning says why when it cannot.
   bool error_estimate = false;
+  // When set and true, the run stops after its current output row (a signal handler sets it):
+  // its rows so far are post-processed and handed to the sinks, summary.interrupted is set.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // Runs the Model with a fresh Data, post-processes the rows, then calls every sink's OnEnd in

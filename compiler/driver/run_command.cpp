@@ -7,10 +7,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
 #include "compiler/driver/driver_diagnostics.h"
+#include "compiler/driver/interrupt_signals.h"
+#include "compiler/driver/owned_folder.h"
 #include "compiler/driver/progress_line.h"
 #include "compiler/driver/report_command.h"
 #include "output/checkpoint_file.h"
@@ -37,7 +41,8 @@ std::string TestName(const std::string& file) {
   return name.empty() ? "sled" : name;
 }
 
-// One line per criterion value: `  hic15(occupant.head) = 173.4 (limit 700, FMVSS 208): pass`.
+// One line per criterion value: `  hic15(occupant.head) = 173.4 (limit 700, FMVSS 208): pass`;
+// criteria of rows that do not cover the whole run say so instead of judging.
 void PrintCriteria(const std::vector<runtime::post::CriterionValue>& criteria) {
   for (const runtime::post::CriterionValue& c : criteria) {
     const std::string what =
@@ -46,12 +51,20 @@ void PrintCriteria(const std::vector<runtime::post::CriterionValue>& criteria) {
       std::cerr << fmt::format("  {}: not computed: {}\n", what, c.reason);
       continue;
     }
-    std::cerr << fmt::format("  {} = {:.4g}{}{} (limit {:g}{}, {}): {}\n", what, c.value,
-                             c.unit.empty() ? "" : " ", c.unit, c.limit,
-                             c.unit.empty() ? "" : " " + c.unit, c.limit_source,
-                             c.pass ? "pass" : "FAIL");
+    const std::string unit = c.unit.empty() ? "" : " " + c.unit;
+    const std::string limit =
+        c.has_limit ? fmt::format("limit {:g}{}, {}", c.limit, unit, c.limit_source) : "no limit";
+    const std::string verdict =
+        c.incomplete   ? fmt::format("incomplete: over {:.4g} ms to {:.4g} ms of the run only",
+                                     c.seen_from * 1e3, c.seen_until * 1e3)
+        : !c.has_limit ? std::string("-")
+        : c.pass       ? std::string("pass")
+                       : std::string("FAIL");
+    std::cerr << fmt::format("  {} = {:.4g}{} ({}): {}\n", what, c.value, unit, limit, verdict);
   }
 }
+
+constexpr int kExitSignalBase = 128;  // + the signal's number, as shells report it
 
 }  // namespace
 
@@ -172,20 +185,34 @@ int RunCommand(const RunCommandOptions& options) {
     }
   }
 
+  // The folder, before any time is spent simulating: writable, ours alone, and cleared of what
+  // an earlier run left there (a checkpoint resumed from is kept).
   std::string directory = options.output_directory;
   if (directory.empty()) directory = std::filesystem::path(options.file).stem().string() + "-out";
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) {
-    std::cerr << fmt::format("sled: cannot create `{}`: {}\n", directory, error.message());
+  std::string folder_error;
+  const std::unique_ptr<OwnedFolder> owned = OwnedFolder::Open(directory, &folder_error);
+  if (!owned) {
+    std::cerr << "sled: " << folder_error << '\n';
+    return kExitInputErrors;
+  }
+  std::vector<std::filesystem::path> keep;
+  if (!resume.empty()) keep.emplace_back(resume);
+  const OwnedFolder::Cleared cleared = owned->RemoveEarlierOutputs(keep);
+  if (!cleared.error.empty()) {
+    std::cerr << fmt::format("sled: {}; the folder would mix two runs' outputs\n", cleared.error);
     return kExitInputErrors;
   }
 
+  // SIGINT, SIGTERM and SIGHUP stop the run after its current row; what it has is written.
+  const InterruptSignals signals;
   OutputFolderOptions folder_options;
   folder_options.directory = directory;
   folder_options.test_name = TestName(options.file);
   folder_options.iso_mme = options.iso_mme;
   folder_options.notes = compiled->Notes();
+  folder_options.interrupted_by = [&signals] {
+    return std::string(InterruptSignals::Name(signals.signal()));
+  };
   OutputFolder folder(model, folder_options);
   SimulateOptions simulate_options;
   ProgressLine progress(options.progress);
@@ -197,53 +224,106 @@ int RunCommand(const RunCommandOptions& options) {
   simulate_options.stop_times = options.dump_times;
   simulate_options.checkpoint_every = checkpoint_every;
   simulate_options.checkpoint_directory = directory;
+  simulate_options.stop = signals.stop();
   if (!resume.empty()) simulate_options.resume = &checkpoint;
   simulate_options.error_estimate = options.error_estimate;
   const RunResult result = Simulate(model, simulate_options, {&folder});
   const runtime::RunSummary& summary = result.summary;
+  const int signal = summary.interrupted ? signals.signal() : 0;
   progress.Clear();
   for (const std::string& warning : result.warnings) std::cerr << "sled: " << warning << '\n';
 
-  for (const std::string& failed : folder.dump_errors()) std::cerr << "sled: " << failed << '\n';
+  // Every file that could not be written, with its cause.
+  std::vector<std::string> write_errors = folder.dump_errors();
+  if (!summary.output_error.empty())
+    write_errors.insert(write_errors.begin(), summary.output_error);
+  for (const std::string& failed : result.sink_errors) {  // one line per file
+    std::size_t start = 0;
+    while (start <= failed.size()) {
+      const std::size_t end = std::min(failed.find('\n', start), failed.size());
+      write_errors.push_back(failed.substr(start, end - start));
+      start = end + 1;
+    }
+  }
   if (folder.dumps_written().size() + folder.dump_errors().size() < options.dump_times.size()) {
     std::cerr << fmt::format(
         "sled: the run stopped at t = {:.6g} s, before some `--dump-at` times\n", summary.end_time);
   }
-  if (!result.sink_errors.empty() || !folder.dump_errors().empty()) {
-    for (const std::string& failed : result.sink_errors) std::cerr << "sled: " << failed << '\n';
+  // The page reads the files just written; a run that failed numerically has its page too.
+  if (write_errors.empty() && options.report && ReportCommand(directory, "") != kExitOk) {
     return kExitInputErrors;
   }
-  // The page reads the files just written; a run that failed numerically has its page too.
-  if (options.report && ReportCommand(directory, "") != kExitOk) return kExitInputErrors;
-  PrintCriteria(result.criteria);
+  for (const std::string& failed : write_errors) std::cerr << "sled: " << failed << '\n';
+  // What an earlier run left here and this one did not write again is gone: say so.
+  std::set<std::string> written = folder.written();
+  for (const std::string& path : folder.dumps_written()) {
+    written.insert(std::filesystem::path(path).filename().string());
+  }
+  for (const std::string& path : summary.checkpoints) {
+    written.insert(std::filesystem::path(path).filename().string());
+  }
+  if (options.report) written.insert("report.html");
+  std::string stale;
+  for (const std::string& name : cleared.removed) {
+    if (!written.count(name)) stale += (stale.empty() ? "" : ", ") + name;
+  }
+  if (!stale.empty()) {
+    std::cerr << fmt::format(
+        "sled: removed what an earlier run wrote in `{}` and this one does "
+        "not: {}\n",
+        directory, stale);
+  }
+
+  // What happened, then the criteria.
   if (summary.failed) {
     std::cerr << fmt::format(
         "sled: the simulation failed {}\n  outputs up to the failure are in `{}`\n",
         DescribeFailure(model, summary.failure), directory);
-    return kExitNumericalFailure;
+  } else if (summary.interrupted) {
+    std::cerr << fmt::format(
+        "sled: interrupted by {} at t = {:.6g} s of {:.6g} s; the {} rows so far and summary.json "
+        "(status \"interrupted\") are in `{}`\n",
+        InterruptSignals::Name(signal), summary.end_time, model.end_time, result.series.rows(),
+        directory);
+  } else if (!summary.output_error.empty()) {
+    std::cerr << fmt::format(
+        "sled: the run stopped at t = {:.6g} s: an output could not be written\n",
+        summary.end_time);
+  } else if (!write_errors.empty()) {
+    std::cerr << fmt::format(
+        "sled: the run reached its end ({} rows), but {} of its outputs could not be written "
+        "(above)\n",
+        result.series.rows(), write_errors.size());
+  } else {
+    std::cerr << fmt::format(
+        "sled: {} rows to `{}` in {:.3f} s ({} steps, {} rejected, {} evaluations, {} more for "
+        "output rows)\n",
+        result.series.rows(), directory, summary.wall_seconds, summary.stats.steps,
+        summary.stats.rejected, summary.stats.evaluations, summary.output_evaluations);
   }
-  std::cerr << fmt::format(
-      "sled: {} rows to `{}` in {:.3f} s ({} steps, {} rejected, {} "
-      "evaluations, {} more for output rows)\n",
-      result.series.rows(), directory, summary.wall_seconds, summary.stats.steps,
-      summary.stats.rejected, summary.stats.evaluations, summary.output_evaluations);
   if (!summary.checkpoints.empty()) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",
                              summary.checkpoints.back());
   }
-  if (summary.error_estimate >= 0) {
+  if (summary.complete() && summary.error_estimate >= 0) {
     std::cerr << fmt::format(
         "sled: global error estimate {:.2g} of the channels' ranges (from a run at a tenth of the "
         "tolerances)\n",
         summary.error_estimate);
   }
-  const runtime::EnergySummary& energy = summary.energy;
-  std::cerr << fmt::format(
-      "sled: energy balance closes to {:.2g} % (largest residual {:.3g} J of {:.4g} J; at the "
-      "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J)\n",
-      100 * energy.relative(), energy.largest_residual, energy.scale, energy.kinetic,
-      energy.absorbed, energy.prescribed_work);
+  if (summary.complete()) {
+    const runtime::EnergySummary& energy = summary.energy;
+    std::cerr << fmt::format(
+        "sled: energy balance closes to {:.2g} % (largest residual {:.3g} J of {:.4g} J; at the "
+        "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J)\n",
+        100 * energy.relative(), energy.largest_residual, energy.scale, energy.kinetic,
+        energy.absorbed, energy.prescribed_work);
+  }
+  PrintCriteria(result.criteria);
+  if (!write_errors.empty()) return kExitInputErrors;
+  if (summary.failed) return kExitNumericalFailure;
+  if (summary.interrupted) return kExitSignalBase + signal;
   return kExitOk;
 }
 

@@ -219,15 +219,12 @@ std::string DescribeFound(std::string_view text, std::uint32_t at) {
   if (static_cast<unsigned char>(c) >= 0x80) {
     // Decode one UTF-8 sequence so the message shows the character and its code point.
     const auto lead = static_cast<unsigned char>(c);
-    const std::size_t length = lead >= 0xF0 ? 4 : lead >= 0xE0 ? 3 : lead >= 0xC0 ? 2 : 1;
-    std::uint32_t code = length == 1 ? lead : lead & (0x7Fu >> length);
-    std::size_t i = 1;
-    for (; i < length && at + i < text.size(); ++i) {
-      if (StartsCharacter(text[at + i])) break;
-      const auto next = static_cast<unsigned char>(text[at + i]);
-      code = (code << 6) | (next & 0x3Fu);
+    const std::size_t length = Utf8SequenceLength(text, at);
+    if (length < 2) return fmt::format("byte 0x{:02X}", lead);
+    std::uint32_t code = lead & (0x7Fu >> length);
+    for (std::size_t i = 1; i < length; ++i) {
+      code = (code << 6) | (static_cast<unsigned char>(text[at + i]) & 0x3Fu);
     }
-    if (length == 1 || i != length) return fmt::format("byte 0x{:02X}", lead);
     return fmt::format("character `{}` (U+{:04X})", text.substr(at, length), code);
   }
   if (static_cast<unsigned char>(c) < 0x20) {
@@ -792,6 +789,26 @@ std::unique_ptr<Node> RunGrammar(const SourceBuffer& buffer, FileId file, int ma
 
 }  // namespace
 
+// Bytes that are not UTF-8 in strings and comments (outside them the grammar reports them): a
+// title of Latin-1 text would otherwise reach summary.json and make it invalid JSON.
+void ReportInvalidUtf8(std::string_view text, FileId file, DiagnosticCollector& found) {
+  for (const std::size_t at : InvalidUtf8PerLine(text)) {
+    const bool reported = std::any_of(
+        found.diagnostics().begin(), found.diagnostics().end(),
+        [&](const Diagnostic& d) { return d.primary_range() && d.primary_range()->begin == at; });
+    if (reported) continue;
+    const auto begin = static_cast<std::uint32_t>(at);
+    auto d = MakeDiagnostic(
+        DiagnosticKind::kInvalidCharacter, {file, begin, begin + 1},
+        fmt::format("byte 0x{:02X} is not UTF-8", static_cast<unsigned char>(text[at])),
+        "not UTF-8");
+    d.help =
+        "sled files are UTF-8; save the file as UTF-8 (iconv -f latin1 -t utf-8 converts "
+        "Latin-1 text)";
+    found.Consume(std::move(d));
+  }
+}
+
 ast::File Parse(const SourceManager& sources, FileId file, const ParseOptions& options) {
   if (!options.diagnostics) throw std::logic_error("lang::Parse: options.diagnostics is null");
   const SourceBuffer& buffer = sources.buffer(file);
@@ -809,6 +826,7 @@ ast::File Parse(const SourceManager& sources, FileId file, const ParseOptions& o
     Converter converter(buffer.text(), file, found);
     converter.ConvertBlockItems(*root, result.body);
   }
+  ReportInvalidUtf8(buffer.text(), file, found);
   found.SortByPosition();
   for (const Diagnostic& diagnostic : found.diagnostics()) options.diagnostics->Consume(diagnostic);
   if (!root) {

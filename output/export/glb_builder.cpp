@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <limits>
 
 #include <fmt/format.h>
 
+#include "output/atomic_file.h"
 namespace sled::runtime {
 namespace {
 
@@ -27,12 +27,12 @@ const char* TypeName(int components) {
   }
 }
 
-void PutWord(std::ofstream& out, std::uint32_t word) {
+void PutWord(AtomicFile& out, std::uint32_t word) {
   const unsigned char bytes[4] = {static_cast<unsigned char>(word & 0xff),
                                   static_cast<unsigned char>((word >> 8) & 0xff),
                                   static_cast<unsigned char>((word >> 16) & 0xff),
                                   static_cast<unsigned char>((word >> 24) & 0xff)};
-  out.write(reinterpret_cast<const char*>(bytes), 4);
+  out.Write(std::string_view(reinterpret_cast<const char*>(bytes), 4));
 }
 
 }  // namespace
@@ -100,26 +100,18 @@ bool GlbBuilder::Write(const std::string& path, const std::string& members,
   json += members + "\n}";
   json.resize((json.size() + 3) / 4 * 4, ' ');  // the JSON chunk is padded with spaces
 
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    if (error) *error = fmt::format("cannot write `{}`", path);
-    return false;
-  }
+  AtomicFile out(path);
   const std::size_t total = 12 + 8 + json.size() + 8 + bin.size();
   PutWord(out, kMagic);
   PutWord(out, 2);
   PutWord(out, static_cast<std::uint32_t>(total));
   PutWord(out, static_cast<std::uint32_t>(json.size()));
   PutWord(out, kJsonChunk);
-  out.write(json.data(), static_cast<std::streamsize>(json.size()));
+  out.Write(json);
   PutWord(out, static_cast<std::uint32_t>(bin.size()));
   PutWord(out, kBinChunk);
-  out.write(reinterpret_cast<const char*>(bin.data()), static_cast<std::streamsize>(bin.size()));
-  if (!out) {
-    if (error) *error = fmt::format("writing `{}` failed", path);
-    return false;
-  }
-  return true;
+  out.Write(std::string_view(reinterpret_cast<const char*>(bin.data()), bin.size()));
+  return out.Commit(error);
 }
 
 }  // namespace sled::runtime

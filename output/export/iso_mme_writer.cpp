@@ -3,10 +3,10 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
-#include <fstream>
 
 #include <fmt/format.h>
 
+#include "output/atomic_file.h"
 #include "output/export/iso_mme_codes.h"
 #include "output/post/channel_filters.h"
 
@@ -23,13 +23,7 @@ std::string Number(double value) {
 }
 
 bool WriteFile(const std::filesystem::path& path, const std::string& text, std::string* error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  if (!out) {
-    if (error) *error = fmt::format("cannot write `{}`", path.string());
-    return false;
-  }
-  return true;
+  return ReplaceFile(path.string(), text, error);
 }
 
 std::string Today() {
@@ -94,9 +88,17 @@ std::string CriterionChannel(const IsoMmeChannel& channel, const post::Criterion
   } else {
     out += Field("Comments", "not computed: " + value.reason);
   }
+  if (value.incomplete) {
+    out += Field("Comments", fmt::format("incomplete: the rows cover {} s to {} s of the run "
+                                         "only; the value is over them",
+                                         Number(value.seen_from), Number(value.seen_until)));
+  }
   if (value.has_limit) {
-    out += Field("Comments", fmt::format("limit {} ({}): {}", Number(value.limit),
-                                         value.limit_source, value.pass ? "pass" : "fail"));
+    out +=
+        Field("Comments", fmt::format("limit {} ({}): {}", Number(value.limit), value.limit_source,
+                                      value.incomplete ? "not judged (incomplete)"
+                                      : value.pass     ? "pass"
+                                                       : "fail"));
   }
   out += Field("Data status", value.computed ? "ok" : "NOVALUE");
   out += (value.computed ? Number(value.value) : std::string("NOVALUE")) + "\n";

@@ -1,9 +1,8 @@
 #include "output/export/state_dump.h"
 
-#include <fstream>
-
 #include <fmt/format.h>
 
+#include "output/atomic_file.h"
 #include "runtime/constraints.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -233,13 +232,7 @@ std::string StateDumpFileName(double t) { return fmt::format("dump_{}.txt", t); 
 
 bool WriteStateDump(const std::string& path, const Model& model, const Data& data,
                     std::string* error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << StateDump(model, data);
-  if (!out) {
-    if (error) *error = fmt::format("cannot write `{}`", path);
-    return false;
-  }
-  return true;
+  return ReplaceFile(path, StateDump(model, data), error);
 }
 
 }  // namespace sled::runtime

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace sled::runtime::post {
 
@@ -20,6 +21,23 @@ struct CriterionValue {
   double limit = 0.0;
   std::string limit_source;  // the regulation that gives the limit
   bool pass = true;          // value <= limit (true without a limit)
+  // The rows do not cover the whole run: it stopped before its end (a numerical failure, an
+  // interruption), or a resumed run's rows start at its checkpoint. The value is over the rows
+  // from `seen_from` to `seen_until` only and says nothing of the rest, so it neither passes
+  // nor fails.
+  bool incomplete = false;
+  double seen_from = 0.0;
+  double seen_until = 0.0;
 };
+
+// Marks every criterion of rows that cover only [seen_from, seen_until] of the run incomplete.
+inline void MarkIncomplete(std::vector<CriterionValue>& criteria, double seen_from,
+                           double seen_until) {
+  for (CriterionValue& c : criteria) {
+    c.incomplete = true;
+    c.seen_from = seen_from;
+    c.seen_until = seen_until;
+  }
+}
 
 }  // namespace sled::runtime::post

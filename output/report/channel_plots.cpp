@@ -1,5 +1,6 @@
 #include "output/report/channel_plots.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -12,6 +13,9 @@
 
 namespace sled::report {
 namespace {
+
+// The most plots one page holds (each is a few kilobytes of SVG).
+constexpr std::size_t kMaxPlots = 500;
 
 // Distinct hues for the components of one plot (x, y, z, normal, ...).
 constexpr std::array<const char*, 8> kPalette = {"#1f5fbf", "#d62728", "#2a9d3a", "#8e44ad",
@@ -95,8 +99,17 @@ std::string ChannelPlotsSection(const ChannelTable& raw, const ChannelTable* fil
       raw.names.size(), groups.size(),
       filtered ? "Each filtered channel (bold) is drawn over its raw one (light)."
                : "No filtered channels were found (timeseries_filtered.csv).");
+  // A page of many thousand plots opens in no browser: the first ones, and a note.
+  const std::size_t plotted = std::min(groups.size(), kMaxPlots);
+  if (plotted < groups.size()) {
+    html += fmt::format(
+        "<p class=\"note\">The first {} of the {} plots are shown; every channel is in "
+        "timeseries.csv.</p>",
+        plotted, groups.size());
+  }
   html += "<div class=\"plots\">";
-  for (const ChannelGroup& group : groups) {
+  for (std::size_t g = 0; g < plotted; ++g) {
+    const ChannelGroup& group = groups[g];
     // "occupant.head: acceleration", or the base alone when it names no known quantity.
     const std::string title =
         group.quantity.empty() ? group.base : group.request + ": " + group.quantity;

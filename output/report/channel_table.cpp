@@ -35,6 +35,10 @@ double ToNumber(std::string_view field) {
 }  // namespace
 
 const std::vector<double>* ChannelTable::Find(const std::string& name) const {
+  if (!index.empty()) {
+    const auto at = index.find(name);
+    return at == index.end() ? nullptr : &columns[at->second];
+  }
   for (std::size_t c = 0; c < names.size(); ++c) {
     if (names[c] == name) return &columns[c];
   }
@@ -61,7 +65,10 @@ std::optional<ChannelTable> ParseChannelTable(const std::string& text, std::stri
       if (fields.front().substr(0, 4) != "time") {
         return fail("the first column is not the time");
       }
-      for (std::size_t f = 1; f < fields.size(); ++f) table.names.emplace_back(fields[f]);
+      for (std::size_t f = 1; f < fields.size(); ++f) {
+        table.index.emplace(fields[f], table.names.size());
+        table.names.emplace_back(fields[f]);
+      }
       table.columns.resize(table.names.size());
       header = false;
       continue;

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace sled::report {
@@ -12,6 +13,8 @@ struct ChannelTable {
   std::vector<double> time;                  // [s], one per row
   std::vector<std::string> names;            // the channels, without the time column
   std::vector<std::vector<double>> columns;  // columns[c][row]
+  // The column of each name, for Find (ParseChannelTable fills it; empty: a linear search).
+  std::unordered_map<std::string, std::size_t> index;
 
   // The column of `name`, or nullptr.
   const std::vector<double>* Find(const std::string& name) const;

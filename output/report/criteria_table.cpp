@@ -15,6 +15,12 @@ std::string Verdict(const CriterionSummary& c) {
     return fmt::format("<td class=\"verdict none\">not computed{}</td>",
                        c.reason.empty() ? "" : ": " + EscapeHtml(c.reason));
   }
+  if (c.incomplete()) {
+    return fmt::format(
+        "<td class=\"verdict incomplete\">incomplete: over {} ms to {} ms of the run only</td>",
+        c.seen_from ? Milliseconds(*c.seen_from) : "?",
+        c.seen_until ? Milliseconds(*c.seen_until) : "?");
+  }
   if (!c.limit) return "<td class=\"verdict none\">no limit</td>";
   const bool pass = c.pass.value_or(false);
   return fmt::format("<td class=\"verdict {0}\">{0}</td>", pass ? "pass" : "fail");
@@ -29,11 +35,24 @@ std::string CriteriaSection(const std::vector<CriterionSummary>& criteria) {
   }
   int passed = 0;
   int failed = 0;
+  int incomplete = 0;
   for (const CriterionSummary& c : criteria) {
-    if (c.value && c.limit) (c.pass.value_or(false) ? passed : failed) += 1;
+    if (c.value && c.incomplete()) {
+      ++incomplete;
+    } else if (c.value && c.limit) {
+      (c.pass.value_or(false) ? passed : failed) += 1;
+    }
   }
-  html += fmt::format("<p class=\"note\">{} of {} criteria with a limit pass{}.</p>", passed,
-                      passed + failed, failed > 0 ? fmt::format("; {} fail", failed) : "");
+  if (incomplete > 0) {
+    html += fmt::format(
+        "<p class=\"note incomplete\">The rows do not cover the whole run: {} of the criteria "
+        "are incomplete, their values over the part of the run there is, and are not "
+        "judged.</p>",
+        incomplete);
+  } else {
+    html += fmt::format("<p class=\"note\">{} of {} criteria with a limit pass{}.</p>", passed,
+                        passed + failed, failed > 0 ? fmt::format("; {} fail", failed) : "");
+  }
   html +=
       "<table class=\"criteria\"><thead><tr><th>criterion</th><th>of</th><th>value</th>"
       "<th>limit</th><th>window [ms]</th><th>CFC</th><th>limit from</th><th>result</th></tr>"

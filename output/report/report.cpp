@@ -1,11 +1,11 @@
 #include "output/report/report.h"
 
-#include <fstream>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "lang/source/source_manager.h"
+#include "output/atomic_file.h"
 #include "output/report/report_page.h"
 
 namespace sled::report {
@@ -59,13 +59,7 @@ ReportResult WriteReport(const std::filesystem::path& directory,
     inputs.notes.emplace_back("animation.glb is missing: the page has no animation");
   }
   const std::string page = BuildReportPage(inputs);
-  std::ofstream out(output, std::ios::binary | std::ios::trunc);
-  out << page;
-  out.close();
-  if (!out) {
-    result.error = fmt::format("cannot write `{}`", output.string());
-    return result;
-  }
+  if (!runtime::ReplaceFile(output.string(), page, &result.error)) return result;
   result.written = true;
   result.notes = std::move(inputs.notes);
   return result;

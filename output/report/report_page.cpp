@@ -6,6 +6,7 @@
 #include "output/report/channel_plots.h"
 #include "output/report/criteria_table.h"
 #include "output/report/html_text.h"
+#include "output/report/number_text.h"
 #include "output/report/report_assets.h"
 #include "output/report/summary_tables.h"
 
@@ -34,12 +35,19 @@ std::string Header(const ReportInputs& inputs) {
   const std::string title = s.scenario.empty() ? inputs.folder : s.scenario;
   std::string html = fmt::format("<header><h1>{}</h1><p class=\"subtitle\">", EscapeHtml(title));
   html += fmt::format("<span class=\"badge {}\">{}</span> ", s.status == "ok" ? "ok" : "failed",
-                      s.status == "ok" ? "completed" : "failed");
+                      s.status == "ok" ? std::string("completed") : EscapeHtml(s.status));
   int failed = 0;
+  bool incomplete = s.status != "ok";
   for (const CriterionSummary& c : s.criteria) {
-    if (c.value && c.limit && !c.pass.value_or(false)) ++failed;
+    if (c.value && c.limit && !c.incomplete() && !c.pass.value_or(false)) ++failed;
+    incomplete = incomplete || c.incomplete();
   }
-  if (!s.criteria.empty()) {
+  if (!s.criteria.empty() && incomplete) {
+    // A run that stopped early shows nothing green: its criteria saw only part of it.
+    html +=
+        "<span class=\"badge failed\">criteria incomplete: the rows do not cover the whole "
+        "run</span> ";
+  } else if (!s.criteria.empty()) {
     html += fmt::format("<span class=\"badge {}\">{}</span> ", failed == 0 ? "ok" : "failed",
                         failed == 0   ? std::string("criteria within limits")
                         : failed == 1 ? std::string("1 criterion over its limit")

@@ -1,5 +1,8 @@
 #include "output/report/run_summary.h"
 
+#include <limits>
+#include <type_traits>
+
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -9,7 +12,8 @@ namespace {
 using Json = nlohmann::json;
 
 // Reads the members of one JSON object into fields; the first member of the wrong type is
-// remembered as the error. A missing member or a null leaves the field as it was.
+// remembered as the error. A missing member leaves the field as it was; a null (sled writes a
+// number that is not finite as null) makes a floating-point field NaN, shown as "–".
 class MemberReader {
  public:
   MemberReader(const Json& object, std::string path, std::string* error)
@@ -17,6 +21,10 @@ class MemberReader {
 
   template <typename T>
   void Number(const char* key, T& out) {
+    if constexpr (std::is_floating_point_v<T>) {
+      const auto at = object_.find(key);
+      if (at != object_.end() && at->is_null()) out = std::numeric_limits<T>::quiet_NaN();
+    }
     if (const Json* value = Find(key)) {
       if (value->is_number()) {
         out = value->get<T>();
@@ -142,6 +150,9 @@ CriterionSummary ReadCriterion(const Json& object, std::size_t index, std::strin
   in.OptionalNumber("limit", out.limit);
   in.Text("limit_source", out.limit_source);
   in.OptionalBool("pass", out.pass);
+  in.Text("verdict", out.verdict);
+  in.OptionalNumber("seen_from", out.seen_from);
+  in.OptionalNumber("seen_until", out.seen_until);
   in.Text("reason", out.reason);
   return out;
 }

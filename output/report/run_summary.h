@@ -55,8 +55,15 @@ struct CriterionSummary {
   int filter_class = 0;
   std::optional<double> limit;
   std::string limit_source;
-  std::optional<bool> pass;  // nullopt: not computed
+  std::optional<bool> pass;  // nullopt: not computed, or not judged (incomplete)
+  // "pass", "fail", "no limit", "not computed" or "incomplete" (the run stopped early: the value
+  // is over the rows up to `seen_until`); empty in summaries written before verdicts.
+  std::string verdict;
+  std::optional<double> seen_from;
+  std::optional<double> seen_until;
   std::string reason;
+
+  bool incomplete() const { return verdict == "incomplete"; }
 };
 
 // A channel's peak: its value of largest magnitude and when (summary.json's `peaks`).
@@ -69,7 +76,7 @@ struct PeakSummary {
 
 struct RunSummaryFile {
   std::string scenario;
-  std::string status;  // "ok" or "failed"
+  std::string status;  // "ok", "failed", "interrupted" or "write_failed"
   double start_time = 0.0;
   double end_time = 0.0;
   double stopped_at = 0.0;

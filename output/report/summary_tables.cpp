@@ -24,9 +24,13 @@ std::string RunSection(const RunSummaryFile& summary) {
   std::string html = "<section id=\"run\"><h2>Run</h2>";
   html += fmt::format(
       "<p class=\"status {}\">{}</p>", ok ? "ok" : "failed",
-      ok ? "completed"
-         : EscapeHtml("failed" +
-                      (summary.status == "failed" ? std::string() : " (" + summary.status + ")")));
+      ok                                ? std::string("completed")
+      : summary.status == "interrupted" ? "interrupted at " + Milliseconds(summary.stopped_at) +
+                                              " ms (the rows up to then are kept)"
+      : summary.status == "write_failed"
+          ? "stopped at " + Milliseconds(summary.stopped_at) + " ms: an output could not be written"
+          : EscapeHtml("failed" +
+                       (summary.status == "failed" ? std::string() : " (" + summary.status + ")")));
   if (summary.failure) {
     const FailureSummary& f = *summary.failure;
     std::string where = EscapeHtml(f.where);

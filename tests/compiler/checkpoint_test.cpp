@@ -78,10 +78,47 @@ TEST_F(CheckpointTest, ChangedOutputsResumeFromTheCheckpointTime) {
   const SledResult resume =
       Sled({"run", more, "-o", Out("more"), "--resume", Out("full") + "/checkpoint_0.020000s.bin"});
   ASSERT_EQ(resume.exit_code, 0) << resume.err;
-  EXPECT_NE(resume.err.find("the rows start at 0.02 s"), std::string::npos) << resume.err;
+  EXPECT_NE(resume.err.find("every channel's rows start at the checkpoint's time, 0.02 s"),
+            std::string::npos)
+      << resume.err;
   const std::string csv = ReadText(fs::path(Out("more")) / "timeseries.csv");
   EXPECT_NE(csv.find("occupant.head.position.x"), std::string::npos);
   EXPECT_NE(csv.find("\n0.02,"), std::string::npos);  // the first row is the checkpoint's time
+  // The criteria saw 20 ms to 40 ms only: they are not judged.
+  EXPECT_NE(resume.err.find("incomplete: over 20 ms to 40 ms of the run only"), std::string::npos)
+      << resume.err;
+  EXPECT_EQ(resume.err.find(": pass"), std::string::npos) << resume.err;
+}
+
+TEST_F(CheckpointTest, AMovedOutputPointRestartsTheRowsInsteadOfMixingTwoPoints) {
+  // The same channel names, another point: rows before the checkpoint are of the old point.
+  const std::string scene =
+      Write("scene.sled", FlagshipScene("40 ms", "    position occupant.head at (0, 0, 0) mm\n"));
+  ASSERT_EQ(Sled({"run", scene, "-o", Out("full"), "--checkpoint-every", "20ms"}).exit_code, 0);
+  const std::string moved =
+      Write("moved.sled", FlagshipScene("40 ms", "    position occupant.head at (0, 0, 100) mm\n"));
+  const SledResult resume = Sled(
+      {"run", moved, "-o", Out("moved"), "--resume", Out("full") + "/checkpoint_0.020000s.bin"});
+  ASSERT_EQ(resume.exit_code, 0) << resume.err;
+  const std::string csv = ReadText(fs::path(Out("moved")) / "timeseries.csv");
+  EXPECT_EQ(csv.find("\n0,"), std::string::npos) << "rows before the checkpoint were kept";
+  EXPECT_NE(csv.find("\n0.02,"), std::string::npos);
+}
+
+TEST_F(CheckpointTest, AnAddedCriterionResumesWithIncompleteCriteria) {
+  const std::string scene = Write("scene.sled", Scene("40 ms"));
+  ASSERT_EQ(Sled({"run", scene, "-o", Out("full"), "--checkpoint-every", "20ms"}).exit_code, 0);
+  std::string text = ReadText(scene);
+  const std::string criteria = "criteria = hic15(occupant.head)";
+  ASSERT_NE(text.find(criteria), std::string::npos);
+  text.replace(text.find(criteria), criteria.size(),
+               "criteria = hic36(occupant.head), hic15(occupant.head)");
+  const std::string more = Write("more.sled", text);
+  const SledResult resume =
+      Sled({"run", more, "-o", Out("more"), "--resume", Out("full") + "/checkpoint_0.020000s.bin"});
+  ASSERT_EQ(resume.exit_code, 0) << resume.err;
+  EXPECT_NE(resume.err.find("hic36(occupant.head) = "), std::string::npos) << resume.err;
+  EXPECT_NE(resume.err.find("incomplete: over 20 ms to 40 ms"), std::string::npos);
 }
 
 TEST_F(CheckpointTest, AnIncompatibleSceneOrFileIsRefused) {

@@ -7,7 +7,9 @@
 
 namespace sled::testing {
 
-inline std::string StiffFloor(const std::string& stiffness, const std::string& integrator) {
+// `outputs`: the statements of the output block.
+inline std::string StiffFloor(const std::string& stiffness, const std::string& integrator,
+                              const std::string& outputs = "position ball.sphere") {
   return R"(scenario "stiff floor" {
   time { end = 100 ms  output_every = 1 ms }
   )" + integrator +
@@ -23,7 +25,10 @@ inline std::string StiffFloor(const std::string& stiffness, const std::string& i
   contact ball.sphere with floor { force = )" +
          stiffness + R"( }
   initial ball { position = (0, 0, 70) mm }
-  output { position ball.sphere }
+  output {
+    )" + outputs +
+         R"(
+  }
 }
 )";
 }

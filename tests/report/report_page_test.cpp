@@ -99,7 +99,10 @@ TEST(ReportPage, HoldsTheSummaryAndTheFailure) {
 }
 
 TEST(ReportPage, CriteriaTableGivesValuesLimitsAndVerdicts) {
-  const std::string page = BuildReportPage(Inputs());
+  ReportInputs inputs = Inputs();
+  inputs.summary.status = "ok";
+  inputs.summary.failure.reset();
+  const std::string page = BuildReportPage(inputs);
   const std::size_t table = page.find("<table class=\"criteria\">");
   ASSERT_NE(table, std::string::npos);
   const std::string criteria = page.substr(table, page.find("</table>", table) - table);
@@ -112,6 +115,27 @@ TEST(ReportPage, CriteriaTableGivesValuesLimitsAndVerdicts) {
   EXPECT_EQ(Count(criteria, "class=\"verdict pass\""), 1);
   EXPECT_NE(criteria.find("not computed: never in this quadrant"), std::string::npos);
   EXPECT_NE(page.find("1 criterion over its limit"), std::string::npos);
+}
+
+TEST(ReportPage, AFailedRunsCriteriaAreIncompleteNeverWithinLimits) {
+  // A run that failed at 42.1 ms: its criteria, as summary.json gives them, are incomplete.
+  ReportInputs inputs = Inputs();
+  for (CriterionSummary& c : inputs.summary.criteria) {
+    if (!c.value) continue;
+    c.pass.reset();
+    c.verdict = "incomplete";
+    c.seen_from = 0.0;
+    c.seen_until = 0.0421;
+  }
+  inputs.summary.criteria[0].value = 12.0;  // below its limit, as far as the rows go
+  const std::string page = BuildReportPage(inputs);
+  EXPECT_EQ(page.find("criteria within limits"), std::string::npos);
+  EXPECT_EQ(page.find("class=\"verdict pass\""), std::string::npos);
+  EXPECT_NE(page.find("criteria incomplete"), std::string::npos);
+  EXPECT_EQ(Count(page, "incomplete: over 0 ms to 42.1 ms of the run only"), 2);
+  // Even a summary of an older sled, whose failed run says `pass`, shows no green badge.
+  const std::string old_page = BuildReportPage(Inputs());
+  EXPECT_EQ(old_page.find("criteria within limits"), std::string::npos);
 }
 
 TEST(ReportPage, PlotsEachChannelGroupWithFilteredOverRaw) {
