@@ -19,9 +19,10 @@ namespace {
 using runtime::Archive;
 using runtime::Checkpoint;
 
-// Format 2 ends with a 16-hex-digit FNV-1a checksum of everything between the magic line and
-// it, so that a damaged file (a flipped byte, a torn write) is refused rather than resumed from.
-constexpr char kMagic[] = "sled checkpoint 2\n";
+// Format 3 (2 with the table-range records in the Data's state) ends with a 16-hex-digit FNV-1a
+// checksum of everything between the magic line and it, so that a damaged file (a flipped byte, a
+// torn write) is refused rather than resumed from.
+constexpr char kMagic[] = "sled checkpoint 3\n";
 constexpr char kMagicPrefix[] = "sled checkpoint ";
 constexpr std::size_t kChecksumDigits = 16;
 

@@ -250,6 +250,19 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   }
   WriteCriteria(out, extras.criteria, number);
   WritePeaks(out, extras.peaks, number);
+  out << "  \"table_extrapolations\": [";
+  for (std::size_t i = 0; i < extras.extrapolations.size(); ++i) {
+    const TableExtrapolation& x = extras.extrapolations[i];
+    out << (i == 0 ? "\n    {" : ",\n    {");
+    out << fmt::format(
+        "\"element\": {}, \"argument\": {}, \"first_time\": {}, \"first_argument\": {}, "
+        "\"farthest_argument\": {}, \"rows_from\": {}, \"rows_to\": {}}}",
+        JsonString(x.element), JsonString(x.argument), number("first_time", x.first_time),
+        number("first_argument", x.first_argument),
+        number("farthest_argument", x.farthest_argument), number("rows_from", x.low),
+        number("rows_to", x.high));
+  }
+  out << (extras.extrapolations.empty() ? "],\n" : "\n  ],\n");
   std::vector<std::string> warnings = extras.warnings;
   warnings.insert(warnings.end(), number.notes().begin(), number.notes().end());
   out << "  \"warnings\": [";

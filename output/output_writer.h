@@ -10,6 +10,7 @@
 #include "output/post/channel_peaks.h"
 #include "output/post/criterion_value.h"
 #include "runtime/run.h"
+#include "runtime/table_range.h"
 
 namespace sled::runtime {
 
@@ -21,6 +22,7 @@ struct SummaryExtras {
   std::vector<post::CriterionValue> criteria;
   std::string interrupted_by;            // the signal that interrupted the run: "SIGINT", ...
   std::vector<post::ChannelPeak> peaks;  // each channel's extreme of largest magnitude
+  std::vector<TableExtrapolation> extrapolations;  // elements that left their tables' rows
 };
 
 // The run's status word: "ok", "failed" (numerical failure), "interrupted" or "write_failed"

@@ -75,6 +75,7 @@ void SerializeData(Archive& archive, Data& data) {
   data.contacts.Serialize(archive);
   data.belts.Serialize(archive);
   data.airbags.Serialize(archive);
+  data.table_watch.Serialize(archive);
   archive.Field(data.energy);
   archive.Field(data.vehicle_power);
   archive.Field(data.evaluations);

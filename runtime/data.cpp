@@ -48,6 +48,7 @@ Data MakeData(const Model& model) {
   data.u_vector.assign(n, Vec6::Zero());
   data.spring_length.assign(model.nspring(), 0.0);
   data.spring_force.assign(model.nspring(), 0.0);
+  SizeTableWatch(model, data.table_watch);
   SizeContactState(model, data.contacts);
   SizeAirbagState(model, data);
   SetUpConstraints(model, data);

@@ -15,6 +15,7 @@
 #include "runtime/model.h"
 #include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
+#include "runtime/table_range.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -78,6 +79,8 @@ struct Data {
   // Spring–dampers: current length and force (positive in tension).
   std::vector<double> spring_length;
   std::vector<double> spring_force;
+  // Elements whose argument left their table's rows: when and how far (runtime/table_range.h).
+  TableWatch table_watch;
 
   // Contacts: per pair deflection, force and point, the loading history and work arrays.
   ContactState contacts;

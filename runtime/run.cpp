@@ -151,6 +151,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     initial_potential = PotentialEnergy(model, data);
     data.energy.initial = KineticEnergy(model, data) + initial_potential;
     UpdateEnergy(model, data, initial_potential, summary.energy);
+    WatchTablesAtRow(model, data);
     AppendRow(model, data, series);
     if (options.observer) options.observer->OnRow(model, data);
   } else {
@@ -210,6 +211,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       if (row_next && (!stop_next || row_time(next_row) <= stops[next_stop])) {
         if (!evaluate_at(row_time(next_row))) break;
         UpdateEnergy(model, data, initial_potential, summary.energy);
+        WatchTablesAtRow(model, data);
         AppendRow(model, data, series);
         if (options.observer) options.observer->OnRow(model, data);
         ++next_row;
@@ -221,13 +223,18 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
         for (; next_stop < stops.size() && same_time(stops[next_stop], data.time); ++next_stop) {
           if (options.observer) options.observer->OnStop(model, data);
         }
+        // A stop request (a signal) ends the run after this row.
+        if (options.stop != nullptr && options.stop->load() && next_row < outputs) {
+          summary.interrupted = true;
+          break;
+        }
       } else {
         if (!evaluate_at(stops[next_stop])) break;
         if (options.observer) options.observer->OnStop(model, data);
         ++next_stop;
       }
     }
-    if (summary.failed) break;
+    if (summary.failed || summary.interrupted) break;
     if (every > 0 && t_end >= checkpoint_time(next_checkpoint) - 1e-12 * every &&
         t_end < model.end_time) {
       Checkpoint checkpoint;

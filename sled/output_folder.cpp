@@ -57,6 +57,7 @@ bool OutputFolder::OnEnd(const runtime::Model& model, const RunResult& result, s
   if (!result.summary.output_error.empty()) extras.warnings.push_back(result.summary.output_error);
   extras.criteria = result.criteria;
   extras.peaks = runtime::post::ChannelPeaks(result.series, result.filtered);
+  extras.extrapolations = result.extrapolations;
   if (result.summary.interrupted && options_.interrupted_by) {
     extras.interrupted_by = options_.interrupted_by();
   }

@@ -82,6 +82,10 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
     runtime::post::MarkIncomplete(result.criteria, first_row, result.summary.end_time);
   }
   result.warnings = result.summary.notes;
+  result.extrapolations = runtime::TableExtrapolations(model, data);
+  for (const runtime::TableExtrapolation& e : result.extrapolations) {
+    result.warnings.push_back("warning: " + e.Describe());
+  }
   for (std::string& warning : filtered.warnings) result.warnings.push_back(std::move(warning));
   if (options.error_estimate && result.summary.complete()) {
     const runtime::post::GlobalErrorEstimate estimate =

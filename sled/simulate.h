@@ -17,6 +17,7 @@
 #include "runtime/data.h"
 #include "runtime/model.h"
 #include "runtime/run.h"
+#include "runtime/table_range.h"
 
 namespace sled {
 
@@ -32,6 +33,9 @@ struct RunResult {
   // an interruption, a resumed run whose rows start at its checkpoint) they are incomplete and
   // never pass (CriterionValue::incomplete).
   std::vector<runtime::post::CriterionValue> criteria;
+  // The elements whose argument left their table function's rows, once each, when and how far
+  // (runtime/table_range.h); each is also among the warnings.
+  std::vector<runtime::TableExtrapolation> extrapolations;
   // What the user should know, one line each: the run's notes (a resume's changes) and the
   // groups the filters left unfiltered.
   std::vector<std::string> warnings;

@@ -19,8 +19,11 @@ void SizeContactState(const Model& model, ContactState& state) {
   state.engaged.assign(n, 1);  // until the first accepted step says whether they touch
   state.any_commit = false;
   for (std::size_t k = 0; k < n; ++k) {
+    // Tables too: their deflections are watched for the rows' end (runtime/table_range.h).
     state.any_commit = state.any_commit || table.pair_impulse[k] ||
-                       HasHysteresis(model.functions, table.pair_function[k]);
+                       HasHysteresis(model.functions, table.pair_function[k]) ||
+                       model.functions.kind[static_cast<std::size_t>(table.pair_function[k])] ==
+                           FunctionTable::Kind::kTable;
   }
   state.ellipsoid_center.assign(table.nellipsoid(), Vec3::Zero());
   state.ellipsoid_rotation.assign(table.nellipsoid(), Mat3::Identity());

@@ -10,6 +10,7 @@
 #include "runtime/functions.h"
 #include "runtime/restraint/belt_slip.h"
 #include "runtime/restraint/belt_wrap.h"
+#include "runtime/table_range.h"
 #include "runtime/vehicle.h"
 
 namespace sled::runtime {
@@ -159,8 +160,13 @@ void CommitEvaluated(const Model& model, Data& data) {
             state.committed_rest_length.begin());
   for (std::size_t span = 0; span < state.rest_length.size(); ++span) {
     const double strain = state.length[span] / state.rest_length[span] - 1.0;
-    UpdateLoadingHistory(model.functions, table.function[Index(state.span_belt[span])], strain,
-                         state.history[span]);
+    const std::size_t belt = Index(state.span_belt[span]);
+    UpdateLoadingHistory(model.functions, table.function[belt], strain, state.history[span]);
+    // Taut webbing past its table's rows runs on the extrapolation (runtime/table_range.h).
+    if (strain > 0) {
+      RecordTableArgument(model.functions, table.function[belt], data.time, strain,
+                          data.table_watch.belt[belt]);
+    }
   }
   for (std::size_t k = 0; k < table.npoint(); ++k) {
     if (!table.point_wraps[k]) continue;
