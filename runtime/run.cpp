@@ -141,9 +141,11 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       next_row = 0;
       while (next_row < outputs && row_time(next_row) < checkpoint.time) ++next_row;
       if (next_row < outputs) {
-        summary.notes.push_back(
-            fmt::format("the output requests differ from the checkpoint's: the rows start at {} s",
-                        row_time(next_row)));
+        summary.notes.push_back(fmt::format(
+            "the output requests or criteria differ from the checkpoint's (added, removed, or a "
+            "point, target or filter changed): every channel's rows start at the checkpoint's "
+            "time, {} s, and the criteria see the run from there",
+            row_time(next_row)));
       }
     }
   } else if (Failure failure; Forward(model, data, &failure)) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/contact/contact_forces.h"
 #include "runtime/data.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -58,6 +59,12 @@ void RecordTableArgument(const FunctionTable& functions, std::int32_t id, double
     record.farthest_argument = x;
     return;
   }
+  // Rows are read from a step's dense output after the step's end was watched: the earliest
+  // time seen is the first.
+  if (t < record.first_time) {
+    record.first_time = t;
+    record.first_argument = x;
+  }
   const double farthest = record.farthest_argument > high ? record.farthest_argument - high
                                                           : low - record.farthest_argument;
   if (distance > farthest) record.farthest_argument = x;
@@ -65,6 +72,7 @@ void RecordTableArgument(const FunctionTable& functions, std::int32_t id, double
 
 void WatchTablesAtRow(const Model& model, Data& data) {
   const FunctionTable& functions = model.functions;
+  WatchContactTables(model, data);
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     const auto& f = model.joint_function[s];
     if (!IsTable(functions, f[0]) && !IsTable(functions, f[1]) && !IsTable(functions, f[2])) {

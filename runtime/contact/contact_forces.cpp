@@ -190,15 +190,23 @@ void CommitContactHistory(const Model& model, Data& data) {
   for (std::size_t k = 0; k < table.npair(); ++k) {
     const std::int32_t f = table.pair_function[k];
     const bool history = HasHysteresis(model.functions, f);
-    const bool tabulated =
-        model.functions.kind[static_cast<std::size_t>(f)] == FunctionTable::Kind::kTable;
-    if (!history && !table.pair_impulse[k] && !tabulated) continue;
+    if (!history && !table.pair_impulse[k]) continue;
     const ContactGeometry g = BoundedGeometry(model, data, k);
     if (table.pair_impulse[k]) state.engaged[k] = g.touching ? 1 : 0;
     if (history && g.touching) {
       UpdateLoadingHistory(model.functions, f, g.deflection, state.history[k]);
     }
+  }
+  WatchContactTables(model, data);
+}
+
+void WatchContactTables(const Model& model, Data& data) {
+  const ContactTable& table = model.contacts;
+  for (std::size_t k = 0; k < table.npair(); ++k) {
+    const std::int32_t f = table.pair_function[k];
+    if (model.functions.kind[static_cast<std::size_t>(f)] != FunctionTable::Kind::kTable) continue;
     // A deflection past the table's rows runs on its extrapolation: the run reports it.
+    const ContactGeometry g = BoundedGeometry(model, data, k);
     if (g.touching) {
       RecordTableArgument(model.functions, f, data.time, g.deflection, data.table_watch.contact[k]);
     }

@@ -22,6 +22,10 @@ void AccumulateContactForces(const Model& model, Data& data);
 // the impulse.
 void CommitContactHistory(const Model& model, Data& data);
 
+// With data's kinematics and surfaces current (after an accepted step or at an output row):
+// records each tabulated contact's deflection past its table's rows (runtime/table_range.h).
+void WatchContactTables(const Model& model, Data& data);
+
 // World poses of the contact surfaces from the current kinematics (into data.contacts).
 void PlaceContactSurfaces(const Model& model, Data& data);
 

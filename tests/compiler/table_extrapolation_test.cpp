@@ -22,10 +22,10 @@ using testing::SledResult;
 
 using TableExtrapolation = testing::SledProcessTest;
 
-// A 2 kg ball at 3 m/s, without gravity (the default is -9.81 m/s^2 along z), onto a floor whose contact force is 200 kN/m written
-// as a table that ends at `rows_to` mm. The extrapolation continues the same line, so the motion
-// is a linear spring's: contact at t0 = gap / v, deflection x(t) = X sin(w (t - t0)) with
-// w = sqrt(k / m) and X = v / w.
+// A 2 kg ball at 3 m/s, without gravity (the default is -9.81 m/s^2 along z), onto a floor whose
+// contact force is 200 kN/m written as a table that ends at `rows_to` mm. The extrapolation
+// continues the same line, so the motion is a linear spring's: contact at t0 = gap / v, deflection
+// x(t) = X sin(w (t - t0)) with w = sqrt(k / m) and X = v / w.
 std::string Ball(double rows_to_mm) {
   return fmt::format(R"(scenario "ball" {{
   gravity = (0, 0, 0) m/s^2
@@ -70,9 +70,9 @@ TEST_F(TableExtrapolation, AContactPastItsTableIsReportedOnceWithTimeAndDepth) {
   const auto& e = summary["table_extrapolations"][0];
   EXPECT_EQ(e["element"], "contact `ball.s` with `floor`");
   EXPECT_EQ(e["rows_to"].get<double>(), rows_to);
-  // Watched at every accepted step, and steps end at the rows 0.1 ms apart: the first crossing
-  // is reported at the first step end after it, and the deepest point as the deepest step end,
-  // at most half a step h from the peak: X (1 - cos(w h / 2)) below it.
+  // Watched at every accepted step and at every output row, 0.1 ms apart: the first crossing is
+  // reported at the first row or step end after it, and the deepest point as the deepest of
+  // them, at most half a row h from the peak: X (1 - cos(w h / 2)) below it.
   const double row = 1e-4;
   EXPECT_GE(e["first_time"].get<double>(), first_time - 1e-9);
   EXPECT_LE(e["first_time"].get<double>(), first_time + row);
