@@ -219,12 +219,12 @@ void Checker::CheckBodyDetails() {
 
     // Attributes that only some joint types have.
     const bool euler = joint.type == JointType::kEuler;
-    auto only_for = [&](std::string_view name, bool allowed, std::string_view types) {
+    auto only_for = [&](AttributeKey name, bool allowed, std::string_view types) {
       const ast::Statement* attribute = One(bound, name);
       if (attribute && !allowed) {
         Report(DiagnosticKind::kMisplacedStatement, attribute->keyword_range,
-               fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name, types, joint.name,
-                           JointTypeName(joint.type)),
+               fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name.view(), types,
+                           joint.name, JointTypeName(joint.type)),
                "not for this joint type", "remove it, or change the joint's type");
         return false;
       }

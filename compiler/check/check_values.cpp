@@ -2,6 +2,7 @@
 // parameters, and reading typed attributes (quantities, vectors, functions).
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,17 @@ std::string Article(std::string_view word) {
   return (!word.empty() && std::string_view("aeiou").find(word[0]) != std::string_view::npos)
              ? fmt::format("an `{}`", word)
              : fmt::format("a `{}`", word);
+}
+
+// The schema's entry for attribute `name` of a `kind` block. A key of another kind of block
+// would always read as absent: a checker bug, not a user error.
+const AttributeSpec* SpecOfKey(BlockKind kind, AttributeKey name) {
+  const AttributeSpec* spec = FindAttribute(kind, name);
+  if (!spec) {
+    throw std::logic_error(fmt::format("checker: `{}` is not an attribute of {} blocks",
+                                       name.view(), BlockName(kind)));
+  }
+  return spec;
 }
 
 }  // namespace
@@ -118,12 +130,12 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
   return bound;
 }
 
-const ast::Statement* Checker::One(const BoundBlock& bound, std::string_view name) const {
-  auto it = bound.attributes.find(std::string(name));
+const ast::Statement* Checker::One(const BoundBlock& bound, AttributeKey name) const {
+  auto it = bound.attributes.find(std::string(name.view()));
   return it == bound.attributes.end() || it->second.empty() ? nullptr : it->second.front();
 }
 
-const ast::Expr* Checker::ValueOf(const BoundBlock& bound, std::string_view name) {
+const ast::Expr* Checker::ValueOf(const BoundBlock& bound, AttributeKey name) {
   const ast::Statement* statement = One(bound, name);
   return statement ? SingleValue(*statement) : nullptr;
 }
@@ -605,39 +617,39 @@ bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange ra
 }
 
 std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                            std::string_view name) {
+                                            AttributeKey name) {
+  const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
-  const AttributeSpec* spec = FindAttribute(kind, name);
   auto value = ExpectQuantity(scope, *expr, spec->dimension, name);
   if (value && !CheckRange(*spec, *value, expr->range)) return std::nullopt;
   return value;
 }
 
 std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                        std::string_view name) {
+                                        AttributeKey name) {
+  const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
-  const AttributeSpec* spec = FindAttribute(kind, name);
-  if (spec->dimension == dim::kDimensionless && name == "axis") {
+  if (spec->dimension == dim::kDimensionless && name.view() == "axis") {
     return ExpectDirection(scope, *expr, name);
   }
   return ExpectVector(scope, *expr, spec->dimension, name);
 }
 
-std::optional<bool> Checker::ReadBool(const BoundBlock& bound, std::string_view name) {
+std::optional<bool> Checker::ReadBool(const BoundBlock& bound, AttributeKey name) {
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
   return ExpectBool(*expr, name);
 }
 
 std::optional<FunctionId> Checker::ReadFunction(Scope& scope, const BoundBlock& bound,
-                                                BlockKind kind, std::string_view name) {
+                                                BlockKind kind, AttributeKey name) {
+  const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Statement* statement = One(bound, name);
   if (!statement) return std::nullopt;
   const ast::Expr* expr = SingleValue(*statement);
   if (!expr) return std::nullopt;
-  const AttributeSpec* spec = FindAttribute(kind, name);
   return ExpectFunction(scope, *statement, *expr, spec->argument, spec->dimension, name);
 }
 

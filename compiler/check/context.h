@@ -10,6 +10,7 @@
 #include <tuple>
 #include <vector>
 
+#include "compiler/check/attribute_key.h"
 #include "compiler/check/check.h"
 #include "compiler/check/schema.h"
 #include "compiler/units/quantity.h"
@@ -174,20 +175,22 @@ class Checker {
     std::vector<const ast::Statement*> rows;
   };
   BoundBlock Bind(BlockKind kind, const ast::Block* block, SourceRange owner_range);
-  const ast::Statement* One(const BoundBlock& bound, std::string_view name) const;
+  const ast::Statement* One(const BoundBlock& bound, AttributeKey name) const;
   // A statement that must be `keyword = value` (one value, no target or clauses).
   const ast::Expr* SingleValue(const ast::Statement& statement);
   // The one value of attribute `name`, or nullptr when it is absent (or reported as malformed).
-  const ast::Expr* ValueOf(const BoundBlock& bound, std::string_view name);
+  const ast::Expr* ValueOf(const BoundBlock& bound, AttributeKey name);
 
-  // Typed attribute readers over a bound block; absent attributes give nullopt silently.
+  // Typed attribute readers over a bound block; absent attributes give nullopt silently. A key
+  // that is no attribute of the schema does not compile (attribute_key.h); one that is not an
+  // attribute of `kind` throws std::logic_error, a checker bug that any test reaching it shows.
   std::optional<double> ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                     std::string_view name);
+                                     AttributeKey name);
   std::optional<Vec3> ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                 std::string_view name);
-  std::optional<bool> ReadBool(const BoundBlock& bound, std::string_view name);
+                                 AttributeKey name);
+  std::optional<bool> ReadBool(const BoundBlock& bound, AttributeKey name);
   std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                         std::string_view name);
+                                         AttributeKey name);
 
   // --- declarations (check_scene.cpp, check_bodies.cpp, check_restraints.cpp)
   BoundBlock DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
