@@ -22,11 +22,25 @@ packages=(
   libbenchmark-dev
   libmujoco-dev       # test- and benchmark-only peer (tests/verification, tests/bench)
   libsundials-dev     # benchmark-only peer: CVODE (tests/bench/cvode_peer.cpp)
-  nlohmann-json3-dev  # sled report reads summary.json
+  nlohmann-json3-dev  # sled report reads summary.json; sled lsp speaks JSON-RPC with it
+  nodejs              # test-only: the TextMate grammar test (editors/tests, with npm)
+  libtree-sitter-dev  # test-only: runs the tree-sitter grammar's parser (editors/tests)
   chromium            # test-only: loads the report page headless (tests/report)
   slurm-wlm           # test-only: a one-node cluster for `sled sweep --slurm`
   munge               #   (scripts/slurm_cluster.sh, scripts/slurm_sweep_test.sh)
 )
+
+# The TextMate grammar test's npm packages (vscode-textmate, vscode-oniguruma: the tokenizer
+# VS Code uses), pinned by editors/tests/package-lock.json; skipped where npm is not installed
+# (the test then reports itself skipped).
+install_npm_packages() {
+  local here
+  here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+  if command -v npm >/dev/null 2>&1 && [[ ! -d "${here}/editors/tests/node_modules" ]]; then
+    npm ci --prefix "${here}/editors/tests" --no-audit --no-fund
+  fi
+}
+trap install_npm_packages EXIT
 
 missing=()
 for package in "${packages[@]}"; do

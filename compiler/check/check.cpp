@@ -124,8 +124,26 @@ Scope* Checker::NewScope(Scope* parent, std::string prefix, std::string director
   return scopes_.back().get();
 }
 
+void Checker::RecordReference(SourceRange use, const Entity& entity, std::string name,
+                              bool is_declaration) {
+  NameReference reference;
+  reference.use = use;
+  reference.declaration = entity.range;
+  reference.name = std::move(name);
+  reference.kind = std::string(EntityKindName(entity.kind));
+  reference.is_declaration = is_declaration;
+  if (entity.kind == EntityKind::kParameter) {
+    // Its value is known only once every parameter is evaluated: filled in at the end of Run.
+    parameter_references_.emplace_back(scenario_.references.size(), entity.index);
+  } else {
+    reference.index = entity.index;
+  }
+  scenario_.references.push_back(std::move(reference));
+}
+
 bool Checker::Declare(Scope& scope, const std::string& name, Entity entity) {
   auto [it, inserted] = scope.names.emplace(name, entity);
+  if (entity.range.valid()) RecordReference(entity.range, entity, scope.prefix + name, true);
   if (!inserted) {
     auto diagnostic = lang::MakeDiagnostic(
         DiagnosticKind::kDuplicateName, entity.range,
@@ -201,6 +219,7 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
     return nullptr;
   }
   found->used = true;
+  if (found->range.valid()) RecordReference(path.range, *found, path.PathText(), false);
   if (!kinds.empty() && std::find(kinds.begin(), kinds.end(), found->kind) == kinds.end()) {
     if (!quiet) {
       std::string expected;
@@ -482,6 +501,12 @@ CheckedScenario Checker::Run(const ast::File& file) {
   CheckOutputs();
   CheckDuplicates();
   if (options_.lints) RunLints();
+  for (const auto& [reference, parameter_index] : parameter_references_) {
+    const Parameter& parameter = *parameters_.at(static_cast<std::size_t>(parameter_index));
+    if (parameter.state != Parameter::State::kDone) continue;
+    scenario_.references[reference].value = parameter.value.components;
+    scenario_.references[reference].dimension = parameter.value.dimension;
+  }
   return std::move(scenario_);
 }
 

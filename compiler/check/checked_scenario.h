@@ -340,6 +340,21 @@ struct ScenarioParameter {
   SourceRange range;   // of its name in the declaration
 };
 
+// A declared name or a use of one, for editors (`sled lsp`: go to definition, references,
+// hover). A declaration's `use` is its own name; a use's `declaration` is where the name it
+// resolved to was declared (another file's range for an imported name).
+struct NameReference {
+  SourceRange use;
+  SourceRange declaration;
+  std::string name;  // qualified where the declaring scope has a prefix: occupant.pelvis
+  std::string kind;  // segment, joint, body, module, function, parameter, ...
+  int index = -1;    // into the vector of that kind; -1 for modules, the ground and parameters
+  bool is_declaration = false;
+  // Parameters and `let`s: the value in SI, empty when it did not check.
+  std::vector<double> value;
+  Dimension dimension;
+};
+
 struct CheckedScenario {
   // False for a file without a `scenario` block: a module for `import`, which can be checked
   // but not run.
@@ -363,6 +378,9 @@ struct CheckedScenario {
   std::vector<OutputRequest> outputs;
   std::vector<Criterion> criteria;
   std::vector<ScenarioParameter> parameters;  // in declaration order; not part of Dump
+  // Every declaration and every resolved use of a name, in the order the checker met them
+  // (imports checked twice appear twice); not part of Dump.
+  std::vector<NameReference> references;
 };
 
 // A stable, range-free text form: equal dumps mean equal checked scenarios.

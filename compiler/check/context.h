@@ -115,6 +115,9 @@ class Checker {
   // --- scopes and names (check.cpp)
   Scope* NewScope(Scope* parent, std::string prefix, std::string directory);
   bool Declare(Scope& scope, const std::string& name, Entity entity);
+  // Adds a declaration or a resolved use to scenario_.references (editor support).
+  void RecordReference(SourceRange use, const Entity& entity, std::string name,
+                       bool is_declaration);
   // Resolves a path; reports E0204/E0205 unless `quiet`. `kinds` empty accepts any kind.
   Entity* Resolve(Scope& scope, const ast::Expr& path, const std::vector<EntityKind>& kinds,
                   bool quiet = false);
@@ -296,6 +299,8 @@ class Checker {
   const ast::Statement* scenario_statement_ = nullptr;
   BoundBlock scenario_bound_;
   std::vector<Entity*> lintable_;  // functions, surfaces and parameters, for unused checks
+  // (index into scenario_.references, index into parameters_): values filled in at the end.
+  std::vector<std::pair<std::size_t, int>> parameter_references_;
 };
 
 }  // namespace sled::compiler::internal

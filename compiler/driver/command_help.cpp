@@ -191,6 +191,18 @@ std::vector<CommandHelp> MakeCommands() {
                       {},
                       "",
                       "  sled explain E0302\n"});
+  commands.push_back(
+      {"lsp",
+       "sled lsp [--stdlib DIR]",
+       "the language server for editors (Language Server Protocol over stdio)",
+       "Serves the Language Server Protocol on standard input and output: diagnostics as you\n"
+       "type, hover, go to definition, references, completion, formatting, the outline and\n"
+       "quick fixes. Editors start it themselves (docs/editors.md). Exit status: 0 after the\n"
+       "client's shutdown and exit, 1 when the input ends without them.\n",
+       {"--stdlib", "--stdio"},
+       "  --stdlib DIR           the standard library folder for `import std...`\n"
+       "  --stdio                accepted for editor clients; stdio is the only transport\n",
+       "  sled lsp\n"});
   return commands;
 }
 

@@ -1,5 +1,5 @@
-// The `sled` command: check, fmt, run, convert and explain (README.md). Libraries report; this
-// prints.
+// The `sled` command: check, fmt, run, convert, explain and lsp (README.md). Libraries report;
+// this prints.
 #include <unistd.h>
 
 #include <charconv>
@@ -21,6 +21,7 @@
 #include "compiler/driver/run_command.h"
 #include "compiler/driver/study_command.h"
 #include "compiler/driver/sweep_command.h"
+#include "compiler/lsp/server.h"
 #include "lang/diagnostics/load_file.h"
 #include "lang/diagnostics/render.h"
 #include "lang/format/formatter.h"
@@ -119,18 +120,15 @@ int RunFormat(const Options& options) {
       changed_or_failed = true;
       continue;
     }
-    sled::lang::ParseOptions parse_options;
-    parse_options.diagnostics = &collector;
-    const auto ast = sled::lang::Parse(sources, *file, parse_options);
-    if (collector.has_errors()) {
-      // Statements the parser skipped are not in the tree: formatting would lose them.
+    const std::optional<std::string> formatted =
+        sled::lang::FormatBuffer(sources, *file, collector);
+    if (!formatted) {
       PrintDiagnostics(sources, collector, options.compact, ColorWanted());
       std::cerr << fmt::format("sled: `{}` has syntax errors and was left unchanged\n", path);
       changed_or_failed = true;
       continue;
     }
-    const std::string formatted = sled::lang::Format(ast);
-    const bool differs = formatted != sources.buffer(*file).text();
+    const bool differs = *formatted != sources.buffer(*file).text();
     if (options.check_only) {
       if (differs) {
         std::cout << fmt::format("{}: would be reformatted\n", path);
@@ -139,7 +137,7 @@ int RunFormat(const Options& options) {
       continue;
     }
     std::string why;
-    if (differs && !sled::runtime::ReplaceFile(path, formatted, &why)) {
+    if (differs && !sled::runtime::ReplaceFile(path, *formatted, &why)) {
       std::cerr << fmt::format("sled: {}; `{}` was left unchanged\n", why, path);
       changed_or_failed = true;
     }
@@ -264,6 +262,8 @@ int main(int argc, char** argv) {
       options.compact = false;
     } else if (arg == "--check") {
       options.check_only = true;
+    } else if (arg == "--stdio") {
+      // `sled lsp --stdio`, as editor clients start servers: stdio is the only transport.
     } else if (arg == "--dump-ast") {
       options.dump_ast = true;
     } else if (arg == "--dump-checked") {
@@ -360,6 +360,10 @@ int main(int argc, char** argv) {
     if (options.command == "check") return RunCheck(options);
     if (options.command == "fmt") return RunFormat(options);
     if (options.command == "explain") return RunExplain(options);
+    if (options.command == "lsp") {
+      if (!options.files.empty()) return UsageError("`lsp` takes no file", options.command);
+      return sled::lsp::RunLanguageServer({.stdlib = options.stdlib, .module_path = {}});
+    }
     if (options.command == "convert") return RunConvert(options);
     if (options.command == "report") {
       if (options.files.size() != 1)

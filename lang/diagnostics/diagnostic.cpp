@@ -125,8 +125,16 @@ std::optional<std::string> ClosestMatch(std::string_view word,
   return best;
 }
 
+namespace {
+constexpr std::string_view kDidYouMean = "did you mean ";
+constexpr std::string_view kOnlyChoice = "the only choice here is ";
+constexpr std::string_view kOneOf = "one of: ";
+}  // namespace
+
 std::string DidYouMean(std::string_view word, const std::vector<std::string>& candidates) {
-  if (auto match = ClosestMatch(word, candidates)) return fmt::format("did you mean `{}`?", *match);
+  if (auto match = ClosestMatch(word, candidates)) {
+    return fmt::format("{}`{}`?", kDidYouMean, *match);
+  }
   // No close match: a short list of choices is itself the hint (joint types, integrators, axes).
   constexpr std::size_t kListed = 8;
   if (candidates.empty() || candidates.size() > kListed) return {};
@@ -134,8 +142,26 @@ std::string DidYouMean(std::string_view word, const std::vector<std::string>& ca
   for (const std::string& candidate : candidates) {
     list += (list.empty() ? "`" : ", `") + candidate + "`";
   }
-  return candidates.size() == 1 ? fmt::format("the only choice here is {}", list)
-                                : fmt::format("one of: {}", list);
+  return fmt::format("{}{}", candidates.size() == 1 ? kOnlyChoice : kOneOf, list);
+}
+
+std::vector<std::string> SuggestedNames(std::string_view help) {
+  // Each form quotes its names in backticks: `did you mean `x`?` (other hints that start the
+  // same way go on after the name, and suggest that name too), or a list of choices.
+  const bool single = help.starts_with(kDidYouMean);
+  if (!single && !help.starts_with(kOnlyChoice) && !help.starts_with(kOneOf)) return {};
+  std::vector<std::string> names;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t open = help.find('`', at);
+    if (open == std::string_view::npos) break;
+    const std::size_t close = help.find('`', open + 1);
+    if (close == std::string_view::npos) break;
+    names.emplace_back(help.substr(open + 1, close - open - 1));
+    at = close + 1;
+    if (single) break;
+  }
+  return names;
 }
 
 }  // namespace sled::lang

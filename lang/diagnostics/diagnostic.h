@@ -101,5 +101,8 @@ std::optional<std::string> ClosestMatch(std::string_view word,
 // "did you mean `x`?" for the closest candidate; without a close one, the candidates themselves
 // when there are at most eight ("one of: `ball`, `pin`, ..."); else empty.
 std::string DidYouMean(std::string_view word, const std::vector<std::string>& candidates);
+// The names a help text made by DidYouMean suggests, in its order (empty for any other help):
+// what an editor offers as replacements of the diagnostic's primary range.
+std::vector<std::string> SuggestedNames(std::string_view help);
 
 }  // namespace sled::lang

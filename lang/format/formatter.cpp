@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "lang/source/utf8.h"
+#include "lang/syntax/parser.h"
 
 namespace sled::lang {
 namespace {
@@ -351,5 +352,15 @@ std::string Format(const ast::File& file) {
 }
 
 std::string Format(const ast::Expr& expr) { return ExprText(expr); }
+
+std::optional<std::string> FormatBuffer(const SourceManager& sources, FileId file,
+                                        DiagnosticConsumer& diagnostics) {
+  ErrorTrackingConsumer tracking(diagnostics);
+  ParseOptions options;
+  options.diagnostics = &tracking;
+  const ast::File tree = Parse(sources, file, options);
+  if (tracking.seen_error()) return std::nullopt;
+  return Format(tree);
+}
 
 }  // namespace sled::lang

@@ -15,14 +15,23 @@
 // requires them, so its text means what the tree means.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "lang/ast/ast.h"
+#include "lang/diagnostics/diagnostic.h"
+#include "lang/source/source_manager.h"
 
 namespace sled::lang {
 
 // The whole file in canonical form; empty when the file holds no statement and no comment.
 std::string Format(const ast::File& file);
+
+// Parses buffer `file` and formats it, as `sled fmt` and the language server do; nullopt when
+// the parser reported errors (to `diagnostics`): the statements it skipped are not in the tree,
+// and formatting would lose them.
+std::optional<std::string> FormatBuffer(const SourceManager& sources, FileId file,
+                                        DiagnosticConsumer& diagnostics);
 
 // One expression on a single line, as it would appear in a statement.
 std::string Format(const ast::Expr& expr);

@@ -765,6 +765,17 @@ TEST(DidYouMean, SuggestsTheClosestCandidateWithinAThirdOfTheLength) {
   EXPECT_EQ(DidYouMean("qq", {}), "");
 }
 
+TEST(DidYouMean, SuggestedNamesReadBackEveryFormItWrites) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(SuggestedNames(DidYouMean("kgg", {"kg", "g", "m"})), V{"kg"});
+  EXPECT_EQ(SuggestedNames(DidYouMean("qq", {"kg", "g", "m"})), (V{"kg", "g", "m"}));
+  EXPECT_EQ(SuggestedNames(DidYouMean("qq", {"kg"})), V{"kg"});
+  // A longer hint that starts the same way suggests its first name only.
+  EXPECT_EQ(SuggestedNames("did you mean `knee_r`, the joint from `a` to `b`?"), V{"knee_r"});
+  EXPECT_EQ(SuggestedNames("write the unit after the number, such as `5 mm`"), V{});
+  EXPECT_EQ(SuggestedNames(""), V{});
+}
+
 TEST(DidYouMean, CountsTwoSwappedLettersAsOneEdit) {
   // "widht" is two substitutions from "width" but one swap; a third of five letters allows one.
   EXPECT_EQ(ClosestMatch("widht", {"width", "depth"}), "width");

@@ -1,0 +1,131 @@
+// Tree-sitter grammar of sled (.sled scenarios and modules), for Neovim, Helix, Zed and other
+// editors built on tree-sitter. It follows the parser of lang/syntax/grammar.h: a file is a list
+// of statements, each `keyword [target] [clause...] [= value, ...] [{ block }]`, or a table row
+// `value -> value [-> value...]`; what a keyword means is the checker's business, not the
+// grammar's. Differences, all harmless for highlighting and folding: line breaks are not
+// significant here (sled ends a statement at a line break), so a keyword alone on a line before
+// another statement can read as that statement's keyword with a target.
+//
+// The unit after a number or a vector is a token of the external scanner (src/scanner.c), which
+// applies sled's rule exactly: on the same line, no blanks inside (`N*m/deg`, `m/s^2`), and not
+// a word that starts a statement, a path or a call (followed by `=`, `.`, `(` or `:`).
+//
+// Generate and test with the tree-sitter CLI: `tree-sitter generate && tree-sitter test`
+// (editors/tests/tree_sitter_test.sh also parses every .sled file of the repository).
+
+const CLAUSE_WORDS = ['on', 'with', 'at', 'as', 'filter'];
+
+const PREC = {
+  arrow: 1,
+  sum: 2,
+  product: 3,
+  unary: 4,
+  power: 5,
+};
+
+module.exports = grammar({
+  name: 'sled',
+
+  extras: $ => [/\s/, $.comment],
+
+  externals: $ => [$.unit],
+
+  word: $ => $.identifier,
+
+  conflicts: $ => [
+    // `keyword` then a name on the next line: that statement's target, or a new statement.
+    [$.statement],
+  ],
+
+  rules: {
+    source_file: $ => repeat($._item),
+
+    _item: $ => choice($.statement, $.row, ';'),
+
+    statement: $ => prec.right(seq(
+      field('keyword', choice($.identifier, alias(choice(...CLAUSE_WORDS), $.identifier))),
+      optional(field('target', choice($.string, $.path))),
+      repeat($.clause),
+      optional(seq('=', commaSep1(field('value', $._value)))),
+      optional(field('body', $.block)),
+    )),
+
+    clause: $ => seq(
+      field('word', choice(...CLAUSE_WORDS, ':')),
+      field('value', $._value),
+    ),
+
+    block: $ => seq('{', repeat($._item), '}'),
+
+    // `25 mm -> 2 kN`: a row of a table block.
+    row: $ => prec.right(seq(
+      $._row_start,
+      repeat1(seq('->', $._sum)),
+    )),
+    // A row never starts with a name (that is a statement's keyword).
+    _row_start: $ => choice($.quantity, $.vector, $.unary, $.string),
+
+    _value: $ => choice($.arrow, $._sum),
+
+    arrow: $ => prec.left(PREC.arrow, seq($._sum, repeat1(seq('->', $._sum)))),
+
+    _sum: $ => choice(
+      $.quantity,
+      $.vector,
+      $.call,
+      $.boolean,
+      $.path,
+      $.string,
+      $.unary,
+      $.binary,
+    ),
+
+    binary: $ => choice(
+      prec.left(PREC.sum, seq($._sum, choice('+', '-'), $._sum)),
+      prec.left(PREC.product, seq($._sum, choice('*', '/'), $._sum)),
+      prec.right(PREC.power, seq($._sum, '^', $._sum)),
+    ),
+
+    unary: $ => prec(PREC.unary, seq('-', $._sum)),
+
+    quantity: $ => seq(field('number', $.number), optional(field('unit', $.unit))),
+
+    // `(x, y, z) unit`, and a parenthesised expression `(a + b)`.
+    vector: $ => seq(
+      '(',
+      commaSep1($._value),
+      optional(','),
+      ')',
+      optional(field('unit', $.unit)),
+    ),
+
+    call: $ => seq(
+      field('function', $.path),
+      token.immediate('('),
+      optional(seq(commaSep1($.argument), optional(','))),
+      ')',
+    ),
+
+    argument: $ => choice(
+      seq(field('name', $.identifier), '=', field('value', $._value)),
+      field('value', $._value),
+    ),
+
+    path: $ => prec.right(seq($.identifier, repeat(seq(token.immediate('.'), $.identifier)))),
+
+    boolean: _ => choice('true', 'false'),
+
+    number: _ => /\d+(\.\d*)?([eE][+-]?\d+)?/,
+
+    string: $ => seq('"', repeat(choice($.escape_sequence, /[^"\\\n\r]+/)), '"'),
+    escape_sequence: _ => /\\["\\nt]/,
+
+    identifier: _ => /[A-Za-z_][A-Za-z0-9_]*/,
+
+    comment: _ => token(seq('//', /[^\n]*/)),
+  },
+});
+
+function commaSep1(rule) {
+  return seq(rule, repeat(seq(',', rule)));
+}
