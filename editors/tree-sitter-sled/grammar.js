@@ -6,9 +6,11 @@
 // significant here (sled ends a statement at a line break), so a keyword alone on a line before
 // another statement can read as that statement's keyword with a target.
 //
-// The unit after a number or a vector is a token of the external scanner (src/scanner.c), which
-// applies sled's rule exactly: on the same line, no blanks inside (`N*m/deg`, `m/s^2`), and not
-// a word that starts a statement, a path or a call (followed by `=`, `.`, `(` or `:`).
+// Two tokens come from the external scanner (src/scanner.c), where sled's rules need more than a
+// regular expression: the unit after a number or a vector (on the same line, no blanks inside
+// as in `N*m/deg` and `m/s^2`, and not a word that starts a statement, a path or a call, that is
+// one followed by `=`, `.`, `(` or `:`), and the binary minus, which like every operator must be
+// on the line of its left operand (a line that starts with `-` starts a new table row).
 //
 // Generate and test with the tree-sitter CLI: `tree-sitter generate && tree-sitter test`
 // (editors/tests/tree_sitter_test.sh also parses every .sled file of the repository).
@@ -28,7 +30,7 @@ module.exports = grammar({
 
   extras: $ => [/\s/, $.comment],
 
-  externals: $ => [$.unit],
+  externals: $ => [$.unit, $._binary_minus],
 
   word: $ => $.identifier,
 
@@ -63,7 +65,13 @@ module.exports = grammar({
       repeat1(seq('->', $._sum)),
     )),
     // A row never starts with a name (that is a statement's keyword).
-    _row_start: $ => choice($.quantity, $.vector, $.unary, $.string),
+    _row_start: $ => choice($.quantity, $.vector, $.unary, $.string,
+                            alias($._row_binary, $.binary)),
+    _row_binary: $ => choice(
+      prec.left(PREC.sum, seq($._row_start, choice('+', alias($._binary_minus, '-')), $._sum)),
+      prec.left(PREC.product, seq($._row_start, choice('*', '/'), $._sum)),
+      prec.right(PREC.power, seq($._row_start, '^', $._sum)),
+    ),
 
     _value: $ => choice($.arrow, $._sum),
 
@@ -81,7 +89,7 @@ module.exports = grammar({
     ),
 
     binary: $ => choice(
-      prec.left(PREC.sum, seq($._sum, choice('+', '-'), $._sum)),
+      prec.left(PREC.sum, seq($._sum, choice('+', alias($._binary_minus, '-')), $._sum)),
       prec.left(PREC.product, seq($._sum, choice('*', '/'), $._sum)),
       prec.right(PREC.power, seq($._sum, '^', $._sum)),
     ),

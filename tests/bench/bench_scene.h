@@ -6,7 +6,11 @@
 #include <algorithm>
 #include <string>
 
+#include <benchmark/benchmark.h>
 #include <fmt/format.h>
+
+#include "compiler/check/check.h"
+#include "lang/syntax/parser.h"
 
 namespace sled::bench {
 
@@ -49,6 +53,18 @@ inline std::string MakeScenario(int segments) {
 
 inline int CountLines(const std::string& text) {
   return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+// Parses and checks `text` as a new file, as `sled check` does; true when it has errors.
+inline bool ParseAndCheck(const std::string& text) {
+  lang::SourceManager sources;
+  const lang::FileId file = sources.Add("bench.sled", text);
+  lang::DiagnosticCollector diagnostics;
+  compiler::CheckOptions options;
+  options.diagnostics = &diagnostics;
+  auto scenario = compiler::ParseAndCheck(sources, file, options);
+  benchmark::DoNotOptimize(scenario);
+  return diagnostics.has_errors();
 }
 
 }  // namespace sled::bench

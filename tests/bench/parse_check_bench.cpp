@@ -7,7 +7,6 @@
 
 #include <string>
 
-#include "compiler/check/check.h"
 #include "lang/syntax/parser.h"
 #include "tests/bench/bench_scene.h"
 
@@ -19,17 +18,7 @@ using sled::bench::MakeScenario;
 void BM_ParseAndCheck(benchmark::State& state) {
   const std::string text = MakeScenario(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    sled::lang::SourceManager sources;
-    const sled::lang::FileId file = sources.Add("bench.sled", text);
-    sled::lang::DiagnosticCollector diagnostics;
-    sled::lang::ParseOptions parse_options;
-    parse_options.diagnostics = &diagnostics;
-    const auto ast = sled::lang::Parse(sources, file, parse_options);
-    sled::compiler::CheckOptions check_options;
-    check_options.diagnostics = &diagnostics;
-    auto scenario = sled::compiler::Check(sources, ast, check_options);
-    benchmark::DoNotOptimize(scenario);
-    if (diagnostics.has_errors()) state.SkipWithError("the generated scene has errors");
+    if (sled::bench::ParseAndCheck(text)) state.SkipWithError("the generated scene has errors");
   }
   state.counters["lines"] = CountLines(text);
 }

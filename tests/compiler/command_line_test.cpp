@@ -18,8 +18,8 @@ using testing::SledResult;
 
 using CommandLine = testing::SledProcessTest;
 
-const std::vector<std::string> kCommands = {"check", "fmt",     "run",    "report",
-                                            "study", "convert", "explain"};
+const std::vector<std::string> kCommands = {"check", "fmt",     "run",     "report",
+                                            "study", "convert", "explain", "lsp"};
 
 // The option names a help page lists: each line of its options section that starts with `-`.
 std::vector<std::string> ListedOptions(const std::string& help) {

@@ -1,4 +1,5 @@
-// External scanner of the sled grammar: the unit written after a number or a vector.
+// External scanner of the sled grammar: the unit written after a number or a vector, and the
+// binary minus.
 //
 // sled's parser (lang/syntax/grammar.h) reads a unit as factors joined by `*` or `/` with no
 // blanks inside, each a name with an optional power (`N*m/deg`, `m/s^2`, `kg*m^-1`), after
@@ -11,7 +12,11 @@
 
 #include "tree_sitter/parser.h"
 
-enum TokenType { UNIT };
+// A binary operator stands on the line of its left operand (grammar.h: `sp` before it): a `-`
+// that starts a line starts a new row or statement with a negative number. The scanner runs
+// before the blanks and line breaks between tokens are skipped, so it can tell.
+
+enum TokenType { UNIT, BINARY_MINUS };
 
 void *tree_sitter_sled_external_scanner_create(void) { return NULL; }
 void tree_sitter_sled_external_scanner_destroy(void *payload) { (void)payload; }
@@ -67,10 +72,18 @@ static bool scan_factor(TSLexer *lexer) {
 bool tree_sitter_sled_external_scanner_scan(void *payload, TSLexer *lexer,
                                             const bool *valid_symbols) {
   (void)payload;
-  if (!valid_symbols[UNIT]) return false;
-  // Blanks on the same line only: a unit never starts on the next line.
+  if (!valid_symbols[UNIT] && !valid_symbols[BINARY_MINUS]) return false;
+  // Blanks on the same line only: neither a unit nor an operator starts on the next line.
   while (is_blank(lexer->lookahead)) lexer->advance(lexer, true);
-  if (!scan_factor(lexer)) return false;
+  if (lexer->lookahead == '-') {
+    if (!valid_symbols[BINARY_MINUS]) return false;
+    lexer->advance(lexer, false);
+    if (lexer->lookahead == '>') return false;  // `->`
+    lexer->mark_end(lexer);
+    lexer->result_symbol = BINARY_MINUS;
+    return true;
+  }
+  if (!valid_symbols[UNIT] || !scan_factor(lexer)) return false;
   while (lexer->lookahead == '*' || lexer->lookahead == '/') {
     lexer->advance(lexer, false);
     if (!is_name_start(lexer->lookahead)) break;  // `*` or `/` as an operator: the unit ends
