@@ -166,7 +166,7 @@ std::vector<std::string> Checker::NamesOfKinds(Scope& scope, const std::vector<E
       if (wanted(entity.kind)) names.push_back(name);
       for (Scope* inner = entity.inner; inner; inner = inner->fallback) {
         for (const auto& [inner_name, inner_entity] : inner->names) {
-          if (wanted(inner_entity.kind)) names.push_back(name + "." + inner_name);
+          if (wanted(inner_entity.kind)) names.push_back(fmt::format("{}.{}", name, inner_name));
         }
       }
     }
@@ -417,7 +417,8 @@ void Checker::Import(Scope& scope, const ast::Statement& statement) {
     if (!body->target || body->target->kind != ast::ExprKind::kPath) continue;
     const std::string& body_name = body->target->path[0];
     const int index = static_cast<int>(scenario_.bodies.size());
-    CheckBodyDeclarations(*module_scope, *body, qualified + "." + body_name, statement.range);
+    CheckBodyDeclarations(*module_scope, *body, fmt::format("{}.{}", qualified, body_name),
+                          statement.range);
     Declare(*instance_scope, body_name,
             Entity{EntityKind::kBody, index, body->range, bodies_.back().scope});
   }
