@@ -217,11 +217,13 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   out << "  \"energy_balance\": {\n";
   out << fmt::format(
       "    \"kinetic\": {},\n    \"potential\": {},\n    \"absorbed\": {},\n"
-      "    \"prescribed_work\": {},\n    \"impulses\": {},\n    \"residual\": {},\n"
+      "    \"prescribed_work\": {},\n    \"applied_work\": {},\n    \"impulses\": {},\n"
+      "    \"residual\": {},\n"
       "    \"largest_residual\": {},\n    \"scale\": {},\n    \"relative_residual\": {}\n",
       number("energy_balance.kinetic", e.kinetic), number("energy_balance.potential", e.potential),
       number("energy_balance.absorbed", e.absorbed),
       number("energy_balance.prescribed_work", e.prescribed_work),
+      number("energy_balance.applied_work", e.applied_work),
       number("energy_balance.impulses", e.impulses), number("energy_balance.residual", e.residual),
       number("energy_balance.largest_residual", e.largest_residual),
       number("energy_balance.scale", e.scale),

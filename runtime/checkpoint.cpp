@@ -30,7 +30,8 @@ DumpParts SplitDump(const Model& model) {
     if (const auto source = line.find(" source "); source != std::string::npos) {
       line.erase(source);
     }
-    const bool output = line.starts_with("output ") || line.starts_with("criterion ");
+    const bool output =
+        line.starts_with("output ") || line.starts_with("criterion ") || line.starts_with("shape ");
     (output ? parts.outputs : parts.physics) += line + '\n';
   }
   return parts;

@@ -70,6 +70,7 @@ void LoadState(Data& data, double t, std::span<const double> y) {
   data.energy.element_work = next[0];
   data.energy.constraint_work = next[1];
   data.energy.vehicle_work = next[2];
+  data.energy.applied_work = next[3];
 }
 
 void StoreState(const Data& data, std::span<double> y) {
@@ -80,6 +81,7 @@ void StoreState(const Data& data, std::span<double> y) {
   next[0] = data.energy.element_work;
   next[1] = data.energy.constraint_work;
   next[2] = data.energy.vehicle_work;
+  next[3] = data.energy.applied_work;
 }
 
 }  // namespace sled::runtime

@@ -96,6 +96,7 @@ struct Data {
   // The energy balance (runtime/energy.h): the power the force elements delivered to vehicles
   // at the last evaluation, and the accumulated terms.
   double vehicle_power = 0.0;
+  double applied_power = 0.0;  // of the applied loads into the segments (AddAppliedLoads)
   EnergyBalance energy;
 
   std::int64_t evaluations = 0;
@@ -107,7 +108,7 @@ Data MakeData(const Model& model);
 // states (an airbag's gas), then the kEnergyStates work integrals of the energy balance
 // (data.energy: elements, constraints, vehicles), which the error control leaves out. Its size,
 // and copying it into a Data (with the time) and back.
-inline constexpr std::size_t kEnergyStates = 3;
+inline constexpr std::size_t kEnergyStates = 4;
 std::size_t StateSize(const Model& model);
 void LoadState(Data& data, double t, std::span<const double> y);
 void StoreState(const Data& data, std::span<double> y);

@@ -303,6 +303,20 @@ std::string DumpModel(const Model& m) {
         Get(m.spring_function, s), Get(m.spring_damping, s), Get(m.spring_free_length, s),
         Get(m.spring_tension_only, s)));
   }
+  for (std::size_t k = 0; k < m.shape_name.size(); ++k) {
+    line(fmt::format("shape {} {} segment {} center {} semi_axes {} degree {}", k, m.shape_name[k],
+                     m.shape_segment[k], Text(m.shape_center[k]), Text(m.shape_semi_axes[k]),
+                     m.shape_degree[k]));
+  }
+  const LoadTable& loads = m.loads;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    line(
+        fmt::format("load {} {} kind {} segment {} force {} direction {} point {} torque {} axis "
+                    "{} in_segment {}",
+                    k, loads.name[k], static_cast<int>(loads.kind[k]), loads.segment[k],
+                    loads.force[k], Text(loads.direction[k]), Text(loads.point[k]), loads.torque[k],
+                    Text(loads.axis[k]), loads.in_segment[k]));
+  }
   for (std::size_t c = 0; c < m.nconstraint(); ++c) {
     line(fmt::format("constraint {} {} {} first {} {} second {} {} distance {} axis {}", c,
                      m.constraint_name[c], Name(Get(m.constraint_kind, c)),

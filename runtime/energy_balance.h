@@ -10,15 +10,17 @@ struct EnergyBalance {
   double element_work = 0.0;     // integral of SegmentPower::elements
   double constraint_work = 0.0;  // integral of SegmentPower::constraints
   double vehicle_work = 0.0;     // integral of the power elements deliver to vehicles
+  double applied_work = 0.0;     // integral of the applied loads' power into the segments
   double impulses = 0.0;         // kinetic energy gained at impulsive events (negative: lost)
 
   // Work the force elements took from the segments and vehicles: stored + dissipated.
   double Absorbed() const { return -element_work - vehicle_work; }
   // Work the prescribed motion did on the occupant, through the elements and constraints.
   double PrescribedWork() const { return constraint_work - vehicle_work; }
-  // KE + PE + absorbed - prescribed - impulses - initial: zero for an exact integration.
+  // KE + PE + absorbed - prescribed - applied - impulses - initial: zero for an exact
+  // integration.
   double Residual(double kinetic, double potential) const {
-    return kinetic + potential + Absorbed() - PrescribedWork() - impulses - initial;
+    return kinetic + potential + Absorbed() - PrescribedWork() - applied_work - impulses - initial;
   }
 };
 

@@ -148,6 +148,7 @@ void ComputeForces(const Model& model, Data& data) {
   }
   ComputeBeltForces(model, data);
   if (model.airbags.size() > 0) ComputeAirbagForces(model, data);
+  if (model.loads.size() > 0) AddAppliedLoads(model, data);
 }
 
 }  // namespace sled::runtime

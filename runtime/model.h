@@ -20,6 +20,7 @@
 #include <Eigen/Geometry>
 
 #include "runtime/airbag/airbag_table.h"
+#include "runtime/applied_loads.h"
 #include "runtime/contact/contact_table.h"
 #include "runtime/model_types.h"
 #include "runtime/restraint/belt_table.h"
@@ -187,6 +188,17 @@ struct Model {
   BeltTable belts;
   // --- Airbags: uniform-pressure bags with gas states in w.
   AirbagTable airbags;
+  // --- Applied loads: forces and torques that are functions of time (runtime/applied_loads.h).
+  LoadTable loads;
+  // --- Drawing only (the animation; the dynamics never reads them): the shapes of the segments
+  // that are not contact ellipsoids, so that every segment is drawn: its declared ellipsoids, or
+  // for a segment without any the ellipsoid of uniform density with its mass and inertia.
+  std::vector<std::string> shape_name;
+  std::vector<std::int32_t> shape_segment;
+  std::vector<Vec3> shape_center;  // in the segment frame
+  std::vector<Mat3> shape_axes;    // columns: the shape's axes in the segment frame
+  std::vector<Vec3> shape_semi_axes;
+  std::vector<double> shape_degree;  // 2 for an ellipsoid
 
   // --- Loop-closing constraints (solved with Lagrange multipliers).
   enum class ConstraintKind : std::uint8_t { kFixedPoint, kFixedDistance, kRolling, kSliding };

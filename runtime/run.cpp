@@ -25,11 +25,12 @@ void UpdateEnergy(const Model& model, const Data& data, double initial_potential
   energy.potential = PotentialEnergy(model, data);
   energy.absorbed = balance.Absorbed();
   energy.prescribed_work = balance.PrescribedWork();
+  energy.applied_work = balance.applied_work;
   energy.impulses = balance.impulses;
   energy.residual = balance.Residual(energy.kinetic, energy.potential);
   energy.largest_residual = std::max(energy.largest_residual, std::abs(energy.residual));
   for (double term : {energy.kinetic, energy.potential - initial_potential, energy.absorbed,
-                      energy.prescribed_work, energy.impulses}) {
+                      energy.prescribed_work, energy.applied_work, energy.impulses}) {
     energy.scale = std::max(energy.scale, std::abs(term));
   }
 }

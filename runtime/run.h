@@ -19,6 +19,7 @@ struct EnergySummary {
   double potential = 0.0;
   double absorbed = 0.0;         // by the force elements: stored + dissipated
   double prescribed_work = 0.0;  // done by the prescribed vehicle motion
+  double applied_work = 0.0;     // done by the applied loads
   double impulses = 0.0;         // kinetic energy changed by impulsive events
   double residual = 0.0;         // KE + PE + absorbed - prescribed - impulses - initial
   double largest_residual = 0.0;

@@ -98,9 +98,11 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
       std::copy(data_.vdot.begin(), data_.vdot.end(), dy.begin() + static_cast<std::ptrdiff_t>(nq));
   rates = std::copy(data_.wdot.begin(), data_.wdot.end(), rates);
   const SegmentPower power = PowerIntoSegments(model_, data_);
-  rates[0] = power.elements;
+  // The applied loads' work is a term of its own, not the force elements'.
+  rates[0] = power.elements - data_.applied_power;
   rates[1] = power.constraints;
   rates[2] = data_.vehicle_power;
+  rates[3] = data_.applied_power;
   for (std::size_t i = 0; i < dy.size(); ++i) {
     if (!std::isfinite(dy[i])) {
       failure_.time = t;

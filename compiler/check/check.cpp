@@ -31,14 +31,14 @@ namespace internal {
 namespace {
 
 const std::vector<std::pair<EntityKind, std::string_view>> kEntityNames = {
-    {EntityKind::kGround, "ground"},       {EntityKind::kModule, "module"},
-    {EntityKind::kBody, "body"},           {EntityKind::kSegment, "segment"},
-    {EntityKind::kJoint, "joint"},         {EntityKind::kEllipsoid, "ellipsoid"},
-    {EntityKind::kVehicle, "vehicle"},     {EntityKind::kPlane, "plane"},
-    {EntityKind::kFunction, "function"},   {EntityKind::kBelt, "belt"},
-    {EntityKind::kHarness, "harness"},     {EntityKind::kAirbag, "airbag"},
-    {EntityKind::kSpring, "spring"},       {EntityKind::kConstraint, "constraint"},
-    {EntityKind::kParameter, "parameter"},
+    {EntityKind::kGround, "ground"},     {EntityKind::kModule, "module"},
+    {EntityKind::kBody, "body"},         {EntityKind::kSegment, "segment"},
+    {EntityKind::kJoint, "joint"},       {EntityKind::kEllipsoid, "ellipsoid"},
+    {EntityKind::kVehicle, "vehicle"},   {EntityKind::kPlane, "plane"},
+    {EntityKind::kFunction, "function"}, {EntityKind::kBelt, "belt"},
+    {EntityKind::kHarness, "harness"},   {EntityKind::kAirbag, "airbag"},
+    {EntityKind::kSpring, "spring"},     {EntityKind::kConstraint, "constraint"},
+    {EntityKind::kLoad, "load"},         {EntityKind::kParameter, "parameter"},
 };
 
 std::string JoinPath(const std::vector<std::string>& parts, std::size_t from, char separator) {
@@ -499,8 +499,10 @@ CheckedScenario Checker::Run(const ast::File& file) {
   scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();
+  CheckLoadsInThePlane();
   CheckOutputs();
   CheckDuplicates();
+  CheckElementLaws();
   if (options_.lints) RunLints();
   for (const auto& [reference, parameter_index] : parameter_references_) {
     const Parameter& parameter = *parameters_.at(static_cast<std::size_t>(parameter_index));

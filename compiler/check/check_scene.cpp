@@ -167,6 +167,8 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       }
     } else if (keyword == "constraint") {
       declare_named(scenario_.constraints, *statement, EntityKind::kConstraint, constraints_);
+    } else if (keyword == "load") {
+      declare_named(scenario_.loads, *statement, EntityKind::kLoad, loads_);
     } else if (keyword == "segment") {
       if (declare_named(scenario_.segments, *statement, EntityKind::kSegment, segments_)) {
         const int index = static_cast<int>(scenario_.segments.size()) - 1;
@@ -532,6 +534,7 @@ void Checker::CheckSceneElements() {
 
   CheckContacts();
   CheckRestraints();
+  CheckLoads();
 }
 
 }  // namespace sled::compiler::internal

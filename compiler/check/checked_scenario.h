@@ -224,6 +224,22 @@ struct SpringDamper {
   SourceRange range;
 };
 
+// A force or torque that is a function of time (ATB's applied loads): on a segment, or across a
+// joint (on its child, with the reaction on its parent).
+struct AppliedLoad {
+  std::string name;
+  bool across_joint = false;
+  int index = -1;           // the segment, or the joint
+  FunctionId force = -1;    // time -> force; -1: none
+  FunctionId torque = -1;   // time -> torque; -1: none
+  Vec3 direction{1, 0, 0};  // of the force: unit, in the ground or the segment
+  Vec3 axis{0, 0, 1};       // of the torque: unit, in the ground or the segment (segment loads),
+                            // in the parent segment (ball and Euler joints)
+  Vec3 point{};             // where a segment's force acts, in the segment frame
+  bool in_segment = false;  // a segment load's direction and axis turn with the segment
+  SourceRange range;
+};
+
 struct Constraint {
   enum class Kind { kFixedPoint, kFixedDistance, kRolling, kSliding };
   std::string name;
@@ -373,6 +389,7 @@ struct CheckedScenario {
   std::vector<Belt> belts;
   std::vector<Airbag> airbags;
   std::vector<SpringDamper> springs;
+  std::vector<AppliedLoad> loads;
   std::vector<Constraint> constraints;
   std::vector<InitialCondition> initial_conditions;
   std::vector<OutputRequest> outputs;

@@ -35,6 +35,7 @@ enum class EntityKind {
   kAirbag,
   kSpring,
   kConstraint,
+  kLoad,
   kParameter,
 };
 
@@ -203,6 +204,12 @@ class Checker {
   void CheckSceneElements();
   void CheckContacts();
   void CheckRestraints();
+  // Applied forces and torques (compiler/check/check_loads.cpp).
+  void CheckLoads();
+  // Under `symmetry planar`, loads must act in the plane (after CheckRunSettings).
+  void CheckLoadsInThePlane();
+  // Force and torque laws of the wrong sign (compiler/check/check_element_laws.cpp): E0420.
+  void CheckElementLaws();
   void ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind, Ellipsoid& ellipsoid);
   // `at FRAME = (x, y, z) mm` statements of a joint, spring or constraint: one point per frame.
   // Reports a frame that is neither of the two, and (when `required`) a missing one.
@@ -293,7 +300,7 @@ class Checker {
   };
   std::vector<PendingBody> bodies_;
   std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,
-      springs_, constraints_, initials_, outputs_, functions_, segments_, joints_;
+      springs_, loads_, constraints_, initials_, outputs_, functions_, segments_, joints_;
   int current_body_ = -1;  // the body whose block DeclareFileContents is reading
   std::vector<const ast::Statement*> run_blocks_;  // time, integrator, restart, settle, symmetry
   const ast::Statement* scenario_statement_ = nullptr;

@@ -160,6 +160,12 @@ std::string Dump(const CheckedScenario& s) {
                      V(k.point_in_first), FrameText(s, k.second), V(k.point_in_second),
                      FunctionText(s, k.stiffness), k.damping, Optional(k.free_length)));
   }
+  for (const AppliedLoad& l : s.loads) {
+    line(fmt::format("load {} {} #{} force {} direction {} point {} torque {} axis {} in {}",
+                     l.name, l.across_joint ? "joint" : "segment", l.index,
+                     FunctionText(s, l.force), V(l.direction), V(l.point),
+                     FunctionText(s, l.torque), V(l.axis), l.in_segment ? "segment" : "ground"));
+  }
   for (const Constraint& c : s.constraints) {
     line(fmt::format("constraint {} kind {} {} {} -> {} {} distance {} axis {}", c.name,
                      static_cast<int>(c.kind), FrameText(s, c.first), V(c.point_in_first),

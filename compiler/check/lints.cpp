@@ -45,6 +45,25 @@ double StiffnessOf(const Function& function) {
   return 0.0;
 }
 
+// f(0): the constant, the polynomial's c0, or the table at 0 (extended beyond its rows as the
+// runtime does).
+double ValueAtZero(const Function& function) {
+  switch (function.kind) {
+    case Function::Kind::kConstant:
+      return function.constant;
+    case Function::Kind::kPolynomial:
+      return function.coefficients.empty() ? 0.0 : function.coefficients[0];
+    case Function::Kind::kTable: {
+      const auto& p = function.points;
+      if (p.size() < 2) return p.empty() ? 0.0 : p[0][1];
+      std::size_t i = 0;
+      while (i + 2 < p.size() && p[i + 1][0] <= 0.0) ++i;
+      return p[i][1] + (p[i + 1][1] - p[i][1]) / (p[i + 1][0] - p[i][0]) * (0.0 - p[i][0]);
+    }
+  }
+  return 0.0;
+}
+
 // Two significant digits, rounded towards zero, so a suggested limit is never above the real one.
 std::string RoundDown(double value) {
   if (!(value > 0)) return "0";
@@ -115,6 +134,36 @@ void Checker::RunLints() {
              "buried at the start",
              "move the body with `initial ... { position = ... }` or check the surface; a buried "
              "ellipsoid starts with a large contact force");
+    }
+  }
+
+  // Joint torque functions resist the angle: the runtime applies -f(angle), or -sign(angle)
+  // f(|angle|) for a function of the angle's size (one that does not cover negative angles). Such a
+  // function that is not zero at zero angle jumps by 2 f(0) as the angle passes zero: a
+  // constant one stalls a joint at zero instead of turning it, which is what a motor was meant to
+  // do. Say so, and point to the applied load.
+  for (const Joint& joint : scenario_.joints) {
+    const std::pair<FunctionId, const char*> slots[] = {{joint.flexure, "flexure"},
+                                                        {joint.twist, "twist"},
+                                                        {joint.precession, "precession"},
+                                                        {joint.nutation, "nutation"},
+                                                        {joint.spin, "spin"}};
+    for (const auto& [id, slot] : slots) {
+      if (id < 0) continue;
+      const Function& function = scenario_.functions[static_cast<std::size_t>(id)];
+      const double at_zero = ValueAtZero(function);
+      const bool covers_negative =
+          function.kind == Function::Kind::kTable && function.points.front()[0] < 0;
+      if (covers_negative || at_zero == 0.0 || !std::isfinite(at_zero)) continue;
+      Report(DiagnosticKind::kJointTorqueNotZeroAtZero,
+             function.range.valid() ? function.range : joint.range,
+             fmt::format("the {} torque of joint `{}` is {:g} N*m at zero angle: it resists the "
+                         "angle, so it jumps from {:g} to {:g} N*m as the angle passes zero",
+                         slot, joint.name, at_zero, -at_zero, at_zero),
+             "not zero at zero angle",
+             fmt::format("a joint's torque functions resist its angle; for a torque that drives "
+                         "the joint (a motor), write `load NAME on {} {{ torque = ... }}`",
+                         joint.name));
     }
   }
 

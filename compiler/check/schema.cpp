@@ -78,6 +78,8 @@ std::vector<BlockSpec> MakeSpecs() {
       {"harness", BlockKind::kHarness, "several belts that act together"},
       {"airbag", BlockKind::kAirbag, "an ellipsoidal airbag that deploys and vents"},
       {"spring", BlockKind::kSpring, "a spring-damper between two frames"},
+      {"load", BlockKind::kLoad,
+       "an applied force or torque, a function of time, on a segment or across a joint"},
       {"tension", BlockKind::kSpring, "a tension-only element between two frames"},
       {"constraint", BlockKind::kConstraint,
        "a fixed-point, fixed-distance, rolling or sliding "
@@ -235,6 +237,19 @@ std::vector<BlockSpec> MakeSpecs() {
         NonNegative("free_length", d::kLength, "unloaded length; default: the initial distance")},
        {}});
   specs.push_back(
+      {BlockKind::kLoad,
+       {Function("force", d::kTime, d::kForce, "force against time, along `direction`"),
+        Function("torque", d::kTime, d::kTorque, "torque against time, about `axis`"),
+        Vector("direction", d::kDimensionless, "direction of the force (a segment load)"),
+        Vector("axis", d::kDimensionless, "axis of the torque"),
+        Vector("point", d::kLength,
+               "where the force acts, in the segment; default its centre "
+               "of mass"),
+        Typed("frame", V::kWord,
+              "`ground` (default): direction and axis fixed in the ground; `segment`: turning "
+              "with the segment")},
+       {}});
+  specs.push_back(
       {BlockKind::kConstraint,
        {AtFrame("constrained point in one of the two frames"),
         NonNegative("distance", d::kLength, "fixed distance; default: the initial distance"),
@@ -319,6 +334,8 @@ std::string_view BlockName(BlockKind kind) {
       return "spring";
     case BlockKind::kConstraint:
       return "constraint";
+    case BlockKind::kLoad:
+      return "load";
     case BlockKind::kInitial:
       return "initial";
     case BlockKind::kOutput:

@@ -32,6 +32,7 @@ enum class BlockKind {
   kAirbag,
   kSpring,
   kConstraint,
+  kLoad,
   kInitial,
   kOutput,
   kTime,

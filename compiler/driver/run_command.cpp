@@ -316,9 +316,10 @@ int RunCommand(const RunCommandOptions& options) {
     const runtime::EnergySummary& energy = summary.energy;
     std::cerr << fmt::format(
         "sled: energy balance closes to {:.2g} % (largest residual {:.3g} J of {:.4g} J; at the "
-        "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J)\n",
+        "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J{})\n",
         100 * energy.relative(), energy.largest_residual, energy.scale, energy.kinetic,
-        energy.absorbed, energy.prescribed_work);
+        energy.absorbed, energy.prescribed_work,
+        model.loads.size() > 0 ? fmt::format(", applied work {:.4g} J", energy.applied_work) : "");
   }
   PrintCriteria(result.criteria);
   if (!write_errors.empty()) return kExitInputErrors;

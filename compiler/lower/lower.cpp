@@ -145,6 +145,7 @@ runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager&
   lowering.poses = ComputeInitialPoses(scenario);
   lowering::LowerTree(lowering);
   lowering::LowerContacts(lowering);
+  lowering::LowerShapes(lowering);
   lowering::LowerAirbags(lowering);
   lowering::LowerScene(lowering);
   lowering::LowerBelts(lowering);

@@ -93,6 +93,43 @@ void LowerSprings(Lowering& lowering) {
   }
 }
 
+// Applied loads: a segment's by its Model index; a joint's on the segment the joint carries,
+// with its axis in the parent's frame (a pin's or slip's own axis, or the one the scene gives).
+void LowerLoads(Lowering& lowering) {
+  Model& model = lowering.model();
+  runtime::LoadTable& loads = model.loads;
+  for (const AppliedLoad& load : lowering.scenario().loads) {
+    int segment = -1;
+    runtime::LoadTable::Kind kind = runtime::LoadTable::Kind::kSegment;
+    runtime::Vec3 axis = ToEigen(load.axis);
+    if (load.across_joint) {
+      for (std::size_t s = 0; s < lowering.joint_above.size(); ++s) {
+        if (lowering.joint_above[s] == load.index) segment = static_cast<int>(s);
+      }
+      if (segment < 0) continue;  // a null joint's load is refused by the checker
+      const auto s = static_cast<std::size_t>(segment);
+      const JointType type = lowering.joint(load.index).type;
+      if (type == JointType::kPin || type == JointType::kSlip) {
+        axis = (model.joint_frame_in_parent[s] * model.joint_axis[s]).normalized();
+      }
+      kind = type == JointType::kSlip ? runtime::LoadTable::Kind::kJointForce
+                                      : runtime::LoadTable::Kind::kJointTorque;
+    } else {
+      segment = lowering.new_index[static_cast<std::size_t>(load.index)];
+    }
+    loads.name.push_back(load.name);
+    loads.source.push_back(lowering.Position(load.range));
+    loads.kind.push_back(kind);
+    loads.segment.push_back(segment);
+    loads.force.push_back(lowering.Function(load.force));
+    loads.torque.push_back(lowering.Function(load.torque));
+    loads.direction.push_back(ToEigen(load.direction));
+    loads.axis.push_back(axis);
+    loads.point.push_back(ToEigen(load.point));
+    loads.in_segment.push_back(load.in_segment ? 1 : 0);
+  }
+}
+
 void LowerConstraints(Lowering& lowering) {
   Model& model = lowering.model();
   for (std::size_t c = 0; c < lowering.scenario().constraints.size(); ++c) {
@@ -267,6 +304,7 @@ void LowerOutputs(Lowering& lowering) {
 void LowerScene(Lowering& lowering) {
   LowerVehicles(lowering);
   LowerSprings(lowering);
+  LowerLoads(lowering);
   LowerConstraints(lowering);
   LowerRunSettings(lowering);
   LowerOutputs(lowering);

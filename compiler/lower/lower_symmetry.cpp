@@ -189,6 +189,11 @@ void PlanMirrorSymmetry(Lowering& lowering) {
       return refuse(fmt::format("spring `{}` acts on a right segment", spring.name));
     }
   }
+  // A load acts on one segment: the left one would stand for both, a centre one be pulled
+  // sideways with nothing to balance it.
+  if (!scenario.loads.empty()) {
+    return refuse(fmt::format("load `{}` acts on one side only", scenario.loads.front().name));
+  }
   for (const Belt& belt : scenario.belts) {
     for (const BeltPoint& point : belt.path) {
       const bool right = point.kind == BeltPoint::Kind::kSegment

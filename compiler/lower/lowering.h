@@ -134,6 +134,9 @@ std::int16_t FilterClassOf(const OutputRequest& request, runtime::Model::OutputK
 // The injury criteria and the output groups they read, added when the scene lacks them (after
 // LowerScene).
 void LowerCriteria(Lowering& lowering);
+// The shapes the animation draws for segments beyond their contact ellipsoids (after
+// LowerContacts).
+void LowerShapes(Lowering& lowering);
 // Notes for the features the Model does not hold yet.
 void NoteLeftOut(Lowering& lowering);
 

@@ -207,6 +207,22 @@ bool WriteAnimationGlb(const std::string& path, const Model& model,
                                       contacts.ellipsoid_axes[e], contacts.ellipsoid_semi_axes[e]));
     scene.AddChild(frame_node(contacts.ellipsoid_frame[e]), node);
   }
+  // The segments' other shapes: ellipsoids in no contact, or an ellipsoid of the inertia.
+  for (std::size_t k = 0; k < model.shape_name.size(); ++k) {
+    const double degree = std::max(2.0, model.shape_degree[k]);
+    auto [it, fresh] = shape_mesh.try_emplace(degree, -1);
+    if (fresh) {
+      it->second = scene.AddTriangleMesh(
+          fmt::format("ellipsoid of degree {}", degree),
+          SuperellipsoidMesh(degree, kEllipsoidRings, kEllipsoidSectors), kBodyMaterial);
+    }
+    const int node = scene.AddNode(
+        model.shape_name[k], EllipsoidFields(it->second, model.shape_center[k], model.shape_axes[k],
+                                             model.shape_semi_axes[k]));
+    scene.AddChild(
+        frame_node({FrameRef::Kind::kSegment, static_cast<std::int32_t>(model.shape_segment[k])}),
+        node);
+  }
   for (std::size_t p = 0; p < contacts.nplane(); ++p) {
     const int mesh =
         scene.AddTriangleMesh(contacts.plane_name[p],

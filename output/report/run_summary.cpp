@@ -118,6 +118,7 @@ EnergySummary ReadEnergy(const Json& object, std::string* error) {
   in.Number("potential", out.potential);
   in.Number("absorbed", out.absorbed);
   in.Number("prescribed_work", out.prescribed_work);
+  in.Number("applied_work", out.applied_work);
   in.Number("impulses", out.impulses);
   in.Number("residual", out.residual);
   in.Number("largest_residual", out.largest_residual);

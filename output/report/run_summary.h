@@ -30,6 +30,7 @@ struct EnergySummary {
   double potential = 0.0;
   double absorbed = 0.0;
   double prescribed_work = 0.0;
+  double applied_work = 0.0;
   double impulses = 0.0;
   double residual = 0.0;
   double largest_residual = 0.0;

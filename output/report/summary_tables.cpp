@@ -87,6 +87,7 @@ std::string EnergySection(const RunSummaryFile& summary) {
       {"potential", Significant(e.potential) + " J"},
       {"absorbed by the force elements", Significant(e.absorbed) + " J"},
       {"work of the prescribed motion", Significant(e.prescribed_work) + " J"},
+      {"work of the applied loads", Significant(e.applied_work) + " J"},
       {"changed by impulses", Significant(e.impulses) + " J"},
       {"residual at the end", Significant(e.residual, 3) + " J"},
   });

@@ -258,6 +258,24 @@ TEST_F(AnimationExport, TheFlagshipAnimationIsAValidGlbThatFollowsTheRun) {
     }
   }
   EXPECT_GE(quads, 4u);  // seat pan and back, floor, toe board, knee bolster, ...
+
+  // Every segment is drawn (issue 15: the flagship showed no arms, lower legs or neck): its
+  // contact ellipsoids, its other ellipsoids, or an ellipsoid of its inertia, `SEGMENT.inertia`.
+  std::size_t segments = 0;
+  for (const int child : world_children) {
+    const Json& node = json["nodes"][static_cast<std::size_t>(child)];
+    const std::string name = node["name"].text;
+    if (name.rfind("occupant.", 0) != 0) continue;
+    ++segments;
+    ASSERT_TRUE(node.Has("children")) << name << " is not drawn";
+    bool meshed = false;
+    for (const Json& shape : node["children"].items) {
+      const Json& drawn = json["nodes"][static_cast<std::size_t>(shape.Int())];
+      meshed = meshed || drawn.Has("mesh");
+    }
+    EXPECT_TRUE(meshed) << name << " has no mesh";
+  }
+  EXPECT_GE(segments, 15u);
 }
 
 }  // namespace
