@@ -41,8 +41,8 @@ std::string Pair(const std::string& joint, const std::string& details, const std
   integrator dopri5 { tolerance = 1e-10 }
   body pair {
     reference = a
-    segment a { mass = 3 kg  inertia = (0.05, 0.2, 0.05) kg*m^2 }
-    segment b { mass = 1 kg  inertia = (0.02, 0.05, 0.02) kg*m^2 }
+    segment a { mass = 3 kg  inertia = (0.15, 0.2, 0.15) kg*m^2 }
+    segment b { mass = 1 kg  inertia = (0.03, 0.05, 0.03) kg*m^2 }
     joint j : )" +
          joint + R"( {
       at a = (0, 0, 0) mm
@@ -128,8 +128,8 @@ TEST(AppliedLoad, AForceAcrossASlipJointPushesTheTwoApart) {
   integrator dopri5 { tolerance = 1e-10 }
   body pair {
     reference = a
-    segment a { mass = 3 kg  inertia = (0.05, 0.2, 0.05) kg*m^2 }
-    segment b { mass = 1 kg  inertia = (0.02, 0.05, 0.02) kg*m^2 }
+    segment a { mass = 3 kg  inertia = (0.15, 0.2, 0.15) kg*m^2 }
+    segment b { mass = 1 kg  inertia = (0.03, 0.05, 0.03) kg*m^2 }
     joint j : slip(a -> b) {
       at a = (0, 0, 0) mm
       at b = (0, 0, 0) mm
@@ -156,7 +156,7 @@ TEST(AppliedLoad, ABodyFixedTorqueSpinsASegmentAboutItsAxis) {
   gravity = (0, 0, 0) m/s^2
   time { end = 1 s  output_every = 10 ms }
   integrator dopri5 { tolerance = 1e-10 }
-  body b { segment s { mass = 1 kg  inertia = (0.1, 0.2, 0.4) kg*m^2 } }
+  body b { segment s { mass = 1 kg  inertia = (0.2, 0.25, 0.4) kg*m^2 } }
   load spin on b.s { torque = 0.8 N*m  axis = z  frame = segment }
   initial b { orientation = (0, 0, 90) deg }
   output { angular_velocity b.s }
@@ -198,8 +198,8 @@ TEST(AppliedLoad, AConstantFlexureResistsTheAngleWhereALoadDrivesIt) {
   integrator dopri5 { tolerance = 1e-10 }
   body pair {
     reference = a
-    segment a { mass = 3 kg  inertia = (0.05, 0.2, 0.05) kg*m^2 }
-    segment b { mass = 1 kg  inertia = (0.02, 0.05, 0.02) kg*m^2 }
+    segment a { mass = 3 kg  inertia = (0.15, 0.2, 0.15) kg*m^2 }
+    segment b { mass = 1 kg  inertia = (0.03, 0.05, 0.03) kg*m^2 }
     joint j : pin(a -> b) {
       at a = (0, 0, 0) mm
       at b = (0, 0, 0) mm
