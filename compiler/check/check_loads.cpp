@@ -59,19 +59,20 @@ void Checker::CheckLoads() {
       continue;
     }
     // An attribute that has no meaning for this target is an error, never ignored.
-    auto refuse = [&](std::string_view name, const std::string& why, const std::string& help) {
+    auto refuse = [&](AttributeKey name, const std::string& why, const std::string& help) {
       if (const ast::Statement* given = One(bound, name)) {
         Report(DiagnosticKind::kMisplacedStatement, given->keyword_range,
-               fmt::format("`{}` does not apply here: {}", name, why), "not for this load", help);
+               fmt::format("`{}` does not apply here: {}", name.view(), why), "not for this load",
+               help);
         return true;
       }
       return false;
     };
-    auto require = [&](std::string_view name, std::string_view with, const std::string& help) {
+    auto require = [&](AttributeKey name, std::string_view with, const std::string& help) {
       if (One(bound, name)) return true;
       Report(DiagnosticKind::kMissingAttribute, statement.range,
-             fmt::format("load `{}` has a `{}` but no `{}`", load.name, with, name),
-             fmt::format("no `{}`", name), help);
+             fmt::format("load `{}` has a `{}` but no `{}`", load.name, with, name.view()),
+             fmt::format("no `{}`", name.view()), help);
       return false;
     };
     if (!load.across_joint) {
