@@ -117,15 +117,19 @@ PointState PointInFrame(const Data& data, const FrameRef& frame, const Vec3& poi
   return {position, VelocityAt(motion, position)};
 }
 
+void ComputeJointTorques(const Model& model, Data& data) {
+  std::fill(data.generalized_force.begin(), data.generalized_force.end(), 0.0);
+  for (std::size_t s = 0; s < model.nsegment(); ++s) JointTorques(model, data, s);
+}
+
 void ComputeForces(const Model& model, Data& data) {
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     data.external[s].setZero();
     data.external[s].tail<3>() =
         model.segment_mass[s] * (data.rotation[s].transpose() * model.gravity);
   }
-  std::fill(data.generalized_force.begin(), data.generalized_force.end(), 0.0);
   data.vehicle_power = 0.0;
-  for (std::size_t s = 0; s < model.nsegment(); ++s) JointTorques(model, data, s);
+  ComputeJointTorques(model, data);
 
   if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
 

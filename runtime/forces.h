@@ -10,6 +10,10 @@ namespace sled::runtime {
 
 void ComputeForces(const Model& model, Data& data);
 
+// The joint characteristics alone (torque functions, viscous and Coulomb damping) into
+// data.generalized_force, which it zeroes first: functions of each joint's own q and v only.
+void ComputeJointTorques(const Model& model, Data& data);
+
 // The flexure and twist angles of a ball joint's quaternion about the joint's z axis (swing–twist
 // decomposition), with the unit flexure axis in the parent joint frame.
 struct SwingTwist {

@@ -18,7 +18,8 @@
 
 namespace sled::runtime {
 
-MultibodySystem::MultibodySystem(const Model& model, Data& data) : model_(model), data_(data) {
+MultibodySystem::MultibodySystem(const Model& model, Data& data)
+    : model_(model), data_(data), jacobian_(model) {
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     const JointKind kind = model.joint_kind[s];
     if (model.joint_stop_impulse[s] && model.joint_stop[s] > 0 &&
@@ -118,6 +119,23 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
     }
   }
   return true;
+}
+
+bool MultibodySystem::StructuredJacobianAt(double t, std::span<const double> y,
+                                           std::span<const double> dy, double step,
+                                           StructuredJacobian& jacobian) {
+  (void)dy;
+  failure_ = Failure{};
+  if (jacobian_.Form(data_, t, y, step, jacobian, &failure_)) return true;
+  failure_.time = t;
+  if (failure_.cause.empty()) failure_.cause = "the Jacobian of the force elements failed";
+  return false;
+}
+
+// At least one column, so the methods take this structured Jacobian (N alone when no element
+// is stiff) rather than a dense one.
+std::size_t MultibodySystem::StructuredRank() const {
+  return std::max<std::size_t>(jacobian_.max_rank(), 1);
 }
 
 std::vector<std::size_t> MultibodySystem::VectorGroups() const {

@@ -9,6 +9,7 @@
 
 #include "runtime/data.h"
 #include "runtime/integrate/ode.h"
+#include "runtime/multibody_jacobian.h"
 
 namespace sled::runtime {
 
@@ -20,6 +21,10 @@ class MultibodySystem : public OdeSystem {
   std::size_t ControlledSize() const override;
   bool Derivative(double t, std::span<const double> y, std::span<double> dy) override;
   std::vector<std::size_t> VectorGroups() const override;
+  // The force elements' stiffness and damping through the tree (multibody_jacobian.h).
+  bool StructuredJacobianAt(double t, std::span<const double> y, std::span<const double> dy,
+                            double step, StructuredJacobian& jacobian) override;
+  std::size_t StructuredRank() const override;
   // Unit quaternions and loop constraints: y moved back onto its manifold (by the drift only).
   void Project(double t, std::span<double> y) override { ProjectState(t, y); }
   void ProjectState(double t, std::span<double> y);
@@ -84,6 +89,7 @@ class MultibodySystem : public OdeSystem {
   std::vector<double> saved_v_;                 // scratch for UnitResponse
   std::vector<double> event_v_;                 // velocities before an event's impulse
   std::vector<std::vector<double>> responses_;  // up to six unit responses, nv each
+  MultibodyJacobian jacobian_;
 };
 
 }  // namespace sled::runtime

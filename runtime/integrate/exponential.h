@@ -68,7 +68,7 @@ PhiValues ComputePhi(double z);
 
 class ExponentialIntegrator final : public AdaptiveIntegrator {
  public:
-  std::string_view name() const override { return "exponential"; }
+  std::string_view name() const override { return "cvs"; }
   int order() const override { return 3; }
 
   // The decay rate of each group used by the last step attempted (for tests and reports).

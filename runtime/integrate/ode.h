@@ -12,7 +12,8 @@
 
 namespace sled::runtime {
 
-class Archive;  // runtime/archive.h
+class Archive;              // runtime/archive.h
+struct StructuredJacobian;  // runtime/integrate/structured_jacobian.h
 
 // y' = f(t, y), with events g_k(t, y) whose sign changes the integrator must locate.
 class OdeSystem {
@@ -31,6 +32,20 @@ class OdeSystem {
     (void)t, (void)y, (void)jacobian;
     return false;
   }
+
+  // The Jacobian approximation A = N + U V^T of structured_jacobian.h at (t, y), where
+  // f(t, y) = dy, for a step of about `step`: N the kinematic part, U V^T the stiff part, from
+  // which terms too soft to limit such a step may be left out. The exponential and Rosenbrock
+  // methods use it (they stay correct with any A; it decides how long their steps can be). It
+  // fills at most StructuredRank() columns into `jacobian` (already cleared and sized). False
+  // when it cannot be formed (the method then rejects the step). A system with StructuredRank()
+  // 0 has none: the methods use the dense Jacobian (Jacobian, or differences) instead.
+  virtual bool StructuredJacobianAt(double t, std::span<const double> y, std::span<const double> dy,
+                                    double step, StructuredJacobian& jacobian) {
+    (void)t, (void)y, (void)dy, (void)step, (void)jacobian;
+    return false;
+  }
+  virtual std::size_t StructuredRank() const { return 0; }
 
   // How many leading components the error control measures. The rest are quadratures:
   // integrals of quantities of the state (the energy balance's work terms) that feed nothing

@@ -79,16 +79,14 @@ constexpr Tableau kTableau = MakeTableau();
 
 void Rosenbrock::ResizeWorkspace(std::size_t size) {
   const auto n = static_cast<Eigen::Index>(size);
-  jacobian_.setZero(n, n);
-  matrix_.setZero(n, n);
-  lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(n);
+  source_.Reserve(system());
+  solver_.Reserve(size, source_.jacobian().max_rank());
   time_derivative_.setZero(n);
   for (auto& u : u_) u.setZero(n);
   rhs_.setZero(n);
   stage_.setZero(n);
   f_stage_.setZero(n);
   error_.setZero(n);
-  jacobian_row_major_.assign(size * size, 0.0);
   RestartHistory();
 }
 
@@ -100,50 +98,17 @@ void Rosenbrock::RestartHistory() {
   factored_step_ = 0.0;
 }
 
-bool Rosenbrock::FormJacobian(double h) {
+JacobianSource::Status Rosenbrock::FormJacobian(double h) {
   const std::size_t n = y_.size();
   const auto ni = static_cast<Eigen::Index>(n);
-  const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
-  ++mutable_stats().jacobians;
   jacobian_valid_ = false;  // until it is complete
-
-  if (system().Jacobian(t_, y_, jacobian_row_major_)) {
-    for (Eigen::Index i = 0; i < ni; ++i) {
-      for (Eigen::Index j = 0; j < ni; ++j) {
-        jacobian_(i, j) = jacobian_row_major_[static_cast<std::size_t>(i * ni + j)];
-      }
-    }
-  } else {
-    // Forward differences, one column per evaluation; stage_ holds the perturbed state.
-    const double rtol = options().relative_tolerance;
-    const double small = std::max(rtol > 0.0 ? options().absolute_tolerance / rtol : 1.0, 1e-8);
-    std::copy(y_.begin(), y_.end(), stage_.data());
-    const std::span<double> perturbed(stage_.data(), n);
-    const std::span<double> f_perturbed(f_stage_.data(), n);
-    for (std::size_t j = 0; j < n; ++j) {
-      double delta = sqrt_eps * std::max(std::abs(y_[j]), small);
-      // Retry the other way if the system cannot be evaluated on this side.
-      bool ok = false;
-      for (const double sign : {1.0, -1.0}) {
-        perturbed[j] = y_[j] + sign * delta;
-        const double actual = perturbed[j] - y_[j];  // the increment as represented
-        if (Evaluate(t_, perturbed, f_perturbed)) {
-          delta = actual;
-          ok = true;
-          break;
-        }
-      }
-      perturbed[j] = y_[j];
-      if (!ok) return false;
-      const auto col = static_cast<Eigen::Index>(j);
-      for (Eigen::Index i = 0; i < ni; ++i) {
-        jacobian_(i, col) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / delta;
-      }
-    }
-  }
+  const JacobianSource::Status status =
+      source_.Form(system(), t_, y_, f0_, h, options(), mutable_stats());
+  if (status != JacobianSource::Status::kOk) return status;
 
   // f_t by a forward difference in time; a W-method stays third order with any f_t, so if the
   // system cannot be evaluated there we go on without it.
+  const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   const double dt = sqrt_eps * std::max(std::abs(t_), h);
   if (Evaluate(t_ + dt, y_, std::span<double>(f_stage_.data(), n)) && f_stage_.allFinite()) {
     for (Eigen::Index i = 0; i < ni; ++i) {
@@ -152,25 +117,24 @@ bool Rosenbrock::FormJacobian(double h) {
   } else {
     time_derivative_.setZero();
   }
-
-  if (!jacobian_.allFinite() || !time_derivative_.allFinite()) return false;
+  if (!time_derivative_.allFinite()) return JacobianSource::Status::kNotFinite;
   jacobian_valid_ = true;
   jacobian_at_current_point_ = true;
   jacobian_age_ = 0;
   jacobian_step_ = h;
   factored_step_ = 0.0;  // the factorization belongs to the old Jacobian
+  return JacobianSource::Status::kOk;
+}
+
+bool Rosenbrock::Factor(double h) {
+  factored_step_ = 0.0;
+  if (!solver_.Factor(source_.jacobian(), 1.0 / (h * kGamma))) return false;
+  factored_step_ = h;
   return true;
 }
 
-void Rosenbrock::Factor(double h) {
-  matrix_ = -jacobian_;
-  matrix_.diagonal().array() += 1.0 / (h * kGamma);
-  lu_.compute(matrix_);
-  factored_step_ = h;
-}
-
 void Rosenbrock::SerializeHistory(Archive& archive) {
-  archive.Field(jacobian_);
+  source_.jacobian().Serialize(archive);
   archive.Field(time_derivative_);
   archive.Field(jacobian_valid_);
   archive.Field(jacobian_at_current_point_);
@@ -188,11 +152,21 @@ bool Rosenbrock::TryStep(double h, double* error) {
   if (jacobian_valid_ && jacobian_at_current_point_) {
     jacobian_step_ = h;  // a retry from the same point: the Jacobian is exact, keep it
   } else if (!jacobian_valid_ || jacobian_age_ >= kMaxJacobianAge || step_changed_much) {
-    if (!FormJacobian(h)) return false;
+    switch (FormJacobian(h)) {
+      case JacobianSource::Status::kOk:
+        break;
+      case JacobianSource::Status::kEvaluationFailed:
+        return false;
+      case JacobianSource::Status::kNotFinite:
+        // The state is beyond where the system can be differentiated: report it as not finite.
+        std::fill(y1_.begin(), y1_.end(), std::numeric_limits<double>::quiet_NaN());
+        *error = std::numeric_limits<double>::quiet_NaN();
+        return true;
+    }
   }
   if (factored_step_ != h) {
-    Factor(h);
     ++mutable_stats().factorizations;
+    if (!Factor(h)) return false;
   }
 
   const Eigen::Map<const Eigen::VectorXd> y0(y_.data(), static_cast<Eigen::Index>(n));
@@ -213,7 +187,7 @@ bool Rosenbrock::TryStep(double h, double* error) {
       for (int j = 0; j < i; ++j) rhs_ += (kTableau.c[i][j] / h) * u_[j];
     }
     if (kTableau.gamma_sum[i] != 0.0) rhs_ += (kTableau.gamma_sum[i] * h) * time_derivative_;
-    u_[i] = lu_.solve(rhs_);
+    solver_.Solve(std::span<const double>(rhs_.data(), n), std::span<double>(u_[i].data(), n));
   }
 
   Eigen::Map<Eigen::VectorXd> y1(y1_.data(), static_cast<Eigen::Index>(n));

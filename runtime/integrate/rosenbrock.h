@@ -22,9 +22,14 @@
 // The code uses the equivalent form without products by W (Hairer's u_i = sum_j gamma_ij k_j),
 // whose coefficients are computed from these at compile time.
 //
-// Jacobian: OdeSystem::Jacobian when it returns true, otherwise forward differences of
-// Derivative column by column with increment sqrt(eps) max(|y_j|, atol/rtol); f_t by a forward
-// difference in t. I - h gamma W is factored with Eigen's PartialPivLU.
+// Jacobian: W is the structured approximation A = N + U V^T of jacobian_source.h: the system's
+// own (for a multibody system, the kinematics and the force elements' stiffness and damping
+// through the tree, with no derivative evaluations), or the dense Jacobian as U = J, V = I
+// (OdeSystem::Jacobian, or forward differences of Derivative column by column). f_t by a forward
+// difference in t. The stage systems (1/(h gamma) I - W) u = r are solved by the
+// Sherman-Morrison-Woodbury formula (StructuredShiftedSolver): one factorization of an R x R
+// matrix per step size, O(n R) per solve, so a 60-segment chain no longer pays a dense n x n
+// Jacobian and LU.
 //
 // Reuse rule. The Jacobian (with f_t) is formed afresh at the start of a step when
 //   - there is none (after Reset, an event or an external change of the state),
@@ -44,6 +49,8 @@
 #include <vector>
 
 #include "runtime/integrate/adaptive_integrator.h"
+#include "runtime/integrate/jacobian_source.h"
+#include "runtime/integrate/structured_jacobian.h"
 
 namespace sled::runtime {
 
@@ -72,17 +79,15 @@ class Rosenbrock final : public AdaptiveIntegrator {
 
  private:
   // Forms the Jacobian and f_t at (t_, y_) (f0_ is f there). False if Derivative failed.
-  bool FormJacobian(double h);
-  // W = 1/(h gamma) I - J, factored.
-  void Factor(double h);
+  JacobianSource::Status FormJacobian(double h);
+  // 1/(h gamma) I - W, factored; false when it is singular.
+  bool Factor(double h);
 
-  Eigen::MatrixXd jacobian_;
-  Eigen::MatrixXd matrix_;  // 1/(h gamma) I - J
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  JacobianSource source_;
+  StructuredShiftedSolver solver_;
   Eigen::VectorXd time_derivative_;  // f_t
   Eigen::VectorXd u_[kStages];
   Eigen::VectorXd rhs_, stage_, f_stage_, error_;
-  std::vector<double> jacobian_row_major_;  // for OdeSystem::Jacobian
 
   bool jacobian_valid_ = false;
   bool jacobian_at_current_point_ = false;  // formed at (t_, y_) of the attempt in progress

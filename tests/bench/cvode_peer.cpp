@@ -264,23 +264,40 @@ Model WithTolerance(const Model& scene, const std::string& method, double tolera
 
 }  // namespace
 
-// `--tolerances=1e-2,1e-4` chooses the ladder; the other arguments are case names.
+// The comma-separated items of `text`.
+std::vector<std::string> SplitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    items.push_back(text.substr(at, comma - at));
+    at = comma + 1;
+  }
+  return items;
+}
+
+// `--tolerances=1e-2,1e-4` chooses the ladder, `--methods=auto,cvode` the methods (default all
+// of sled's and CVODE); the other arguments are case names.
 int main(int argc, char** argv) {
   std::set<std::string> wanted;
   std::vector<double> ladder = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+  std::vector<std::string> methods = {"auto",       "exponential", "dopri5",
+                                      "rosenbrock", "cvs",         "cvode"};
   const std::string ladder_option = "--tolerances=";
+  const std::string methods_option = "--methods=";
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
+    if (argument.rfind(methods_option, 0) == 0) {
+      methods = SplitList(argument.substr(methods_option.size()));
+      continue;
+    }
     if (argument.rfind(ladder_option, 0) != 0) {
       wanted.insert(argument);
       continue;
     }
     ladder.clear();
-    std::size_t at = ladder_option.size();
-    while (at < argument.size()) {
-      const std::size_t comma = std::min(argument.find(',', at), argument.size());
-      ladder.push_back(std::stod(argument.substr(at, comma - at)));
-      at = comma + 1;
+    for (const std::string& item : SplitList(argument.substr(ladder_option.size()))) {
+      ladder.push_back(std::stod(item));
     }
   }
   if (ladder.empty()) {
@@ -311,7 +328,7 @@ int main(int argc, char** argv) {
     std::map<std::string, std::string> tightest;  // method -> its error at the tightest tolerance
     const double tightest_tolerance = *std::min_element(ladder.begin(), ladder.end());
     for (const double tolerance : ladder) {
-      for (const std::string method : {"exponential", "dopri5", "rosenbrock", "cvode"}) {
+      for (const std::string& method : methods) {
         const Model model = WithTolerance(scene, method, tolerance);
         // The fastest of three: a shared machine's noise only ever adds time.
         Outcome best;

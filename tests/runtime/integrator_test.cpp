@@ -241,12 +241,12 @@ AdaptiveIntegrator& Fixed(Integrator& integrator) {
   return dynamic_cast<AdaptiveIntegrator&>(integrator);
 }
 
-const char* const kMethods[] = {"dopri5", "rosenbrock", "exponential"};
+const char* const kMethods[] = {"dopri5", "rosenbrock", "exponential", "cvs"};
 
 class EveryMethod : public ::testing::TestWithParam<const char*> {};
 INSTANTIATE_TEST_SUITE_P(Integrators, EveryMethod, ::testing::ValuesIn(kMethods));
 
-TEST(MakeIntegratorTest, KnowsTheThreeMethodsAndNothingElse) {
+TEST(MakeIntegratorTest, KnowsItsMethodsAndNothingElse) {
   for (const char* method : kMethods) {
     auto integrator = MakeIntegrator(method);
     ASSERT_NE(integrator, nullptr) << method;
@@ -303,7 +303,13 @@ TEST_P(EveryMethod, DecayMatchesExactSolutionAndErrorFollowsTolerance) {
     EXPECT_EQ(integrator->time(), 5.0);  // lands exactly
     const double error = std::abs(integrator->state()[0] - std::exp(-5.0));
     EXPECT_LT(error, 20.0 * tol) << GetParam() << " tol " << tol;
-    EXPECT_LT(error, previous) << GetParam() << " tol " << tol;
+    // The exponential method is exact on a linear problem: its error is rounding at every
+    // tolerance.
+    if (std::string(GetParam()) == "exponential") {
+      EXPECT_LT(error, 1e-14) << "tol " << tol;
+    } else {
+      EXPECT_LT(error, previous) << GetParam() << " tol " << tol;
+    }
     previous = error;
   }
 }
@@ -328,7 +334,11 @@ TEST_P(EveryMethod, ComplexEigenvalueMatchesExactSolutionAndErrorFollowsToleranc
     EXPECT_EQ(integrator->time(), t_end);
     const double error = MaxAbsDifference(integrator->state(), exact);
     EXPECT_LT(error, 100.0 * tol) << GetParam() << " tol " << tol;
-    EXPECT_LT(error, previous) << GetParam() << " tol " << tol;
+    if (std::string(GetParam()) == "exponential") {
+      EXPECT_LT(error, 1e-14) << "tol " << tol;  // exact on a linear problem
+    } else {
+      EXPECT_LT(error, previous) << GetParam() << " tol " << tol;
+    }
     previous = error;
   }
 }
@@ -369,9 +379,15 @@ INSTANTIATE_TEST_SUITE_P(
                       // A W-method keeps its order with a wrong Jacobian or with differences.
                       OrderCase{"rosenbrock", 3, true, 0.5, 400},
                       OrderCase{"rosenbrock", 3, true, 0.0, 3200},
-                      OrderCase{"exponential", 3, true, 1.0, 400},
+                      OrderCase{"cvs", 3, true, 1.0, 400},
+                      // The exponential method with half the Jacobian (its error changes sign
+                      // near 1000 steps, so the slope shows from 3200 on): the order of its
+                      // stiff order conditions, which hold for any A (an exponential Rosenbrock
+                      // method would be first order here). With the exact Jacobian it
+                      // converges faster (4.4 to 4.6 over 400 to 6400 steps).
+                      OrderCase{"exponential", 3, true, 0.5, 3200},
                       OrderCase{"rosenbrock", 3, false, 0.0, 400},
-                      OrderCase{"exponential", 3, false, 0.0, 400}));
+                      OrderCase{"cvs", 3, false, 0.0, 400}));
 
 TEST_P(ConvergenceOrder, ObservedOrderIsWithinHalfOfTheTheoreticalOrder) {
   const OrderCase c = GetParam();
@@ -398,13 +414,13 @@ TEST_P(ConvergenceOrder, ObservedOrderIsWithinHalfOfTheTheoreticalOrder) {
     EXPECT_EQ(integrator->stats().steps, steps);
     EXPECT_EQ(integrator->stats().rejected, 0);
     errors.push_back(MaxAbsDifference(integrator->state(), exact));
-    if (!c.kepler && std::string(c.method) == "exponential") {
+    if (!c.kepler && std::string(c.method) == "cvs") {
       // The spiral is integrated with its decay rate, not as plain RK3.
       const auto& exponential = dynamic_cast<const ExponentialIntegrator&>(*integrator);
       EXPECT_LT(exponential.decay_rates()[0], -0.9 * DecayingSpiral::kRate);
       EXPECT_EQ(integrator->stats().decaying_steps, steps);  // and the stats say so
     }
-    if (std::string(c.method) != "exponential") {
+    if (std::string(c.method) != "cvs") {
       EXPECT_EQ(integrator->stats().decaying_steps, 0);
     }
   }
@@ -492,18 +508,18 @@ TEST(StiffTest, StiffMethodsTakeFarFewerStepsThanDopri5OnAStiffVectorGroup) {
     exact[i + 3] = std::exp(-t_end) * y0[i + 3] +
                    y0[i] * (std::exp(-t_end) - std::exp(-k * t_end)) / (k - 1.0);
   }
-  long steps[3] = {0, 0, 0};
-  for (int m = 0; m < 3; ++m) {
+  long steps[4] = {0, 0, 0, 0};
+  for (int m = 0; m < 4; ++m) {
     auto integrator = Make(kMethods[m]);
     integrator->Reset(system, 0.0, y0, Tolerance(1e-6));
     ASSERT_EQ(integrator->Advance(t_end).status, IntegratorStatus::kOk);
     EXPECT_LT(MaxAbsDifference(integrator->state(), exact), 1e-4) << kMethods[m];
     steps[m] = integrator->stats().steps + integrator->stats().rejected;
   }
-  std::printf("  stiff group, tol 1e-6: dopri5 %ld, rosenbrock %ld, exponential %ld steps\n",
-              steps[0], steps[1], steps[2]);
-  EXPECT_GT(steps[0], 100 * steps[1]);
-  EXPECT_GT(steps[0], 100 * steps[2]);
+  std::printf(
+      "  stiff group, tol 1e-6: dopri5 %ld, rosenbrock %ld, exponential %ld, cvs %ld steps\n",
+      steps[0], steps[1], steps[2], steps[3]);
+  for (int m = 1; m < 4; ++m) EXPECT_GT(steps[0], 100 * steps[m]) << kMethods[m];
 }
 
 TEST(StiffTest, ExponentialStaysAccurateWhenStiffnessCouplesGroups) {
@@ -805,6 +821,10 @@ TEST_P(EveryMethod, HonoursMaxStepAndCountsWork) {
   if (std::string(GetParam()) == "rosenbrock") {
     EXPECT_GT(s.jacobians, 0);
     EXPECT_GE(s.factorizations, s.jacobians);
+  } else if (std::string(GetParam()) == "exponential") {
+    EXPECT_GT(s.jacobians, 0);
+    EXPECT_LT(s.jacobians, s.steps);  // reused over steps
+    EXPECT_EQ(s.factorizations, 0);
   } else {
     EXPECT_EQ(s.jacobians, 0);
     EXPECT_EQ(s.factorizations, 0);

@@ -1,0 +1,114 @@
+// The exponential method: an explicit exponential Runge-Kutta method of stiff order 3 with an
+// embedded solution of stiff order 2 and a continuous extension of stiff order 3, applied in
+// each step to
+//
+//   y' = A y + g(t, y),   g = f - A y,
+//
+// where A = N + U V^T is the step's structured Jacobian approximation (structured_jacobian.h):
+// the kinematics and the force elements' stiffness and damping, formed by the system
+// (OdeSystem::StructuredJacobianAt) and reused over steps while it serves.
+//
+// Why not an exponential Rosenbrock method (Hochbruck, Ostermann & Schweitzer's exprb32/exprb43,
+// SIAM J. Numer. Anal. 47 (2009) 786-803)? Their order conditions assume A = f'(y_n) exactly at
+// every step (g_n'(y_n) = 0): with any other A, exprb32 is first order. The exact Jacobian of a
+// multibody system is dense and costs one evaluation per state; its stiff part is low rank and
+// comes from the force elements almost for free. An exponential Runge-Kutta method whose stiff
+// order conditions hold for any A whose remainder g is non-stiff (Hochbruck & Ostermann,
+// "Explicit exponential Runge-Kutta methods for semilinear parabolic problems", SIAM J. Numer.
+// Anal. 43 (2005) 1069-1090, Table 4.1 / Acta Numerica 19 (2010) Table 2.2) takes that A as it
+// is, keeps its order when A is a step or two old, and is exact when the problem is linear
+// in the stiff part (a linear contact spring, a viscous damper). This makes it an exponential
+// Rosenbrock-type W-method in all but name.
+//
+// The scheme (c = 0, 1/2, 1/2, 1; phi_k = phi_k(hA), phi_k,i = phi_k(c_i hA);
+// D_i = g(t + c_i h, Y_i) - g(t, y) = f(t + c_i h, Y_i) - f(t, y) - A (Y_i - y)):
+//
+//   Y_2 = y + h/2 phi_1,2 f
+//   Y_3 = Y_2 + h/2 phi_2,3 D_2
+//   Y_4 = y + h phi_1 f + 2h phi_2 D_3
+//   y_1 = y + h phi_1 f + h phi_2 (4 D_3 - D_4) + h phi_3 (4 D_4 - 8 D_3)
+//   y^_1 = y + h phi_1 f + 2h phi_2 D_2                       (embedded, stiff order 2)
+//
+// i.e. b_2 = 0, b_3 = 4 phi_2 - 8 phi_3, b_4 = 4 phi_3 - phi_2, a_32 = phi_2,3 / 2,
+// a_42 = 0, a_43 = 2 phi_2. Its stiff order conditions, all in the strong form (for any A):
+//   sum b_i = phi_1,  sum b_i c_i = phi_2,  sum b_i c_i^2 / 2 = phi_3  (b_3/8 + b_4/2 = phi_3),
+//   sum b_i J psi_2,i = 0  (b_2 = 0; psi_2,i = sum_j a_ij c_j - c_i^2 phi_2,i vanishes for
+//   i = 3, 4 by the choice of a_32 and a_43).
+// The embedded solution is the exponential midpoint rule (ETD2RK with c_2 = 1/2, Cox & Matthews,
+// J. Comput. Phys. 176 (2002) 430-455), whose only condition beyond the first is
+// sum b^_i c_i = phi_2. The error estimate y_1 - y^_1 = h phi_2 (4 D_3 - D_4 - 2 D_2)
+// + h phi_3 (4 D_4 - 8 D_3) goes to the shared controller (k = 3).
+//
+// Dense output on the step, theta = (t - t0)/h, tau = theta h, the same stiff order 3 (its
+// weights satisfy the three conditions above with phi_k(tau A) and theta^k):
+//   y(t) = y + tau phi_1(tau A) f + h theta^2 phi_2(tau A) (4 D_3 - D_4)
+//            + h theta^3 phi_3(tau A) (4 D_4 - 8 D_3).
+//
+// A costs no derivative evaluations when the system forms it; the phi-functions are exact on the
+// invariant subspace of A (structured_jacobian.h). Reuse: A is formed afresh after a restart or
+// event, after a rejection when it was formed at an earlier point, after kMaxJacobianAge
+// accepted steps, and when the step differs by more than kJacobianStepRatio from the one it was
+// formed for (the system chooses which terms are stiff by that step). The phi-functions are
+// recomputed when A or the step changes, and to save that, the step is kept when the controller
+// proposes a growth of less than kKeepStepRatio.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "runtime/integrate/adaptive_integrator.h"
+#include "runtime/integrate/jacobian_source.h"
+#include "runtime/integrate/structured_jacobian.h"
+
+namespace sled::runtime {
+
+class ExponentialRungeKutta final : public AdaptiveIntegrator {
+ public:
+  static constexpr long kMaxJacobianAge = 8;
+  static constexpr double kJacobianStepRatio = 2.0;
+  static constexpr double kKeepStepRatio = 1.2;
+
+  std::string_view name() const override { return "exponential"; }
+  int order() const override { return 3; }
+
+  // The stiff rank of the Jacobian in use (the columns of U), for statistics and auto.
+  Eigen::Index stiff_rank() const { return source_.jacobian().rank(); }
+
+ protected:
+  int ErrorPower() const override { return 3; }
+  void ResizeWorkspace(std::size_t size) override;
+  void RestartHistory() override;
+  bool TryStep(double h, double* error) override;
+  void StepAccepted() override;
+  void StepRejected() override;
+  double AdjustStep(double proposed, double current) const override;
+  void SerializeHistory(Archive& archive) override;
+  void Interpolate(double t, std::span<double> y) const override;
+
+ private:
+  JacobianSource::Status EnsureJacobian(double h);
+  // D = f_stage - f0 - A increment.
+  void Remainder(std::span<const double> f_stage, std::span<const double> increment,
+                 std::span<double> d);
+
+  JacobianSource source_;
+  StructuredPhi phi_;
+  bool jacobian_valid_ = false;
+  bool jacobian_at_current_point_ = false;
+  long jacobian_age_ = 0;
+  double jacobian_step_ = 0.0;
+  double prepared_step_ = 0.0;  // the step of the current phi-functions (0: none)
+
+  std::vector<double> half_;   // h/2 phi_1(hA/2) f
+  std::vector<double> whole_;  // h phi_1(hA) f
+  std::vector<double> stage_, increment_, f_stage_;
+  std::vector<double> d2_, d3_, d4_;
+  std::vector<double> c2_, c3_;  // 4 D_3 - D_4 and 4 D_4 - 8 D_3, kept for the dense output
+  std::vector<double> error_, product_;
+  Eigen::VectorXd scratch_;
+};
+
+}  // namespace sled::runtime

@@ -1,0 +1,134 @@
+#include "runtime/integrate/phi_functions.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace sled::runtime {
+namespace {
+
+// ||X||_1 at or below this after scaling: the Taylor degree stays near 14 and the recurrence for
+// the lower functions contracts.
+constexpr double kScaledNorm = 0.5;
+
+// The Taylor series of phi_p(X) is truncated where the next term, ||X||^(d+1) / (d+1+p)!, is
+// below this (relative to the leading I/p!, which is at most 1).
+constexpr double kTruncation = 1e-17;
+
+double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
+  double norm = 0.0;
+  for (Eigen::Index j = 0; j < z.cols(); ++j) norm = std::max(norm, z.col(j).cwiseAbs().sum());
+  return norm;
+}
+
+}  // namespace
+
+double InverseFactorial(int k) {
+  static const auto table = [] {
+    std::array<double, 21> values{};
+    double factorial = 1.0;
+    for (int i = 0; i <= 20; ++i) {
+      if (i > 0) factorial *= i;
+      values[static_cast<std::size_t>(i)] = 1.0 / factorial;
+    }
+    return values;
+  }();
+  if (k < 0 || k > 20) throw std::out_of_range("InverseFactorial: k must be in [0, 20]");
+  return table[static_cast<std::size_t>(k)];
+}
+
+void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
+  const auto count = static_cast<std::size_t>(p + 1);
+  if (next_.size() < count) next_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (next_[k].rows() != capacity) next_[k].resize(capacity, capacity);
+  }
+  if (scaled_.rows() < capacity) {
+    scaled_.resize(capacity, capacity);
+    product_.resize(capacity, capacity);
+  }
+}
+
+void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
+                           std::span<Eigen::MatrixXd> phi, std::span<Eigen::MatrixXd> half) {
+  if (p < 0 || p > kMaxOrder || phi.size() <= static_cast<std::size_t>(p) ||
+      (!half.empty() && half.size() <= static_cast<std::size_t>(p)) || z.rows() != z.cols()) {
+    throw std::invalid_argument(
+        "PhiFunctions::Compute: needs a square Z, 0 <= p <= kMaxOrder "
+        "and p + 1 outputs");
+  }
+  const Eigen::Index m = z.rows();
+  const auto order = static_cast<std::size_t>(p);
+  if (phi[0].rows() < m || phi[0].cols() != phi[0].rows()) phi[0].resize(m, m);
+  const Eigen::Index capacity = phi[0].rows();
+  for (std::size_t k = 0; k <= order; ++k) {
+    if (phi[k].rows() != capacity || phi[k].cols() != capacity) phi[k].resize(capacity, capacity);
+    if (!half.empty() && (half[k].rows() < m || half[k].cols() < m)) half[k].resize(m, m);
+  }
+  if (m == 0) {
+    squarings_ = 0;
+    return;
+  }
+  Reserve(capacity, p);
+  auto corner = [m](Eigen::MatrixXd& matrix) { return matrix.topLeftCorner(m, m); };
+
+  // Scaling: the functions of Z/2 are the state before the last squaring, so ask for at least
+  // one when they are wanted.
+  const double norm = OneNorm(z);
+  int s = 0;
+  if (std::isfinite(norm) && norm > kScaledNorm) {
+    s = static_cast<int>(std::ceil(std::log2(norm / kScaledNorm)));
+  }
+  if (!half.empty()) s = std::max(s, 1);
+  squarings_ = s;
+  auto x = corner(scaled_);
+  x = std::ldexp(1.0, -s) * z;
+  const double x_norm = std::ldexp(norm, -s);
+
+  // Taylor degree d: the first neglected term ||X||^(d+1) / (d+1+p)! below kTruncation.
+  int degree = 0;
+  double term = 1.0;  // ||X||^(d+1) / (d+1+p)! * p!, built up
+  for (degree = 0; degree < 30; ++degree) {
+    term *= x_norm / static_cast<double>(degree + 1 + p);
+    if (term < kTruncation) break;
+  }
+
+  // Horner for phi_p(X) = sum_{j=0..d} X^j / (j+p)!.
+  auto top = corner(phi[order]);
+  auto product = corner(product_);
+  top.setIdentity();
+  top *= 1.0 / std::tgamma(static_cast<double>(degree + p + 1));
+  for (int j = degree - 1; j >= 0; --j) {
+    product.noalias() = x * top;
+    top = product;
+    top.diagonal().array() += 1.0 / std::tgamma(static_cast<double>(j + p + 1));
+  }
+  // phi_k = X phi_{k+1} + I/k!, downwards.
+  for (int k = p - 1; k >= 0; --k) {
+    const auto i = static_cast<std::size_t>(k);
+    auto lower = corner(phi[i]);
+    lower.noalias() = x * corner(phi[i + 1]);
+    lower.diagonal().array() += InverseFactorial(k);
+  }
+
+  // Modified squaring.
+  for (int step = 0; step < s; ++step) {
+    if (step == s - 1 && !half.empty()) {
+      for (std::size_t k = 0; k <= order; ++k) corner(half[k]) = corner(phi[k]);
+    }
+    for (std::size_t k = 1; k <= order; ++k) {
+      auto next = corner(next_[k]);
+      next.noalias() = corner(phi[0]) * corner(phi[k]);
+      for (std::size_t j = 1; j <= k; ++j) {
+        next += InverseFactorial(static_cast<int>(k - j)) * corner(phi[j]);
+      }
+      next *= std::ldexp(1.0, -static_cast<int>(k));
+    }
+    corner(next_[0]).noalias() = corner(phi[0]) * corner(phi[0]);
+    // Same-size matrices: swapping exchanges their storage, never allocates.
+    for (std::size_t k = 0; k <= order; ++k) phi[k].swap(next_[k]);
+  }
+}
+
+}  // namespace sled::runtime

@@ -1,0 +1,56 @@
+// The phi-functions of exponential integrators, for small dense matrices:
+//   phi_0(Z) = e^Z,   phi_k(Z) = sum_{j >= 0} Z^j / (j + k)!,   so Z phi_{k+1}(Z) = phi_k(Z) -
+//   I/k!.
+// (Hochbruck & Ostermann, "Exponential integrators", Acta Numerica 19 (2010) 209-286, §2.)
+//
+// Method: a Taylor polynomial of phi_p at X = Z / 2^s with ||X||_1 <= 1/2 (degree chosen from
+// ||X|| so the truncation is below the unit roundoff), the lower functions by the recurrence
+// phi_k(X) = X phi_{k+1}(X) + I/k! (stable at this norm), then s steps of the modified squaring
+// of Skaflestad & Wright, "The scaling and modified squaring method for matrix functions related
+// to the exponential", Appl. Numer. Math. 59 (2009) 783-799:
+//   phi_0(2X) = phi_0(X)^2,   phi_k(2X) = 2^-k [phi_0(X) phi_k(X) + sum_{j=1..k} phi_j(X)/(k-j)!].
+// The last squaring starts from the functions of Z/2, which the exponential integrator's half
+// steps need, so they come free.
+//
+// The matrices are small (the stiff subspace of a structured Jacobian, structured_jacobian.h):
+// the cost is (d + p + s (p + 1)) products of m x m matrices.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+namespace sled::runtime {
+
+class PhiFunctions {
+ public:
+  // The highest order this class computes (the exponential integrator needs up to 5).
+  static constexpr int kMaxOrder = 8;
+
+  // Writes phi_0(Z) ... phi_p(Z) into the top-left m x m corners of phi[0..p] (Z is m x m), and
+  // phi_0(Z/2) ... phi_p(Z/2) into those of half[0..p] when `half` is not empty. An output
+  // smaller than m x m is resized to m x m; larger ones keep their size, so a caller that sizes
+  // its outputs for the largest Z once never allocates here (nor does the workspace, which grows
+  // the same way). All outputs of one call must have the same size. Requires
+  // 0 <= p <= kMaxOrder, phi.size() > p, and a finite Z (NaN or infinite entries give NaN).
+  void Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p, std::span<Eigen::MatrixXd> phi,
+               std::span<Eigen::MatrixXd> half = {});
+
+  // Sizes the workspace for matrices up to `capacity` x `capacity` and orders up to p, so no
+  // later Compute allocates (Compute also grows it when needed).
+  void Reserve(Eigen::Index capacity, int p);
+
+  // The number of squarings of the last Compute (for tests and statistics).
+  int squarings() const { return squarings_; }
+
+ private:
+  std::vector<Eigen::MatrixXd> next_;  // the functions of the doubled argument, per squaring
+  Eigen::MatrixXd scaled_;             // X = Z / 2^s
+  Eigen::MatrixXd product_;
+  int squarings_ = 0;
+};
+
+// 1/k! for k = 0..20 (exact in double up to 18, correctly rounded beyond).
+double InverseFactorial(int k);
+
+}  // namespace sled::runtime

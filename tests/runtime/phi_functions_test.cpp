@@ -1,0 +1,235 @@
+// The phi-functions of small matrices (runtime/integrate/phi_functions.h) against closed forms
+// (scalars, a rotation generator, a Jordan block) and against Eigen's own matrix exponential
+// (unsupported/Eigen/MatrixFunctions, Higham's Pade scaling and squaring) of the augmented
+// block matrix whose exponential holds them; and the structured products phi_k(tau A) b of
+// runtime/integrate/structured_jacobian.h against the same for the dense A = N + U V^T.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <random>
+#include <span>
+#include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
+
+#include "runtime/integrate/phi_functions.h"
+#include "runtime/integrate/structured_jacobian.h"
+
+namespace sled::runtime {
+namespace {
+
+// phi_k(z) in long double: the series for |z| < 1, else the recurrence from e^z upwards, which
+// loses no accuracy there.
+long double ScalarPhi(int k, long double z) {
+  if (std::fabs(static_cast<double>(z)) < 1.0) {
+    long double sum = 0.0L, term = 1.0L;
+    for (int j = 1; j <= k; ++j) term /= j;
+    for (int j = 0; j < 60; ++j) {
+      sum += term;
+      term *= z / static_cast<long double>(j + k + 1);
+    }
+    return sum;
+  }
+  long double value = std::exp(z);
+  long double factorial = 1.0L;
+  for (int j = 0; j < k; ++j) {
+    value = (value - 1.0L / factorial) / z;
+    factorial *= static_cast<long double>(j + 1);
+  }
+  return value;
+}
+
+// phi_0..phi_p of z by Eigen's exponential of [[Z, I, 0...], [0, 0, I, ...], ..., 0]:
+// its top block row is [e^Z, phi_1(Z), ..., phi_p(Z)]. In long double, so the reference's own
+// rounding (which grows with the norm of a non-normal Z) stays far below the tolerances.
+std::vector<Eigen::MatrixXd> ReferencePhi(const Eigen::MatrixXd& z, int p) {
+  using Wide = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  const Eigen::Index m = z.rows();
+  Wide big = Wide::Zero((p + 1) * m, (p + 1) * m);
+  big.topLeftCorner(m, m) = z.cast<long double>();
+  for (int k = 0; k < p; ++k) big.block(k * m, (k + 1) * m, m, m).setIdentity();
+  const Wide e = big.exp();
+  std::vector<Eigen::MatrixXd> out;
+  for (int k = 0; k <= p; ++k) out.push_back(e.block(0, k * m, m, m).cast<double>());
+  return out;
+}
+
+double RelativeDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).norm() / std::max(b.norm(), 1e-300);
+}
+
+TEST(PhiFunctions, MatchesScalarClosedFormsFromDecayToGrowth) {
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6);
+  for (const double z : {-1e4, -300.0, -20.0, -1.0, -1e-9, 0.0, 1e-6, 0.7, 3.0, 25.0}) {
+    functions.Compute(Eigen::MatrixXd::Constant(1, 1, z), 5, phi, half);
+    for (int k = 0; k <= 5; ++k) {
+      const double exact = static_cast<double>(ScalarPhi(k, z));
+      const double exact_half = static_cast<double>(ScalarPhi(k, z / 2));
+      EXPECT_NEAR(phi[static_cast<std::size_t>(k)](0, 0), exact, 1e-13 * std::abs(exact))
+          << "phi_" << k << "(" << z << ")";
+      EXPECT_NEAR(half[static_cast<std::size_t>(k)](0, 0), exact_half, 1e-13 * std::abs(exact_half))
+          << "phi_" << k << "(" << z / 2 << ")";
+    }
+  }
+}
+
+TEST(PhiFunctions, RotationGeneratorGivesTheRotation) {
+  // Z = [[0, w], [-w, 0]]: e^Z is the rotation by w, and phi_1(Z) = Z^-1 (e^Z - I).
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(3);
+  for (const double w : {0.3, 5.0, 800.0}) {
+    Eigen::Matrix2d z;
+    z << 0, w, -w, 0;
+    functions.Compute(z, 2, phi);
+    Eigen::Matrix2d rotation;
+    rotation << std::cos(w), std::sin(w), -std::sin(w), std::cos(w);
+    EXPECT_LT((phi[0] - rotation).norm(), 1e-13 * std::max(1.0, w)) << w;
+    const Eigen::Matrix2d phi1 = z.inverse() * (rotation - Eigen::Matrix2d::Identity());
+    EXPECT_LT((phi[1] - phi1).norm(), 1e-13 * std::max(1.0, w)) << w;
+    const Eigen::Matrix2d phi2 = z.inverse() * (phi1 - Eigen::Matrix2d::Identity());
+    EXPECT_LT((phi[2] - phi2).norm(), 1e-13 * std::max(1.0, w)) << w;
+  }
+}
+
+TEST(PhiFunctions, JordanBlockGivesTheDerivative) {
+  // A defective matrix (a critically damped oscillator has one): phi_k of [[l, 1], [0, l]] is
+  // [[phi_k(l), phi_k'(l)], [0, phi_k(l)]] with phi_k' = phi_k - k phi_{k+1}.
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(5);
+  for (const double l : {-200.0, -3.0, 0.5}) {
+    Eigen::Matrix2d z;
+    z << l, 1, 0, l;
+    functions.Compute(z, 4, phi);
+    for (int k = 0; k < 4; ++k) {
+      const double value = static_cast<double>(ScalarPhi(k, l));
+      const double derivative = static_cast<double>(ScalarPhi(k, l) - k * ScalarPhi(k + 1, l));
+      const auto& f = phi[static_cast<std::size_t>(k)];
+      EXPECT_NEAR(f(0, 0), value, 1e-13 * std::abs(value)) << k << " " << l;
+      EXPECT_NEAR(f(1, 1), value, 1e-13 * std::abs(value)) << k << " " << l;
+      EXPECT_NEAR(f(0, 1), derivative, 1e-12 * std::abs(derivative) + 1e-300) << k << " " << l;
+      EXPECT_EQ(f(1, 0), 0.0);
+    }
+  }
+}
+
+TEST(PhiFunctions, MatchesEigensExponentialOfTheAugmentedMatrix) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6);
+  for (const int m : {1, 3, 8}) {
+    for (const double scale : {0.01, 1.0, 40.0}) {
+      Eigen::MatrixXd z(m, m);
+      for (Eigen::Index i = 0; i < z.size(); ++i) z.data()[i] = scale * normal(random);
+      // Shift the spectrum into the left half plane, as a stiff Jacobian's.
+      z.diagonal().array() -= scale;
+      functions.Compute(z, 5, phi, half);
+      const auto reference = ReferencePhi(z, 5);
+      const auto reference_half = ReferencePhi(0.5 * z, 5);
+      for (std::size_t k = 0; k <= 5; ++k) {
+        EXPECT_LT(RelativeDifference(phi[k], reference[k]), 1e-11)
+            << "m " << m << " scale " << scale << " k " << k;
+        EXPECT_LT(RelativeDifference(half[k], reference_half[k]), 1e-11)
+            << "m " << m << " scale " << scale << " k " << k << " (half)";
+      }
+    }
+  }
+}
+
+// A = N + U V^T with N^2 = 0: a chain of three masses on stiff springs, positions x and
+// velocities v (N: x' = v), the springs and dampers as rank-one terms.
+StructuredJacobian ThreeMasses(double stiffness, double damping) {
+  StructuredJacobian a;
+  a.Reserve(6, 4);
+  for (std::size_t i = 0; i < 3; ++i) a.nilpotent.push_back({i, i + 3, 1.0});
+  const double masses[3] = {1.0, 0.5, 2.0};
+  // Springs: ground-1, 1-2, 2-3; direction d in position space.
+  const int pairs[3][2] = {{-1, 0}, {0, 1}, {1, 2}};
+  for (const auto& pair : pairs) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(3);
+    if (pair[0] >= 0) d[pair[0]] = -1.0;
+    d[pair[1]] = 1.0;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(6);
+    for (int i = 0; i < 3; ++i) u[3 + i] = d[i] / masses[i];  // M^-1 d
+    v.head(3) = -stiffness * d;
+    v.tail(3) = -damping * d;
+    a.AddColumns(u, v);
+  }
+  return a;
+}
+
+TEST(StructuredPhi, ProductsMatchTheDenseFunctions) {
+  StructuredPhi products;
+  products.Reserve(6, 4);
+  std::mt19937 random(3);
+  std::normal_distribution<double> normal;
+  for (const double stiffness : {10.0, 1e6}) {
+    for (const double damping : {0.0, 50.0}) {
+      StructuredJacobian a = ThreeMasses(stiffness, damping);
+      ASSERT_TRUE(a.NilpotentByPattern());
+      const double h = 0.01;
+      products.Prepare(a, h);
+      const Eigen::MatrixXd dense = a.Dense();
+      Eigen::VectorXd b(6);
+      for (auto& value : b) value = normal(random);
+      for (const double fraction : {1.0, 0.5, 0.3}) {
+        const auto reference = ReferencePhi(fraction * h * dense, 3);
+        const auto which = fraction == 1.0   ? StructuredPhi::Fraction::kWhole
+                           : fraction == 0.5 ? StructuredPhi::Fraction::kHalf
+                                             : StructuredPhi::Fraction::kOther;
+        if (which == StructuredPhi::Fraction::kOther) products.PrepareOther(fraction * h);
+        for (int k = 0; k <= 3; ++k) {
+          Eigen::VectorXd out = Eigen::VectorXd::Constant(6, 1.0);
+          products.Accumulate(k, which, std::span<const double>(b.data(), 6), 2.0,
+                              std::span<double>(out.data(), 6));
+          const Eigen::VectorXd expected =
+              Eigen::VectorXd::Constant(6, 1.0) + 2.0 * reference[static_cast<std::size_t>(k)] * b;
+          EXPECT_LT((out - expected).norm(), 1e-10 * expected.norm())
+              << "k " << k << " stiffness " << stiffness << " damping " << damping << " fraction "
+              << fraction;
+        }
+      }
+    }
+  }
+}
+
+TEST(StructuredPhi, DenseJacobianWithoutNilpotentPart) {
+  // N = 0, U = J, V = I: the products are those of J itself.
+  StructuredJacobian a;
+  a.Reserve(3, 3);
+  Eigen::Matrix3d j;
+  j << -100, 2, 0, 1, -3, 40, 0, -40, -1;
+  for (int c = 0; c < 3; ++c) a.AddColumns(j.col(c), Eigen::Vector3d::Unit(c));
+  StructuredPhi products;
+  products.Reserve(3, 3);
+  products.Prepare(a, 0.2);
+  const auto reference = ReferencePhi(0.2 * j, 3);
+  const Eigen::Vector3d b(1, -2, 0.5);
+  for (int k = 0; k <= 3; ++k) {
+    Eigen::Vector3d out = Eigen::Vector3d::Zero();
+    products.Accumulate(k, StructuredPhi::Fraction::kWhole, std::span<const double>(b.data(), 3),
+                        1.0, std::span<double>(out.data(), 3));
+    EXPECT_LT((out - reference[static_cast<std::size_t>(k)] * b).norm(), 1e-12 * out.norm()) << k;
+  }
+}
+
+TEST(StructuredShiftedSolver, SolvesTheShiftedSystem) {
+  StructuredJacobian a = ThreeMasses(1e6, 50.0);
+  StructuredShiftedSolver solver;
+  solver.Reserve(6, 4);
+  for (const double alpha : {1e4, 3.0}) {
+    ASSERT_TRUE(solver.Factor(a, alpha));
+    const Eigen::MatrixXd shifted = alpha * Eigen::MatrixXd::Identity(6, 6) - a.Dense();
+    Eigen::VectorXd r(6);
+    r << 1, -2, 3, 0.5, 7, -1;
+    Eigen::VectorXd x(6);
+    solver.Solve(std::span<const double>(r.data(), 6), std::span<double>(x.data(), 6));
+    const Eigen::VectorXd reference = shifted.fullPivLu().solve(r);
+    EXPECT_LT((x - reference).norm(), 1e-12 * reference.norm()) << alpha;
+  }
+}
+
+}  // namespace
+}  // namespace sled::runtime
