@@ -10,6 +10,7 @@
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
+#include "runtime/mass_matrix.h"
 
 namespace sled::runtime {
 namespace {
@@ -116,6 +117,15 @@ MultibodyJacobian::MultibodyJacobian(const Model& model)
   joint_dv_.setZero(static_cast<Eigen::Index>(nv_), 6);
   pose_covector_.setZero(static_cast<Eigen::Index>(nv_));
   nu_.assign(n_, 0.0);
+  use_mass_matrix_ = model.nconstraint() == 0 && std::none_of(model.segment_mirror_twin.begin(),
+                                                              model.segment_mirror_twin.end(),
+                                                              [](auto twin) { return twin != 0; });
+  if (use_mass_matrix_) {
+    mass_.setZero(static_cast<Eigen::Index>(nv_), static_cast<Eigen::Index>(nv_));
+    cholesky_ = Eigen::LLT<Eigen::MatrixXd>(static_cast<Eigen::Index>(nv_));
+    composite_.assign(segments, Mat6::Zero());
+    load_.setZero(static_cast<Eigen::Index>(nv_));
+  }
 }
 
 Eigen::Index MultibodyJacobian::NewCandidate() {
@@ -213,7 +223,11 @@ void MultibodyJacobian::JointTerms(Data& data) {
     const int dof = model_.v_count[s];
     const auto va = static_cast<Eigen::Index>(model_.v_address[s]);
     const auto qa = static_cast<Eigen::Index>(model_.q_address[s]);
-    for (int r = 0; r < dof; ++r) {
+    int axes[6];
+    const int active = ActiveAxes(model_, s, data.locked[s], axes);
+    for (int a = 0; a < active; ++a) {
+      // A locked axis does not move, whatever its characteristic says.
+      const int r = axes[a];
       const Eigen::Index i = va + r;
       if (joint_dq_.row(i).head(dof).isZero(0.0) && joint_dv_.row(i).head(dof).isZero(0.0))
         continue;
@@ -417,6 +431,13 @@ void MultibodyJacobian::AirbagTerms(Data& data) {
 }
 
 bool MultibodyJacobian::PrepareResponses(Data& data, Failure* failure) {
+  if (use_mass_matrix_) {
+    CompositeRigidBodyMassMatrix(model_, data, composite_, mass_);
+    cholesky_.compute(mass_);
+    if (cholesky_.info() == Eigen::Success) return true;
+    if (failure != nullptr) failure->cause = "the mass matrix is not positive definite";
+    return false;
+  }
   // The response to a load at rest: no velocity terms; the base's acceleration and the
   // constraints' right-hand side give a response to no load, which is subtracted.
   std::fill(data.v.begin(), data.v.end(), 0.0);
@@ -432,6 +453,18 @@ bool MultibodyJacobian::PrepareResponses(Data& data, Failure* failure) {
 bool MultibodyJacobian::Response(Data& data, std::ptrdiff_t coordinate, std::size_t segment,
                                  const Vec6& wrench, Eigen::Ref<Eigen::VectorXd> u,
                                  Failure* failure) {
+  const auto nq = static_cast<Eigen::Index>(nq_);
+  if (use_mass_matrix_) {
+    load_.setZero();
+    if (coordinate >= 0) {
+      load_[coordinate] = 1.0;
+    } else {
+      AddTransposeJacobian(data, segment, wrench, load_);
+    }
+    cholesky_.solveInPlace(load_);
+    u.segment(nq, static_cast<Eigen::Index>(nv_)) = load_;
+    return true;
+  }
   if (coordinate >= 0) {
     data.generalized_force[static_cast<std::size_t>(coordinate)] = 1.0;
   } else {
@@ -445,7 +478,6 @@ bool MultibodyJacobian::Response(Data& data, std::ptrdiff_t coordinate, std::siz
     data.external[segment].setZero();
   }
   if (!ok) return false;
-  const auto nq = static_cast<Eigen::Index>(nq_);
   for (std::size_t i = 0; i < nv_; ++i) {
     u[nq + static_cast<Eigen::Index>(i)] = data.vdot[i] - response_base_[i];
   }

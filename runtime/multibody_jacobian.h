@@ -26,6 +26,7 @@
 // stiff, and the methods that use A stay correct with any A.
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <cstddef>
 #include <span>
@@ -113,6 +114,14 @@ class MultibodyJacobian {
   std::vector<std::vector<Eigen::Matrix<double, Eigen::Dynamic, 12>>> gas_by_segment_;  // [bag][k]
   Eigen::MatrixXd gas_by_gas_;                                                          // nw x nw
   std::vector<double> scratch_q_, scratch_v_, qdot_, response_base_, nu_;
+  // Without loop constraints or mirror twins the responses come from the mass matrix (the
+  // composite-rigid-body algorithm and a Cholesky factor, then one solve per term), else from an
+  // articulated-body pass per term.
+  bool use_mass_matrix_ = false;
+  Eigen::MatrixXd mass_;
+  Eigen::LLT<Eigen::MatrixXd> cholesky_;
+  std::vector<Mat6> composite_;
+  Eigen::VectorXd load_;
   Eigen::MatrixXd joint_dq_, joint_dv_;  // nv x 6: torque derivatives by each joint's k-th axis
   Eigen::VectorXd pose_covector_;        // nv
 };

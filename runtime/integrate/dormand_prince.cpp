@@ -1,5 +1,8 @@
 #include "runtime/integrate/dormand_prince.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
 
@@ -33,6 +36,23 @@ void DormandPrince::ResizeWorkspace(std::size_t size) {
   for (auto* v : {&k2_, &k3_, &k4_, &k5_, &k6_, &stage_, &error_, &r1_, &r2_, &r3_, &r4_, &r5_}) {
     v->assign(size, 0.0);
   }
+  controlled_ = std::min(system().ControlledSize(), size);
+  RestartHistory();
+}
+
+void DormandPrince::RestartHistory() {
+  stiffness_ratio_ = 0.0;
+  stiff_steps_ = 0;
+  nonstiff_steps_ = 0;
+}
+
+void DormandPrince::StepAccepted() {
+  if (stiffness_ratio_ > kStiffRatio) {
+    nonstiff_steps_ = 0;
+    ++stiff_steps_;
+  } else if (++nonstiff_steps_ >= kNonStiffSteps) {
+    stiff_steps_ = 0;
+  }
 }
 
 bool DormandPrince::TryStep(double h, double* error) {
@@ -61,6 +81,14 @@ bool DormandPrince::TryStep(double h, double* error) {
     y1_[i] = y_[i] + h * (kB1 * k1[i] + kB3 * k3_[i] + kB4 * k4_[i] + kB5 * k5_[i] + kB6 * k6_[i]);
   }
   if (!Evaluate(t_ + h, y1_, k7)) return false;
+  // Stage 6 (still in stage_) and y1 share the time t + h: their derivatives' difference over
+  // their distance estimates |lambda| along it.
+  double numerator = 0.0, denominator = 0.0;
+  for (std::size_t i = 0; i < controlled_; ++i) {
+    numerator += (k7[i] - k6_[i]) * (k7[i] - k6_[i]);
+    denominator += (y1_[i] - stage_[i]) * (y1_[i] - stage_[i]);
+  }
+  stiffness_ratio_ = denominator > 0.0 ? h * std::sqrt(numerator / denominator) : 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     error_[i] =
         h * (kE1 * k1[i] + kE3 * k3_[i] + kE4 * k4_[i] + kE5 * k5_[i] + kE6 * k6_[i] + kE7 * k7[i]);
