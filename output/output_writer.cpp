@@ -203,6 +203,16 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
   out << fmt::format("    \"factorizations\": {},\n    \"events\": {},\n", s.factorizations,
                      s.events);
   out << fmt::format("    \"decaying_steps\": {},\n", s.decaying_steps);
+  if (summary.integrator == "auto") {
+    // What each of auto's methods had: steps, simulated seconds, wall seconds of the
+    // integrator's own work; and how often it switched.
+    auto share = [](const IntegratorStats::Share& x) {
+      return fmt::format("{{\"steps\": {}, \"simulated_seconds\": {}, \"wall_seconds\": {}}}",
+                         x.steps, x.simulated, x.wall_seconds);
+    };
+    out << fmt::format("    \"auto\": {{\"switches\": {}, \"dopri5\": {}, \"exponential\": {}}},\n",
+                       s.switches, share(s.explicit_share), share(s.exponential_share));
+  }
   out << fmt::format("    \"max_local_error\": {},\n",
                      number("integrator.max_local_error", s.max_local_error));
   // The global error estimate when the run asked for one (output/post/global_error.h).

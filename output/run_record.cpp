@@ -12,7 +12,7 @@ namespace {
 static_assert(std::is_trivially_copyable_v<IntegratorStats>);
 static_assert(std::is_trivially_copyable_v<EnergySummary>);
 static_assert(sizeof(std::string) != 32 ||
-                  (sizeof(RunSummary) == 408 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
+                  (sizeof(RunSummary) == 464 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
               "RunSummary, Failure or TimeSeries changed: list the new field in Serialize");
 
 void Strings(Archive& archive, std::vector<std::string>& texts) {

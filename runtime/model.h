@@ -216,7 +216,7 @@ struct Model {
   double start_time = 0.0;
   double end_time = 0.0;
   double output_every = 0.0;
-  std::string integrator = "exponential";
+  std::string integrator = "auto";
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-9;
   double min_step = 1e-9;

@@ -515,6 +515,7 @@ bool MultibodyJacobian::Form(Data& data, double t, std::span<const double> y, do
         Eigen::Map<const Eigen::VectorXd>(nu_.data(), static_cast<Eigen::Index>(n_))));
     rate_[k] = std::max(damping, std::sqrt(stiffness));
     order_[k] = c;
+    jacobian.stiff_rate = std::max(jacobian.stiff_rate, rate_[k]);
   }
   std::sort(order_.begin(), order_.begin() + candidates_, [&](Eigen::Index a, Eigen::Index b) {
     return rate_[static_cast<std::size_t>(a)] > rate_[static_cast<std::size_t>(b)];

@@ -68,7 +68,8 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
                            kTimeResolution * run.end));
       }
     } else if (keyword == "integrator") {
-      static const std::vector<std::string> kMethods = {"exponential", "dopri5", "rosenbrock"};
+      static const std::vector<std::string> kMethods = {"auto", "exponential", "dopri5",
+                                                        "rosenbrock", "cvs"};
       if (statement->target) {
         const std::string method = statement->target->PathText();
         const auto found = std::find(kMethods.begin(), kMethods.end(), method);

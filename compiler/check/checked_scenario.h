@@ -321,7 +321,9 @@ struct Criterion {
   SourceRange range;
 };
 
-enum class IntegratorMethod { kExponential, kDormandPrince, kRosenbrock };
+// In the order of the language's names (check_settings.cpp): auto, exponential, dopri5,
+// rosenbrock, cvs.
+enum class IntegratorMethod { kAuto, kExponential, kDormandPrince, kRosenbrock, kCvs };
 enum class Symmetry { kNone, kPlanar, kMirror };
 
 // The most output rows a run may have: every row stays in memory (time series, animation frames)
@@ -332,7 +334,7 @@ struct RunSettings {
   double start = 0.0;
   double end = 0.0;
   double output_every = 0.0;
-  IntegratorMethod method = IntegratorMethod::kExponential;
+  IntegratorMethod method = IntegratorMethod::kAuto;
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-9;
   double min_step = 1e-9;

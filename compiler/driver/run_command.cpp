@@ -301,6 +301,15 @@ int RunCommand(const RunCommandOptions& options) {
         result.series.rows(), directory, summary.wall_seconds, summary.stats.steps,
         summary.stats.rejected, summary.stats.evaluations, summary.output_evaluations);
   }
+  if (summary.integrator == "auto") {
+    const runtime::IntegratorStats& s = summary.stats;
+    std::cerr << fmt::format(
+        "sled: auto: dopri5 {:.4g} s of the run in {} steps ({:.3f} s), the exponential method "
+        "{:.4g} s in {} steps ({:.3f} s); {} switch{}\n",
+        s.explicit_share.simulated, s.explicit_share.steps, s.explicit_share.wall_seconds,
+        s.exponential_share.simulated, s.exponential_share.steps, s.exponential_share.wall_seconds,
+        s.switches, s.switches == 1 ? "" : "es");
+  }
   if (!summary.checkpoints.empty()) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",

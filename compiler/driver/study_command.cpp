@@ -253,7 +253,7 @@ int StudyCommand(const StudyOptions& options) {
   const runtime::Model& scene = compiled->model();
   std::vector<double> ladder = options.tolerances;
   if (ladder.empty()) ladder = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
-  const std::vector<std::string> methods = {"exponential", "dopri5", "rosenbrock"};
+  const std::vector<std::string> methods = {"auto", "exponential", "dopri5", "rosenbrock", "cvs"};
 
   // The reference, and a second method at the same tolerance to say how good it is.
   const double tightest = ladder.back() / 100;

@@ -182,6 +182,12 @@ void LowerRunSettings(Lowering& lowering) {
   model.end_time = run.end;
   model.output_every = run.output_every;
   switch (run.method) {
+    case IntegratorMethod::kAuto:
+      model.integrator = "auto";
+      break;
+    case IntegratorMethod::kCvs:
+      model.integrator = "cvs";
+      break;
     case IntegratorMethod::kExponential:
       model.integrator = "exponential";
       break;

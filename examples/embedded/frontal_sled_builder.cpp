@@ -48,7 +48,7 @@ void BuildScene(build::Scene& scene, double speed_km_h) {
   scene.Param("speed", Q(speed_km_h, "km/h"));
   scene.Set("gravity", V(0, 0, -9.81, "m/s^2"));
   scene.Block("time").Set("end", Q(200, "ms")).Set("output_every", Q(0.1, "ms"));
-  scene.Declare("integrator", "exponential").Set("tolerance", 1e-5).Set("max_step", Q(1, "ms"));
+  scene.Declare("integrator", "auto").Set("tolerance", 1e-5).Set("max_step", Q(1, "ms"));
 
   auto& occupant = scene.Declare("body", "occupant");
   AddSegment(occupant, "pelvis", 11.7, V(0.10, 0.09, 0.11, "kg*m^2"), V(110, 170, 120, "mm"));

@@ -321,7 +321,7 @@ class Mapper {
     Add(time, Attribute("end", ast::MakeBinary('*', Number(deck_.steps), Number(deck_.dt, T))));
     Add(time, Attribute("output_every", Number(deck_.dt, T)));
     body.statements.push_back(std::move(time));
-    ast::Statement integrator = Declaration("integrator", Path("exponential"));
+    ast::Statement integrator = Declaration("integrator", Path("auto"));
     if (deck_.first_step > 0)
       Add(integrator, Attribute("initial_step", Number(deck_.first_step, T)));
     if (deck_.max_step > 0) Add(integrator, Attribute("max_step", Number(deck_.max_step, T)));

@@ -65,7 +65,7 @@ std::string IntegratorSection(const IntegratorSummary& s) {
   if (s.error_estimate) {
     rows.push_back({"global error estimate (of channel range)", Significant(*s.error_estimate, 3)});
   }
-  if (s.method == "exponential") {
+  if (s.method == "cvs") {
     // How much of the run the exponential part carried; the rest were third-order RK steps.
     rows.push_back({"steps with a decay rate", fmt::format("{} of {}", s.decaying_steps, s.steps)});
   }

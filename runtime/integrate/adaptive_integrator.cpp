@@ -66,6 +66,7 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(dense_y0_);
   archive.Field(dense_f0_);
   archive.Field(dense_f1_);
+  archive.Field(restart_step_);
   archive.Field(stats_);
   controller_.Serialize(archive);
   events_.Serialize(archive);
@@ -104,6 +105,7 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
   step_ = 0.0;
   h_ = 0.0;
   y_.assign(y0.begin(), y0.end());
+  restart_step_ = 0.0;
   f0_.assign(n, 0.0);
   y1_.assign(n, 0.0);
   f1_.assign(n, 0.0);
@@ -155,6 +157,23 @@ void AdaptiveIntegrator::FinishPending() {
 }
 
 AdvanceResult AdaptiveIntegrator::Step(double t_stop) { return StepOnce(t_stop, 0.0); }
+
+void AdaptiveIntegrator::RestartAt(double t, std::span<const double> y, double first_step) {
+  if (system_ == nullptr || y.size() != y_.size()) {
+    throw std::logic_error("sled::runtime integrator " + std::string(name()) +
+                           ": RestartAt needs a Reset for a system of this size first");
+  }
+  // Whatever this method left pending was done when it handed the solution over (Settle).
+  commit_pending_ = event_pending_ = false;
+  t_ = t;
+  step_start_ = t;
+  std::copy(y.begin(), y.end(), y_.begin());
+  restart_step_ = first_step;
+  restart_pending_ = true;
+  keep_step_ = false;
+}
+
+void AdaptiveIntegrator::Settle() { FinishPending(); }
 
 AdvanceResult AdaptiveIntegrator::AdvanceFixed(double t_end, long steps) {
   if (steps <= 0) {
@@ -276,7 +295,9 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   if (events_.active()) {
     events_.Start(t_, y_, f0_, kLookAheadTolerances * EventTolerance(), y_event_);
   }
-  if (!fixed && !(keep_step_ && h_ > 0.0)) {  // (after an event that changed no state)
+  if (!fixed && restart_step_ > 0.0) {  // (RestartAt's first step)
+    h_ = ClampStep(restart_step_);
+  } else if (!fixed && !(keep_step_ && h_ > 0.0)) {  // (after an event that changed no state)
     h_ = ClampStep(options_.initial_step > 0.0 ? options_.initial_step : InitialStep());
   }
   restart_pending_ = false;

@@ -27,6 +27,13 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   void Reset(OdeSystem& system, double t0, std::span<const double> y0,
              const IntegratorOptions& options) final;
   AdvanceResult Step(double t_stop) final;
+  // Continues from (t, y), as after an external change of the state (the method's history and
+  // the events start afresh there; the statistics go on), trying `first_step` first (0: the
+  // starting-step heuristic). Needs a Reset for the same system before; never allocates.
+  void RestartAt(double t, std::span<const double> y, double first_step);
+  // Does now what the last step left for the next one (its event, the system's CommitStep): for
+  // a driver that hands the solution to another method (`auto`).
+  void Settle();
 
   // Takes `steps` equal steps to t_end with no error control (for convergence studies and
   // tests): the local error estimates still go into the statistics, but never reject a step.
@@ -151,6 +158,7 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::vector<double> dense_y1_;
   std::vector<double> end_state_;
   std::vector<double> dense_y0_, dense_f0_, dense_f1_;
+  double restart_step_ = 0.0;  // RestartAt's first step (0: none)
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state
   LargestComponent largest_;       // of the error estimates of the attempt under way

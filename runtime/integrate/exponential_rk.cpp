@@ -21,28 +21,18 @@ void ExponentialRungeKutta::ResizeWorkspace(std::size_t size) {
 }
 
 void ExponentialRungeKutta::RestartHistory() {
-  jacobian_valid_ = false;
-  jacobian_at_current_point_ = false;
-  jacobian_age_ = 0;
-  jacobian_step_ = 0.0;
+  source_.Forget();
   prepared_step_ = 0.0;
 }
 
 JacobianSource::Status ExponentialRungeKutta::EnsureJacobian(double h) {
-  const bool step_changed_much =
-      h > kJacobianStepRatio * jacobian_step_ || h * kJacobianStepRatio < jacobian_step_;
   // The system chose the stiff terms for the step it was told, so a much changed step needs a
   // fresh A even at the same point.
-  if (!jacobian_valid_ || jacobian_age_ >= kMaxJacobianAge || step_changed_much) {
-    jacobian_valid_ = false;
+  if (source_.MustForm(h, kMaxJacobianAge, kJacobianStepRatio, false)) {
     prepared_step_ = 0.0;
     const JacobianSource::Status status =
         source_.Form(system(), t_, y_, f0_, h, options(), mutable_stats());
     if (status != JacobianSource::Status::kOk) return status;
-    jacobian_valid_ = true;
-    jacobian_at_current_point_ = true;
-    jacobian_age_ = 0;
-    jacobian_step_ = h;
   }
   if (prepared_step_ != h) {
     phi_.Prepare(source_.jacobian(), h);
@@ -106,7 +96,15 @@ bool ExponentialRungeKutta::TryStep(double h, double* error) {
   std::fill(error_.begin(), error_.end(), 0.0);
   phi_.Accumulate(2, Fraction::kWhole, product_, h, error_);
   phi_.Accumulate(3, Fraction::kWhole, c3_, h, error_);
-  *error = ErrorNorm(error_);
+  const double embedded = ErrorNorm(error_);
+
+  // The end derivative (the next step's f0), and the residual of the step's model there.
+  if (!Evaluate(t_ + h, y1_, f1_)) return false;
+  for (std::size_t i = 0; i < n; ++i) increment_[i] = y1_[i] - y_[i];
+  Remainder(f1_, increment_, error_);
+  for (std::size_t i = 0; i < n; ++i) error_[i] = h * (error_[i] - d4_[i]);
+  const double residual = ErrorNorm(error_);
+  *error = std::max(embedded, residual);
   return true;
 }
 
@@ -129,28 +127,18 @@ void ExponentialRungeKutta::Interpolate(double t, std::span<double> y) const {
   phi_.Accumulate(3, Fraction::kOther, c3_, h * theta * theta * theta, y);
 }
 
-void ExponentialRungeKutta::StepAccepted() {
-  ++jacobian_age_;
-  jacobian_at_current_point_ = false;
-}
+void ExponentialRungeKutta::StepAccepted() { source_.StepAccepted(); }
 
-void ExponentialRungeKutta::StepRejected() {
-  // A stale A may be why the step failed: retry with a fresh one.
-  if (!jacobian_at_current_point_) jacobian_valid_ = false;
-}
+void ExponentialRungeKutta::StepRejected() { source_.StepRejected(); }
 
 void ExponentialRungeKutta::SerializeHistory(Archive& archive) {
-  source_.jacobian().Serialize(archive);
-  archive.Field(jacobian_valid_);
-  archive.Field(jacobian_at_current_point_);
-  archive.Field(jacobian_age_);
-  archive.Field(jacobian_step_);
+  source_.Serialize(archive);
   // The phi-functions follow from A and the step: the same ones, made again when next needed.
   if (archive.reading()) prepared_step_ = 0.0;
 }
 
 double ExponentialRungeKutta::AdjustStep(double proposed, double current) const {
-  if (jacobian_valid_ && proposed >= current && proposed <= kKeepStepRatio * current) {
+  if (source_.valid() && proposed >= current && proposed <= kKeepStepRatio * current) {
     return current;
   }
   return proposed;

@@ -76,6 +76,9 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
 
   // The stiff rank of the Jacobian in use (the columns of U), for statistics and auto.
   Eigen::Index stiff_rank() const { return source_.jacobian().rank(); }
+  // The largest rate [1/s] of the stiff part of the Jacobian in use (StructuredJacobian::
+  // stiff_rate), 0 before one is formed: an explicit method's step is bound by about 3 / rate.
+  double stiff_rate() const { return source_.valid() ? source_.jacobian().stiff_rate : 0.0; }
 
  protected:
   int ErrorPower() const override { return 3; }
@@ -84,6 +87,7 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
   bool TryStep(double h, double* error) override;
   void StepAccepted() override;
   void StepRejected() override;
+  bool HasEndDerivative() const override { return true; }
   double AdjustStep(double proposed, double current) const override;
   void SerializeHistory(Archive& archive) override;
   void Interpolate(double t, std::span<double> y) const override;
@@ -96,10 +100,6 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
 
   JacobianSource source_;
   StructuredPhi phi_;
-  bool jacobian_valid_ = false;
-  bool jacobian_at_current_point_ = false;
-  long jacobian_age_ = 0;
-  double jacobian_step_ = 0.0;
   double prepared_step_ = 0.0;  // the step of the current phi-functions (0: none)
 
   std::vector<double> half_;   // h/2 phi_1(hA/2) f

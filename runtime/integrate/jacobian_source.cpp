@@ -11,6 +11,7 @@ void JacobianSource::Reserve(OdeSystem& system) {
   const std::size_t rank = system.StructuredRank();
   system_structured_ = rank > 0;
   jacobian_.Reserve(n, system_structured_ ? rank : n);
+  Forget();
   if (!system_structured_) {
     row_major_.assign(n * n, 0.0);
     perturbed_.assign(n, 0.0);
@@ -24,6 +25,7 @@ JacobianSource::Status JacobianSource::Form(OdeSystem& system, double t, std::sp
                                             const IntegratorOptions& options,
                                             IntegratorStats& stats) {
   ++stats.jacobians;
+  Forget();  // until it is complete
   jacobian_.Clear();
   structured_ = false;
   if (system_structured_) {
@@ -33,10 +35,30 @@ JacobianSource::Status JacobianSource::Form(OdeSystem& system, double t, std::sp
              status != Status::kOk) {
     return status;
   }
+  if (!structured_) {
+    // The dense Jacobian's 1-norm: a bound on its spectral radius.
+    double norm = 0.0;
+    const auto u = jacobian_.u();
+    for (Eigen::Index j = 0; j < u.cols(); ++j) norm = std::max(norm, u.col(j).cwiseAbs().sum());
+    jacobian_.stiff_rate = norm;
+  }
   for (const auto& entry : jacobian_.nilpotent) {
     if (!std::isfinite(entry.value)) return Status::kNotFinite;
   }
-  return jacobian_.u().allFinite() && jacobian_.v().allFinite() ? Status::kOk : Status::kNotFinite;
+  if (!jacobian_.u().allFinite() || !jacobian_.v().allFinite()) return Status::kNotFinite;
+  valid_ = at_current_point_ = true;
+  age_ = 0;
+  step_ = step;
+  return Status::kOk;
+}
+
+bool JacobianSource::MustForm(double h, long max_age, double step_ratio, bool same_point_serves) {
+  if (!valid_) return true;
+  if (same_point_serves && at_current_point_) {
+    step_ = h;
+    return false;
+  }
+  return age_ >= max_age || h > step_ratio * step_ || h * step_ratio < step_;
 }
 
 JacobianSource::Status JacobianSource::FormDense(OdeSystem& system, double t,

@@ -27,6 +27,27 @@ class JacobianSource {
   Status Form(OdeSystem& system, double t, std::span<const double> y, std::span<const double> f0,
               double step, const IntegratorOptions& options, IntegratorStats& stats);
 
+  // Reuse. Whether a Jacobian must be formed before a step of size h: none in hand, it has served
+  // `max_age` accepted steps, or h differs from the step it was formed for by more than
+  // `step_ratio` either way; with `same_point_serves`, one formed at the point the step starts
+  // from serves any h (and is then taken as formed for h).
+  bool MustForm(double h, long max_age, double step_ratio, bool same_point_serves);
+  bool valid() const { return valid_; }
+  void Forget() { valid_ = at_current_point_ = false, age_ = 0, step_ = 0.0; }
+  // The state moved on: the Jacobian ages.
+  void StepAccepted() { ++age_, at_current_point_ = false; }
+  // A stale Jacobian may be why the step failed: forget it unless it was formed at this point.
+  void StepRejected() { valid_ = valid_ && at_current_point_; }
+  // Writes or reads the Jacobian and its reuse state (a checkpoint).
+  template <class Archive>
+  void Serialize(Archive& archive) {
+    jacobian_.Serialize(archive);
+    archive.Field(valid_);
+    archive.Field(at_current_point_);
+    archive.Field(age_);
+    archive.Field(step_);
+  }
+
   StructuredJacobian& jacobian() { return jacobian_; }
   const StructuredJacobian& jacobian() const { return jacobian_; }
   // Whether the last Form had the system's structured Jacobian (else the dense one).
@@ -38,6 +59,10 @@ class JacobianSource {
                    IntegratorStats& stats);
 
   StructuredJacobian jacobian_;
+  bool valid_ = false;
+  bool at_current_point_ = false;  // formed at the point the step in progress starts from
+  long age_ = 0;                   // accepted steps since it was formed
+  double step_ = 0.0;              // the step it was formed (or last taken) for
   bool system_structured_ = false;  // the system said it has one (StructuredRank > 0)
   bool structured_ = false;
   std::vector<double> row_major_;  // OdeSystem::Jacobian's output

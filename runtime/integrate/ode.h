@@ -115,6 +115,16 @@ struct IntegratorStats {
   // The largest weighted local error estimate of any accepted step (1 = exactly the tolerance).
   // (A global error estimate needs a second run: output/post/global_error.h.)
   double max_local_error = 0.0;
+  // `auto` only: what each of its two methods integrated (steps, simulated seconds and wall
+  // seconds of the integrator's own work), and how often it switched between them.
+  struct Share {
+    long steps = 0;
+    double simulated = 0.0;
+    double wall_seconds = 0.0;
+  };
+  Share explicit_share;     // dopri5
+  Share exponential_share;  // the exponential method
+  long switches = 0;
 };
 
 enum class IntegratorStatus {

@@ -91,17 +91,13 @@ void Rosenbrock::ResizeWorkspace(std::size_t size) {
 }
 
 void Rosenbrock::RestartHistory() {
-  jacobian_valid_ = false;
-  jacobian_at_current_point_ = false;
-  jacobian_age_ = 0;
-  jacobian_step_ = 0.0;
+  source_.Forget();
   factored_step_ = 0.0;
 }
 
 JacobianSource::Status Rosenbrock::FormJacobian(double h) {
   const std::size_t n = y_.size();
   const auto ni = static_cast<Eigen::Index>(n);
-  jacobian_valid_ = false;  // until it is complete
   const JacobianSource::Status status =
       source_.Form(system(), t_, y_, f0_, h, options(), mutable_stats());
   if (status != JacobianSource::Status::kOk) return status;
@@ -117,11 +113,10 @@ JacobianSource::Status Rosenbrock::FormJacobian(double h) {
   } else {
     time_derivative_.setZero();
   }
-  if (!time_derivative_.allFinite()) return JacobianSource::Status::kNotFinite;
-  jacobian_valid_ = true;
-  jacobian_at_current_point_ = true;
-  jacobian_age_ = 0;
-  jacobian_step_ = h;
+  if (!time_derivative_.allFinite()) {
+    source_.Forget();
+    return JacobianSource::Status::kNotFinite;
+  }
   factored_step_ = 0.0;  // the factorization belongs to the old Jacobian
   return JacobianSource::Status::kOk;
 }
@@ -134,12 +129,8 @@ bool Rosenbrock::Factor(double h) {
 }
 
 void Rosenbrock::SerializeHistory(Archive& archive) {
-  source_.jacobian().Serialize(archive);
+  source_.Serialize(archive);
   archive.Field(time_derivative_);
-  archive.Field(jacobian_valid_);
-  archive.Field(jacobian_at_current_point_);
-  archive.Field(jacobian_age_);
-  archive.Field(jacobian_step_);
   archive.Field(factored_step_);
   // The factorization follows from the Jacobian and the step: the same one, made again.
   if (archive.reading() && archive.ok() && factored_step_ != 0.0) Factor(factored_step_);
@@ -147,11 +138,8 @@ void Rosenbrock::SerializeHistory(Archive& archive) {
 
 bool Rosenbrock::TryStep(double h, double* error) {
   const std::size_t n = y_.size();
-  const bool step_changed_much =
-      h > kJacobianStepRatio * jacobian_step_ || h * kJacobianStepRatio < jacobian_step_;
-  if (jacobian_valid_ && jacobian_at_current_point_) {
-    jacobian_step_ = h;  // a retry from the same point: the Jacobian is exact, keep it
-  } else if (!jacobian_valid_ || jacobian_age_ >= kMaxJacobianAge || step_changed_much) {
+  // A retry from the same point keeps the Jacobian formed there.
+  if (source_.MustForm(h, kMaxJacobianAge, kJacobianStepRatio, true)) {
     switch (FormJacobian(h)) {
       case JacobianSource::Status::kOk:
         break;
@@ -202,18 +190,17 @@ bool Rosenbrock::TryStep(double h, double* error) {
 }
 
 void Rosenbrock::StepAccepted() {
-  ++jacobian_age_;
-  jacobian_at_current_point_ = false;  // the state has moved on
+  source_.StepAccepted();
 }
 
 void Rosenbrock::StepRejected() {
   // A stale W may be why the step failed: retry with a fresh one. A fresh one is exact here,
   // so only the step size changes.
-  if (!jacobian_at_current_point_) jacobian_valid_ = false;
+  source_.StepRejected();
 }
 
 double Rosenbrock::AdjustStep(double proposed, double current) const {
-  if (jacobian_valid_ && proposed >= current && proposed <= kKeepStepRatio * current) {
+  if (source_.valid() && proposed >= current && proposed <= kKeepStepRatio * current) {
     return current;
   }
   return proposed;

@@ -89,10 +89,6 @@ class Rosenbrock final : public AdaptiveIntegrator {
   Eigen::VectorXd u_[kStages];
   Eigen::VectorXd rhs_, stage_, f_stage_, error_;
 
-  bool jacobian_valid_ = false;
-  bool jacobian_at_current_point_ = false;  // formed at (t_, y_) of the attempt in progress
-  long jacobian_age_ = 0;                   // accepted steps since it was formed
-  double jacobian_step_ = 0.0;              // the step it was first used with
   double factored_step_ = 0.0;              // the step of the current factorization
 };
 

@@ -32,6 +32,7 @@ void StructuredJacobian::Reserve(std::size_t n, std::size_t max_rank) {
 void StructuredJacobian::Clear() {
   nilpotent.clear();
   rank_ = 0;
+  stiff_rate = 0.0;
 }
 
 bool StructuredJacobian::AddColumns(const Eigen::Ref<const Eigen::VectorXd>& u,

@@ -50,7 +50,7 @@ struct StructuredJacobian {
   // call that allocates (except `nilpotent` growing past its capacity).
   void Reserve(std::size_t n, std::size_t max_rank);
   // Forgets the entries and columns; keeps the capacity.
-  void Clear();
+  void Clear();  // (stiff_rate too)
   std::size_t size() const { return size_; }
   std::size_t max_rank() const { return static_cast<std::size_t>(u_store.cols()); }
   Eigen::Index rank() const { return rank_; }
@@ -90,12 +90,17 @@ struct StructuredJacobian {
     archive.Field(u_store);
     archive.Field(v_store);
     archive.Field(rank_);
+    archive.Field(stiff_rate);
     if (archive.reading() && (rank_ < 0 || rank_ > u_store.cols())) archive.Fail();
   }
 
   std::vector<Entry> nilpotent;  // N's nonzeros
-  Eigen::MatrixXd u_store;       // n x max_rank; the first rank() columns are U
-  Eigen::MatrixXd v_store;       // n x max_rank; the first rank() columns are V
+  // The largest rate [1/s] of the stiff part (of the terms kept and of those left out as too
+  // soft for the step): an explicit method's stable step is about 3 / stiff_rate. Set by whoever
+  // forms the Jacobian.
+  double stiff_rate = 0.0;
+  Eigen::MatrixXd u_store;  // n x max_rank; the first rank() columns are U
+  Eigen::MatrixXd v_store;  // n x max_rank; the first rank() columns are V
 
  private:
   std::size_t size_ = 0;

@@ -41,7 +41,7 @@ constexpr const char* kFrontalSledText = R"(scenario "frontal sled, belted occup
   param speed = 56 km/h
   gravity = (0, 0, -9.81) m/s^2
   time { end = 200 ms  output_every = 0.1 ms }
-  integrator exponential { tolerance = 1e-5  max_step = 1 ms }
+  integrator auto { tolerance = 1e-5  max_step = 1 ms }
 
   body occupant {
     segment pelvis {
@@ -101,7 +101,7 @@ void BuildFrontalSled(build::Scene& scene) {
   scene.Param("speed", Q(56, "km/h"));
   scene.Set("gravity", V(0, 0, -9.81, "m/s^2"));
   scene.Block("time").Set("end", Q(200, "ms")).Set("output_every", Q(0.1, "ms"));
-  scene.Declare("integrator", "exponential").Set("tolerance", 1e-5).Set("max_step", Q(1, "ms"));
+  scene.Declare("integrator", "auto").Set("tolerance", 1e-5).Set("max_step", Q(1, "ms"));
 
   auto& occupant = scene.Declare("body", "occupant");
   occupant.Declare("segment", "pelvis")

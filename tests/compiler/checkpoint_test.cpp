@@ -14,10 +14,10 @@ namespace {
 
 class CheckpointTest : public SledProcessTest {
  protected:
-  // The flagship cut to `end`, with `integrator` instead of the exponential method.
-  std::string Scene(const std::string& end, const std::string& integrator = "exponential") {
+  // The flagship cut to `end`, with `integrator` instead of its own (auto).
+  std::string Scene(const std::string& end, const std::string& integrator = "auto") {
     std::string scene = FlagshipScene(end);
-    const std::string from = "integrator exponential";
+    const std::string from = "integrator auto";
     const std::size_t at = scene.find(from);
     if (at != std::string::npos) scene.replace(at, from.size(), "integrator " + integrator);
     return scene;
@@ -31,7 +31,7 @@ class CheckpointTest : public SledProcessTest {
 };
 
 TEST_F(CheckpointTest, AResumedRunIsBitIdenticalToTheUninterruptedOne) {
-  for (const std::string method : {"exponential", "dopri5", "rosenbrock"}) {
+  for (const std::string method : {"auto", "exponential", "dopri5", "rosenbrock", "cvs"}) {
     const std::string scene = Write(method + ".sled", Scene("60 ms", method));
     const SledResult full =
         Sled({"run", scene, "-o", Out(method + "-full"), "--checkpoint-every", "20ms"});

@@ -51,8 +51,8 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
   EXPECT_THAT(result.out, HasSubstr("reference: dopri5 at 1e-08"));
 
   const std::vector<std::vector<std::string>> rows = StudyRows(ReadText(out / "study.csv"));
-  ASSERT_EQ(rows.size(), 6u);  // three methods, two tolerances, loosest first
-  for (std::size_t m = 0; m < 3; ++m) {
+  ASSERT_EQ(rows.size(), 10u);  // five methods, two tolerances, loosest first
+  for (std::size_t m = 0; m < 5; ++m) {
     const auto& loose = rows[2 * m];
     const auto& tight = rows[2 * m + 1];
     EXPECT_EQ(loose[0], tight[0]);
@@ -68,8 +68,8 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
     ASSERT_EQ(loose.size(), 17u);
     // The floor (what the two references differ by) is the same under every run.
     for (std::size_t c = 13; c < 17; ++c) EXPECT_EQ(loose[c], rows[0][c]);
-    // Steps that used a decay rate: only the exponential method has them, never more than steps.
-    if (loose[0] == "exponential") {
+    // Steps that used a decay rate: only the CVS method has them, never more than steps.
+    if (loose[0] == "cvs") {
       EXPECT_LE(std::stoi(loose[11]), std::stoi(loose[3]));
     } else {
       EXPECT_EQ(loose[11], "0") << loose[0];
@@ -79,20 +79,19 @@ TEST_F(Study, ErrorsFallAsTheToleranceTightens) {
   EXPECT_THAT(result.out, HasSubstr("floor (the references differ by)"));
   const std::string svg = ReadText(out / "study.svg");
   EXPECT_THAT(svg, HasSubstr("<svg"));
-  for (const char* method : {"exponential", "dopri5", "rosenbrock"}) {
+  for (const char* method : {"auto", "exponential", "dopri5", "rosenbrock", "cvs"}) {
     EXPECT_THAT(svg, HasSubstr(method));
   }
 }
 
 TEST_F(Study, NamesTheFastestRunAsAccurateAsTheScenesOwnSettings) {
-  // The mass-ratio case runs the exponential method at 1e-6; dopri5's fifth order reaches its
-  // error level much sooner, so the ladder holds faster runs at least as accurate.
+  // The mass-ratio case runs auto at 1e-6; the ladder holds runs at least as accurate, faster.
   const fs::path out = temp() / "study";
   const SledResult result = Sled({"study", "examples/numerics/mass_ratio.sled", "--tolerances",
                                   "1e-3,1e-5,1e-7", "-o", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const double floor = NumberAfter(result.out, "floor (the references differ by)");
-  const double own_error = NumberAfter(result.out, "(exponential at 1e-06): error ");
+  const double own_error = NumberAfter(result.out, "(auto at 1e-06): error ");
   const double own_seconds =
       NumberAfter(result.out, "of the channels' ranges, - in the criteria, in ");
   ASSERT_GT(floor, 0.0) << result.out;
@@ -109,7 +108,7 @@ TEST_F(Study, NamesTheFastestRunAsAccurateAsTheScenesOwnSettings) {
   named >> method >> word >> tolerance;
   tolerance.pop_back();  // the comma
   const std::vector<std::vector<std::string>> rows = StudyRows(ReadText(out / "study.csv"));
-  ASSERT_EQ(rows.size(), 9u);
+  ASSERT_EQ(rows.size(), 15u);  // five methods, three tolerances
   const std::vector<std::string>* chosen = nullptr;
   for (const auto& row : rows) {
     if (row[0] == method && std::stod(row[1]) == std::stod(tolerance)) chosen = &row;
@@ -121,7 +120,7 @@ TEST_F(Study, NamesTheFastestRunAsAccurateAsTheScenesOwnSettings) {
       EXPECT_LE(std::stod((*chosen)[2]), std::stod(row[2])) << row[0] << " at " << row[1];
     }
   }
-  EXPECT_EQ(method, "dopri5");  // the fifth-order method, on this smooth case
+  // Which method is fastest on this case is left to the measurement (docs/numerics.md).
 }
 
 TEST_F(Study, AFailedCrossCheckOfTheReferenceIsLoudAndFails) {

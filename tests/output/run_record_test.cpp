@@ -9,7 +9,7 @@ namespace {
 RunSummary EveryFieldSet() {
   RunSummary s;
   s.integrator = "exponential";
-  s.stats = {4399, 113, 13539, 2, 3, 4, 3323, 0.9957541920744579};
+  s.stats = {4399, 113, 13539, 2, 3, 4, 3323, 0.9957541920744579, {3000, 0.12, 0.05}, {1399, 0.08, 0.2}, 7};
   s.output_evaluations = 1999;
   s.error_estimate = 2.5e-6;
   s.wall_seconds = 0.252734325;
@@ -43,6 +43,10 @@ TEST(RunRecord, ReadsBackEveryField) {
   EXPECT_EQ(r.stats.max_local_error, s.stats.max_local_error);
   EXPECT_EQ(r.output_evaluations, s.output_evaluations);
   EXPECT_EQ(r.error_estimate, s.error_estimate);
+  EXPECT_EQ(r.stats.explicit_share.steps, s.stats.explicit_share.steps);
+  EXPECT_EQ(r.stats.explicit_share.simulated, s.stats.explicit_share.simulated);
+  EXPECT_EQ(r.stats.exponential_share.wall_seconds, s.stats.exponential_share.wall_seconds);
+  EXPECT_EQ(r.stats.switches, s.stats.switches);
   EXPECT_EQ(r.wall_seconds, s.wall_seconds);
   EXPECT_EQ(r.failed, s.failed);
   EXPECT_EQ(r.failure.time, s.failure.time);

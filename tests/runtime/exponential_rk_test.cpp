@@ -15,22 +15,13 @@
 #include "runtime/integrate/exponential_rk.h"
 #include "runtime/integrate/ode.h"
 #include "runtime/integrate/structured_jacobian.h"
+#include "tests/runtime/ode_test_helpers.h"
 
 namespace sled::runtime {
 namespace {
 
-IntegratorOptions Tolerance(double tol) {
-  IntegratorOptions options;
-  options.relative_tolerance = tol;
-  options.absolute_tolerance = tol;
-  return options;
-}
-
-double MaxAbsDifference(std::span<const double> a, std::span<const double> b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
+using testing::MaxAbsDifference;
+using testing::Tolerance;
 
 // y' = A y with a stiff, non-normal 3 x 3 A (oscillatory and decaying modes), analytic Jacobian.
 class StiffLinear : public OdeSystem {

@@ -23,6 +23,7 @@
 #include "runtime/integrate/make_integrator.h"
 #include "runtime/integrate/ode.h"
 #include "runtime/integrate/rosenbrock.h"
+#include "tests/runtime/ode_test_helpers.h"
 
 // Counting allocations: glibc lets a program interpose malloc and still reach the real one,
 // which sees every allocation (operator new and Eigen's aligned_malloc both end in malloc).
@@ -54,6 +55,9 @@ extern "C" void* malloc(std::size_t size) {
 
 namespace sled::runtime {
 namespace {
+
+using testing::MaxAbsDifference;
+using testing::Tolerance;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -218,19 +222,6 @@ class ProjectedCircle : public OdeSystem {
   long projections = 0;
 };
 
-double MaxAbsDifference(std::span<const double> a, std::span<const double> b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
-  return m;
-}
-
-IntegratorOptions Tolerance(double tol) {
-  IntegratorOptions options;
-  options.relative_tolerance = tol;
-  options.absolute_tolerance = tol;
-  return options;
-}
-
 std::unique_ptr<Integrator> Make(const std::string& method) {
   auto integrator = MakeIntegrator(method);
   EXPECT_NE(integrator, nullptr) << method;
@@ -241,7 +232,7 @@ AdaptiveIntegrator& Fixed(Integrator& integrator) {
   return dynamic_cast<AdaptiveIntegrator&>(integrator);
 }
 
-const char* const kMethods[] = {"dopri5", "rosenbrock", "exponential", "cvs"};
+const char* const kMethods[] = {"dopri5", "rosenbrock", "exponential", "cvs", "auto"};
 
 class EveryMethod : public ::testing::TestWithParam<const char*> {};
 INSTANTIATE_TEST_SUITE_P(Integrators, EveryMethod, ::testing::ValuesIn(kMethods));

@@ -52,12 +52,10 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST_P(StructuredJacobianTest, LeavesOnlyANonStiffRemainder) {
   const JacobianCase c = GetParam();
-  lang::SourceManager sources;
-  const auto file = sources.Load((std::string(SLED_SOURCE_ROOT) + "/examples/" + c.file));
-  ASSERT_TRUE(file.has_value());
-  const Compiled compiled = CompileFile(sources, *file, c.overrides);
+  const Compiled compiled =
+      CompileFile(std::filesystem::path(SLED_SOURCE_ROOT) / "examples" / c.file, c.overrides);
   ASSERT_TRUE(compiled.errors.empty()) << compiled.errors;
-  const runtime::Model& model = compiled.lowered.model;
+  const runtime::Model& model = compiled.model();
   runtime::Data data = runtime::MakeData(model);
   runtime::MultibodySystem system(model, data);
   const std::size_t n = system.size();

@@ -13,7 +13,8 @@
 namespace sled::verification {
 
 inline const std::vector<std::string>& AllIntegrators() {
-  static const std::vector<std::string> kMethods = {"exponential", "dopri5", "rosenbrock"};
+  static const std::vector<std::string> kMethods = {"auto", "exponential", "dopri5", "rosenbrock",
+                                                    "cvs"};
   return kMethods;
 }
 

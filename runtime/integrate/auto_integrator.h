@@ -1,0 +1,89 @@
+// `auto`, the default method: Dormand-Prince 5(4) while the problem is not stiff, the exponential
+// method while it is, and back, in the spirit of LSODA (Petzold, SIAM J. Sci. Stat. Comput. 4
+// (1983) 136-148) and of DifferentialEquations.jl's AutoTsit5(Rosenbrock23()), with the
+// exponential method (exponential_rk.h) on the stiff side.
+//
+// - To the exponential method: when dopri5's own stiffness detection (Hairer's, dopri5.f:
+//   DormandPrince::seems_stiff) says its steps have been held at the edge of its stability region
+//   for kStiffSteps steps. Its step is then set by stability, not accuracy, and the exponential
+//   method, stable at any step for the stiff part of its Jacobian, takes what accuracy allows.
+// - Back to dopri5: when the exponential method's steps have not gone beyond what dopri5 could
+//   take stably for kSettleSteps steps in a row: h rho <= kExplicitStable, with rho the largest
+//   rate of the force elements' stiff terms (its Jacobian's stiff_rate); dopri5, fifth order with
+//   no Jacobian, is then the cheaper method. A contact that separates, a belt that goes slack or
+//   a stop that is left makes rho fall and hands the problem back.
+// - Each method takes at least kMinSteps steps before it may hand over, so the two cannot chatter.
+//
+// A switch is decided after a step and made when the next step begins (the caller reads the
+// step's dense output from the method that took it in between): the old method settles what its
+// step left (its event, the system's CommitStep), and the new one restarts from its state, as
+// after an event (the system's histories and events carry over). Statistics are summed over both; stats().explicit_share and
+// exponential_share say how many steps, how much simulated time and how much of the
+// integrator's wall time each method had, and stats().switches how often it switched.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "runtime/integrate/dormand_prince.h"
+#include "runtime/integrate/exponential_rk.h"
+#include "runtime/integrate/ode.h"
+
+namespace sled::runtime {
+
+class AutoIntegrator final : public Integrator {
+ public:
+  static constexpr long kMinSteps = 10;
+  static constexpr long kSettleSteps = 10;
+  static constexpr double kExplicitStable = 2.0;
+
+  std::string_view name() const override { return "auto"; }
+  int order() const override { return active().order(); }
+  void Reset(OdeSystem& system, double t0, std::span<const double> y0,
+             const IntegratorOptions& options) override;
+  AdvanceResult Step(double t_stop) override;
+  double time() const override { return active().time(); }
+  double step_start() const override { return active().step_start(); }
+  // The last step's dense output, by the method that took it (a switch waits for the next Step).
+  void Interpolate(double t, std::span<double> y) const override { active().Interpolate(t, y); }
+  std::span<const double> state() const override { return active().state(); }
+  std::span<double> mutable_state() override { return active().mutable_state(); }
+  const IntegratorStats& stats() const override;
+  void Serialize(Archive& archive) override;
+
+  // Which method has the solution now.
+  bool stiff_mode() const { return stiff_; }
+
+ private:
+  AdaptiveIntegrator& active() { return stiff_ ? static_cast<AdaptiveIntegrator&>(exponential_)
+                                               : static_cast<AdaptiveIntegrator&>(explicit_); }
+  const AdaptiveIntegrator& active() const {
+    return stiff_ ? static_cast<const AdaptiveIntegrator&>(exponential_)
+                  : static_cast<const AdaptiveIntegrator&>(explicit_);
+  }
+  // Hands the solution to the other method, starting it with `first_step`.
+  void Switch(double first_step);
+  // Decided after a step, made before the next one (the caller reads the step's dense output in
+  // between); 0: none.
+  double pending_switch_step_ = 0.0;
+  // Whether the method that has the solution should hand it over, after its last step.
+  bool ShouldSwitch();
+
+  OdeSystem* system_ = nullptr;
+  IntegratorOptions options_;
+  DormandPrince explicit_;
+  ExponentialRungeKutta exponential_;
+  bool stiff_ = false;
+  long steps_in_mode_ = 0;
+  long settled_steps_ = 0;
+  // The sum of both methods' statistics, with the shares.
+  mutable IntegratorStats total_;
+  IntegratorStats::Share explicit_share_, exponential_share_;  // of the modes that ended
+  long switches_ = 0;
+  double mode_start_time_ = 0.0;
+  double mode_wall_seconds_ = 0.0;
+  std::vector<double> handover_;  // the state at a switch
+};
+
+}  // namespace sled::runtime
