@@ -166,16 +166,38 @@ void MultibodyJacobian::FormKinematics(Data& data, StructuredJacobian& jacobian)
       }
     }
   }
-  for (std::size_t s = 0; s < segments; ++s) {
-    using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 6>;
-    const Eigen::JacobiSVD<Small> svd(g_[s], Eigen::ComputeFullU | Eigen::ComputeFullV);
-    const auto& sigma = svd.singularValues();
-    const double largest = sigma.size() > 0 ? sigma.maxCoeff() : 0.0;
-    g_inverse_[s].setZero(model_.v_count[s], model_.q_count[s]);
-    for (Eigen::Index i = 0; i < sigma.size(); ++i) {
-      if (sigma[i] <= 1e-12 * largest || sigma[i] == 0.0) continue;
-      g_inverse_[s] += (1.0 / sigma[i]) * svd.matrixV().col(i) * svd.matrixU().col(i).transpose();
+  for (std::size_t s = 0; s < segments; ++s) PseudoInverse(g_[s], g_inverse_[s]);
+}
+
+void MultibodyJacobian::PseudoInverse(const SmallBlock& g, SmallBlock& inverse) {
+  // Every joint kind's G has orthogonal columns (quaternion rates, a rotated velocity, or the
+  // rates themselves; a locked axis a zero column), so G^+ = diag(1 / |g_k|^2) G^T. Checked,
+  // with an SVD for any G that is not so.
+  const Eigen::Index cols = g.cols();
+  inverse.setZero(cols, g.rows());
+  bool orthogonal = true;
+  for (Eigen::Index i = 0; i < cols && orthogonal; ++i) {
+    for (Eigen::Index j = i + 1; j < cols; ++j) {
+      const double product = g.col(i).dot(g.col(j));
+      if (std::abs(product) > 1e-12 * g.col(i).norm() * g.col(j).norm()) {
+        orthogonal = false;
+        break;
+      }
     }
+  }
+  if (orthogonal) {
+    for (Eigen::Index k = 0; k < cols; ++k) {
+      const double norm2 = g.col(k).squaredNorm();
+      if (norm2 > 0.0) inverse.row(k) = g.col(k).transpose() / norm2;
+    }
+    return;
+  }
+  const Eigen::JacobiSVD<SmallBlock> svd(g, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const auto& sigma = svd.singularValues();
+  const double largest = sigma.size() > 0 ? sigma.maxCoeff() : 0.0;
+  for (Eigen::Index i = 0; i < sigma.size(); ++i) {
+    if (sigma[i] <= 1e-12 * largest || sigma[i] == 0.0) continue;
+    inverse += (1.0 / sigma[i]) * svd.matrixV().col(i) * svd.matrixU().col(i).transpose();
   }
 }
 

@@ -87,7 +87,9 @@ class MultibodyJacobian {
   std::size_t max_rank_ = 0;
 
   // Per segment: G (q_count x v_count) and its pseudo-inverse.
-  std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 6>> g_, g_inverse_;
+  using SmallBlock = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 7>;
+  static void PseudoInverse(const SmallBlock& g, SmallBlock& inverse);
+  std::vector<SmallBlock> g_, g_inverse_;
   // Candidate terms: columns of u and v; a unit load per candidate (coordinate or segment and
   // wrench) for its response.
   Eigen::MatrixXd candidate_u_, candidate_v_;

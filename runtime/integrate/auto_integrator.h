@@ -56,8 +56,10 @@ class AutoIntegrator final : public Integrator {
   bool stiff_mode() const { return stiff_; }
 
  private:
-  AdaptiveIntegrator& active() { return stiff_ ? static_cast<AdaptiveIntegrator&>(exponential_)
-                                               : static_cast<AdaptiveIntegrator&>(explicit_); }
+  AdaptiveIntegrator& active() {
+    return stiff_ ? static_cast<AdaptiveIntegrator&>(exponential_)
+                  : static_cast<AdaptiveIntegrator&>(explicit_);
+  }
   const AdaptiveIntegrator& active() const {
     return stiff_ ? static_cast<const AdaptiveIntegrator&>(exponential_)
                   : static_cast<const AdaptiveIntegrator&>(explicit_);

@@ -28,7 +28,7 @@ void ExponentialRungeKutta::RestartHistory() {
 JacobianSource::Status ExponentialRungeKutta::EnsureJacobian(double h) {
   // The system chose the stiff terms for the step it was told, so a much changed step needs a
   // fresh A even at the same point.
-  if (source_.MustForm(h, kMaxJacobianAge, kJacobianStepRatio, false)) {
+  if (source_.MustForm(h, kMaxJacobianAge, kJacobianGrowth, false)) {
     prepared_step_ = 0.0;
     const JacobianSource::Status status =
         source_.Form(system(), t_, y_, f0_, h, options(), mutable_stats());

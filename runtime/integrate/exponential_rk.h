@@ -47,8 +47,8 @@
 // A costs no derivative evaluations when the system forms it; the phi-functions are exact on the
 // invariant subspace of A (structured_jacobian.h). Reuse: A is formed afresh after a restart or
 // event, after a rejection when it was formed at an earlier point, after kMaxJacobianAge
-// accepted steps, and when the step differs by more than kJacobianStepRatio from the one it was
-// formed for (the system chooses which terms are stiff by that step). The phi-functions are
+// accepted steps, and when the step has grown by more than kJacobianGrowth since it was formed
+// (the system leaves out terms too soft for ten times that step). The phi-functions are
 // recomputed when A or the step changes, and to save that, the step is kept when the controller
 // proposes a growth of less than kKeepStepRatio.
 #pragma once
@@ -68,7 +68,7 @@ namespace sled::runtime {
 class ExponentialRungeKutta final : public AdaptiveIntegrator {
  public:
   static constexpr long kMaxJacobianAge = 8;
-  static constexpr double kJacobianStepRatio = 2.0;
+  static constexpr double kJacobianGrowth = 5.0;
   static constexpr double kKeepStepRatio = 1.2;
 
   std::string_view name() const override { return "exponential"; }

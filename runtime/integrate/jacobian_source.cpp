@@ -29,7 +29,7 @@ JacobianSource::Status JacobianSource::Form(OdeSystem& system, double t, std::sp
   jacobian_.Clear();
   structured_ = false;
   if (system_structured_) {
-    structured_ = system.StructuredJacobianAt(t, y, f0, step, jacobian_);
+    structured_ = system.StructuredJacobianAt(t, y, f0, kReach * step, jacobian_);
     if (!structured_) return Status::kEvaluationFailed;
   } else if (const Status status = FormDense(system, t, y, f0, options, stats);
              status != Status::kOk) {
@@ -52,13 +52,10 @@ JacobianSource::Status JacobianSource::Form(OdeSystem& system, double t, std::sp
   return Status::kOk;
 }
 
-bool JacobianSource::MustForm(double h, long max_age, double step_ratio, bool same_point_serves) {
+bool JacobianSource::MustForm(double h, long max_age, double growth, bool same_point_serves) {
   if (!valid_) return true;
-  if (same_point_serves && at_current_point_) {
-    step_ = h;
-    return false;
-  }
-  return age_ >= max_age || h > step_ratio * step_ || h * step_ratio < step_;
+  if (same_point_serves && at_current_point_) return false;
+  return age_ >= max_age || h > growth * step_;
 }
 
 JacobianSource::Status JacobianSource::FormDense(OdeSystem& system, double t,

@@ -21,17 +21,19 @@ class JacobianSource {
   // columns when it has none.
   void Reserve(OdeSystem& system);
 
-  // Forms A at (t, y), where f(t, y) = f0, for a step of about `step`. Counts the Jacobian and
-  // any evaluations in `stats`.
+  // Forms A at (t, y), where f(t, y) = f0, for steps up to about kReach times `step` (the system
+  // may leave out terms too soft for those: a step that grows by the controller's factor 10 still
+  // finds every term it needs). Counts the Jacobian and any evaluations in `stats`.
+  static constexpr double kReach = 10.0;
   enum class Status { kOk, kEvaluationFailed, kNotFinite };
   Status Form(OdeSystem& system, double t, std::span<const double> y, std::span<const double> f0,
               double step, const IntegratorOptions& options, IntegratorStats& stats);
 
   // Reuse. Whether a Jacobian must be formed before a step of size h: none in hand, it has served
-  // `max_age` accepted steps, or h differs from the step it was formed for by more than
-  // `step_ratio` either way; with `same_point_serves`, one formed at the point the step starts
-  // from serves any h (and is then taken as formed for h).
-  bool MustForm(double h, long max_age, double step_ratio, bool same_point_serves);
+  // `max_age` accepted steps, or h exceeds `growth` times the step it was formed for (a shorter
+  // step is served: the terms left out are softer still for it); with `same_point_serves`, one
+  // formed at the point the step starts from serves any h.
+  bool MustForm(double h, long max_age, double growth, bool same_point_serves);
   bool valid() const { return valid_; }
   void Forget() { valid_ = at_current_point_ = false, age_ = 0, step_ = 0.0; }
   // The state moved on: the Jacobian ages.
@@ -60,9 +62,9 @@ class JacobianSource {
 
   StructuredJacobian jacobian_;
   bool valid_ = false;
-  bool at_current_point_ = false;  // formed at the point the step in progress starts from
-  long age_ = 0;                   // accepted steps since it was formed
-  double step_ = 0.0;              // the step it was formed (or last taken) for
+  bool at_current_point_ = false;   // formed at the point the step in progress starts from
+  long age_ = 0;                    // accepted steps since it was formed
+  double step_ = 0.0;               // the step it was formed (or last taken) for
   bool system_structured_ = false;  // the system said it has one (StructuredRank > 0)
   bool structured_ = false;
   std::vector<double> row_major_;  // OdeSystem::Jacobian's output

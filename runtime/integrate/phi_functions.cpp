@@ -16,6 +16,19 @@ constexpr double kScaledNorm = 0.5;
 // below this (relative to the leading I/p!, which is at most 1).
 constexpr double kTruncation = 1e-17;
 
+// Below this size the products are coefficient loops (lazyProduct): Eigen's blocked product
+// costs more than the arithmetic for the 2 x 2 to 16 x 16 matrices of a few stiff terms.
+constexpr Eigen::Index kSmall = 4;
+
+template <class Out, class A, class B>
+void Multiply(Out&& out, const A& a, const B& b) {
+  if (a.rows() <= kSmall) {
+    out.noalias() = a.lazyProduct(b);
+  } else {
+    out.noalias() = a * b;
+  }
+}
+
 double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   double norm = 0.0;
   for (Eigen::Index j = 0; j < z.cols(); ++j) norm = std::max(norm, z.col(j).cwiseAbs().sum());
@@ -26,15 +39,15 @@ double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
 
 double InverseFactorial(int k) {
   static const auto table = [] {
-    std::array<double, 21> values{};
-    double factorial = 1.0;
-    for (int i = 0; i <= 20; ++i) {
-      if (i > 0) factorial *= i;
-      values[static_cast<std::size_t>(i)] = 1.0 / factorial;
+    std::array<double, 41> values{};
+    long double inverse = 1.0L;
+    for (int i = 0; i <= 40; ++i) {
+      if (i > 0) inverse /= i;
+      values[static_cast<std::size_t>(i)] = static_cast<double>(inverse);
     }
     return values;
   }();
-  if (k < 0 || k > 20) throw std::out_of_range("InverseFactorial: k must be in [0, 20]");
+  if (k < 0 || k > 40) throw std::out_of_range("InverseFactorial: k must be in [0, 40]");
   return table[static_cast<std::size_t>(k)];
 }
 
@@ -89,7 +102,7 @@ void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
   // Taylor degree d: the first neglected term ||X||^(d+1) / (d+1+p)! below kTruncation.
   int degree = 0;
   double term = 1.0;  // ||X||^(d+1) / (d+1+p)! * p!, built up
-  for (degree = 0; degree < 30; ++degree) {
+  for (degree = 0; degree + p < 39; ++degree) {
     term *= x_norm / static_cast<double>(degree + 1 + p);
     if (term < kTruncation) break;
   }
@@ -98,17 +111,17 @@ void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
   auto top = corner(phi[order]);
   auto product = corner(product_);
   top.setIdentity();
-  top *= 1.0 / std::tgamma(static_cast<double>(degree + p + 1));
+  top *= InverseFactorial(degree + p);
   for (int j = degree - 1; j >= 0; --j) {
-    product.noalias() = x * top;
+    Multiply(product, x, top);
     top = product;
-    top.diagonal().array() += 1.0 / std::tgamma(static_cast<double>(j + p + 1));
+    top.diagonal().array() += InverseFactorial(j + p);
   }
   // phi_k = X phi_{k+1} + I/k!, downwards.
   for (int k = p - 1; k >= 0; --k) {
     const auto i = static_cast<std::size_t>(k);
     auto lower = corner(phi[i]);
-    lower.noalias() = x * corner(phi[i + 1]);
+    Multiply(lower, x, corner(phi[i + 1]));
     lower.diagonal().array() += InverseFactorial(k);
   }
 
@@ -119,13 +132,13 @@ void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
     }
     for (std::size_t k = 1; k <= order; ++k) {
       auto next = corner(next_[k]);
-      next.noalias() = corner(phi[0]) * corner(phi[k]);
+      Multiply(next, corner(phi[0]), corner(phi[k]));
       for (std::size_t j = 1; j <= k; ++j) {
         next += InverseFactorial(static_cast<int>(k - j)) * corner(phi[j]);
       }
       next *= std::ldexp(1.0, -static_cast<int>(k));
     }
-    corner(next_[0]).noalias() = corner(phi[0]) * corner(phi[0]);
+    Multiply(corner(next_[0]), corner(phi[0]), corner(phi[0]));
     // Same-size matrices: swapping exchanges their storage, never allocates.
     for (std::size_t k = 0; k <= order; ++k) phi[k].swap(next_[k]);
   }

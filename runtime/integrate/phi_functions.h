@@ -50,7 +50,7 @@ class PhiFunctions {
   int squarings_ = 0;
 };
 
-// 1/k! for k = 0..20 (exact in double up to 18, correctly rounded beyond).
+// 1/k! for k = 0..40 (from long double products, so within a rounding of the exact value).
 double InverseFactorial(int k);
 
 }  // namespace sled::runtime

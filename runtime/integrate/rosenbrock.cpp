@@ -139,7 +139,7 @@ void Rosenbrock::SerializeHistory(Archive& archive) {
 bool Rosenbrock::TryStep(double h, double* error) {
   const std::size_t n = y_.size();
   // A retry from the same point keeps the Jacobian formed there.
-  if (source_.MustForm(h, kMaxJacobianAge, kJacobianStepRatio, true)) {
+  if (source_.MustForm(h, kMaxJacobianAge, kJacobianGrowth, true)) {
     switch (FormJacobian(h)) {
       case JacobianSource::Status::kOk:
         break;
@@ -189,9 +189,7 @@ bool Rosenbrock::TryStep(double h, double* error) {
   return true;
 }
 
-void Rosenbrock::StepAccepted() {
-  source_.StepAccepted();
-}
+void Rosenbrock::StepAccepted() { source_.StepAccepted(); }
 
 void Rosenbrock::StepRejected() {
   // A stale W may be why the step failed: retry with a fresh one. A fresh one is exact here,

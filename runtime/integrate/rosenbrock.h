@@ -35,8 +35,8 @@
 //   - there is none (after Reset, an event or an external change of the state),
 //   - the previous attempt was rejected and the Jacobian was formed at an earlier point,
 //   - it has served kMaxJacobianAge accepted steps, or
-//   - the step differs from the one it was first used with by more than a factor
-//     kJacobianStepRatio either way (the step size has changed much, so has h W's influence);
+//   - the step has grown by more than kJacobianGrowth since it was formed (the system leaves out
+//     terms too soft for ten times that step);
 // otherwise the stale one serves as W. The factorization is redone whenever the step size or
 // the Jacobian changes; to save refactorizations the step is kept when the controller proposes
 // a growth of less than kKeepStepRatio (Hairer's RADAU5 rule).
@@ -58,7 +58,7 @@ class Rosenbrock final : public AdaptiveIntegrator {
  public:
   static constexpr int kStages = 4;
   static constexpr long kMaxJacobianAge = 20;
-  static constexpr double kJacobianStepRatio = 2.0;
+  static constexpr double kJacobianGrowth = 5.0;
   static constexpr double kKeepStepRatio = 1.2;
 
   std::string_view name() const override { return "rosenbrock"; }
@@ -89,7 +89,7 @@ class Rosenbrock final : public AdaptiveIntegrator {
   Eigen::VectorXd u_[kStages];
   Eigen::VectorXd rhs_, stage_, f_stage_, error_;
 
-  double factored_step_ = 0.0;              // the step of the current factorization
+  double factored_step_ = 0.0;  // the step of the current factorization
 };
 
 }  // namespace sled::runtime

@@ -197,12 +197,12 @@ void StructuredPhi::Accumulate(int k, Fraction fraction, std::span<const double>
   vtb.array() /= d.array();
   auto small = small_.head(basis_);
   const auto ku = static_cast<std::size_t>(k);
-  small.noalias() = tau * functions[ku + 1].topLeftCorner(basis_, r) * vtb;
+  small.noalias() = tau * functions[ku + 1].topLeftCorner(basis_, r).lazyProduct(vtb);
   if (has_nilpotent_) {
     auto vtnb = vtnb_.head(r);
     vtnb.noalias() = a.v().transpose() * AsVector(std::span<const double>(nb_));
     vtnb.array() /= d.array();
-    small.noalias() += (tau * tau) * functions[ku + 2].topLeftCorner(basis_, r) * vtnb;
+    small.noalias() += (tau * tau) * functions[ku + 2].topLeftCorner(basis_, r).lazyProduct(vtnb);
   }
   out_vector.noalias() += scale * (basis_store_.leftCols(basis_) * small);
 }
