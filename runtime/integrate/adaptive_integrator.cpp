@@ -98,7 +98,7 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
                                 ": need 0 <= min_step <= max_step (max_step 0: no limit)");
   }
   system_ = &system;
-  controlled_ = std::min(system.ControlledSize(), n);
+  controlled_ = ControlsQuadratures() ? n : std::min(system.ControlledSize(), n);
   options_ = options;
   stats_ = {};
   t_ = t0;

@@ -74,6 +74,11 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // then moved by less than kProjectionReevaluation of the tolerance. A method whose stages or
   // difference Jacobian rely on f0_ being exactly f(t_, y_) says false.
   virtual bool ToleratesProjectedStart() const { return true; }
+  // Whether the error control also measures the system's quadratures (OdeSystem::
+  // ControlledSize). A method whose stages are not accurate states on a stiff problem (the
+  // exponential and Rosenbrock methods: stage order 1 or 2) integrates a quadrature of them, such
+  // as a damper's dissipated work, only as well as its error test sees it: it says true.
+  virtual bool ControlsQuadratures() const { return false; }
   // What the method itself carries between steps (decay rates, a Jacobian, its dense output's
   // data), for Serialize.
   virtual void SerializeHistory(Archive& archive) { (void)archive; }
@@ -158,7 +163,7 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::vector<double> dense_y1_;
   std::vector<double> end_state_;
   std::vector<double> dense_y0_, dense_f0_, dense_f1_;
-  double restart_step_ = 0.0;  // RestartAt's first step (0: none)
+  double restart_step_ = 0.0;      // RestartAt's first step (0: none)
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state
   LargestComponent largest_;       // of the error estimates of the attempt under way

@@ -17,9 +17,9 @@
 // A switch is decided after a step and made when the next step begins (the caller reads the
 // step's dense output from the method that took it in between): the old method settles what its
 // step left (its event, the system's CommitStep), and the new one restarts from its state, as
-// after an event (the system's histories and events carry over). Statistics are summed over both; stats().explicit_share and
-// exponential_share say how many steps, how much simulated time and how much of the
-// integrator's wall time each method had, and stats().switches how often it switched.
+// after an event (the system's histories and events carry over). Statistics are summed over both;
+// stats().explicit_share and exponential_share say how many steps, how much simulated time and how
+// much of the integrator's wall time each method had, and stats().switches how often it switched.
 #pragma once
 
 #include <span>

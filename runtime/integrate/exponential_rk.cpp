@@ -13,10 +13,11 @@ void ExponentialRungeKutta::ResizeWorkspace(std::size_t size) {
   source_.Reserve(system());
   phi_.Reserve(size, source_.jacobian().max_rank());
   for (auto* v : {&half_, &whole_, &stage_, &increment_, &f_stage_, &d2_, &d3_, &d4_, &c2_, &c3_,
-                  &error_, &product_}) {
+                  &error_, &product_, &dense_y0_, &dense_f0_, &dense_c2_, &dense_c3_}) {
     v->assign(size, 0.0);
   }
   scratch_.setZero(static_cast<Eigen::Index>(source_.jacobian().max_rank()));
+  quadratures_ = std::min(system().ControlledSize(), size);
   RestartHistory();
 }
 
@@ -100,6 +101,16 @@ bool ExponentialRungeKutta::TryStep(double h, double* error) {
 
   // The end derivative (the next step's f0), and the residual of the step's model there.
   if (!Evaluate(t_ + h, y1_, f1_)) return false;
+  // The quadratures (ControlledSize on: the work integrals) feed nothing back and A has no rows
+  // for them, so their last stage may as well be the step's end: with D_4 = f(t + h, y1) - f0
+  // their weights are Simpson's rule on the midpoint stage and the end, which on a stiff problem
+  // is far closer than the stage Y_4 (a damper's work: its velocity at Y_4 is not yet relaxed).
+  for (std::size_t i = quadratures_; i < n; ++i) {
+    d4_[i] = f1_[i] - f0_[i];
+    c2_[i] = 4.0 * d3_[i] - d4_[i];
+    c3_[i] = 4.0 * d4_[i] - 8.0 * d3_[i];
+    y1_[i] = y_[i] + h * (f0_[i] + 0.5 * c2_[i] + c3_[i] / 6.0);
+  }
   for (std::size_t i = 0; i < n; ++i) increment_[i] = y1_[i] - y_[i];
   Remainder(f1_, increment_, error_);
   for (std::size_t i = 0; i < n; ++i) error_[i] = h * (error_[i] - d4_[i]);
@@ -108,23 +119,31 @@ bool ExponentialRungeKutta::TryStep(double h, double* error) {
   return true;
 }
 
-void ExponentialRungeKutta::Interpolate(double t, std::span<double> y) const {
-  const double h = step_;
-  const double theta = h != 0.0 ? (t - t_) / h : 0.0;
+void ExponentialRungeKutta::PrepareDenseOutput() {
+  std::copy(y_.begin(), y_.end(), dense_y0_.begin());
+  std::copy(f0_.begin(), f0_.end(), dense_f0_.begin());
+  std::copy(c2_.begin(), c2_.end(), dense_c2_.begin());
+  std::copy(c3_.begin(), c3_.end(), dense_c3_.begin());
+}
+
+void ExponentialRungeKutta::DenseOutput(double theta, std::span<double> y) const {
+  // The step's own model at theta h: its phi-functions (of the A and h the step used, still
+  // prepared: the next step has not begun) at tau = theta h.
+  const double h = dense_step();
   if (theta <= 0.0) {
-    std::copy(y_.begin(), y_.end(), y.begin());
+    std::copy(dense_y0_.begin(), dense_y0_.end(), y.begin());
     return;
   }
   if (theta >= 1.0) {
-    std::copy(y1_.begin(), y1_.end(), y.begin());
+    std::copy(dense_end().begin(), dense_end().end(), y.begin());
     return;
   }
   const double tau = theta * h;
   phi_.PrepareOther(tau);
-  std::copy(y_.begin(), y_.end(), y.begin());
-  phi_.Accumulate(1, Fraction::kOther, f0_, tau, y);
-  phi_.Accumulate(2, Fraction::kOther, c2_, h * theta * theta, y);
-  phi_.Accumulate(3, Fraction::kOther, c3_, h * theta * theta * theta, y);
+  std::copy(dense_y0_.begin(), dense_y0_.end(), y.begin());
+  phi_.Accumulate(1, Fraction::kOther, dense_f0_, tau, y);
+  phi_.Accumulate(2, Fraction::kOther, dense_c2_, h * theta * theta, y);
+  phi_.Accumulate(3, Fraction::kOther, dense_c3_, h * theta * theta * theta, y);
 }
 
 void ExponentialRungeKutta::StepAccepted() { source_.StepAccepted(); }
@@ -133,8 +152,15 @@ void ExponentialRungeKutta::StepRejected() { source_.StepRejected(); }
 
 void ExponentialRungeKutta::SerializeHistory(Archive& archive) {
   source_.Serialize(archive);
-  // The phi-functions follow from A and the step: the same ones, made again when next needed.
-  if (archive.reading()) prepared_step_ = 0.0;
+  for (auto* v : {&dense_y0_, &dense_f0_, &dense_c2_, &dense_c3_}) archive.Field(*v);
+  // The phi-functions follow from A and the step: made again for the last step's dense output
+  // (a resumed run reads its first rows from it), and again when the next step needs them.
+  if (archive.reading()) {
+    prepared_step_ = 0.0;
+    if (dense_step() > 0.0 && source_.jacobian().size() == dense_y0_.size()) {
+      phi_.Prepare(source_.jacobian(), dense_step());
+    }
+  }
 }
 
 double ExponentialRungeKutta::AdjustStep(double proposed, double current) const {

@@ -83,6 +83,7 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
  protected:
   int ErrorPower() const override { return 3; }
   void ResizeWorkspace(std::size_t size) override;
+  bool ControlsQuadratures() const override { return true; }
   void RestartHistory() override;
   bool TryStep(double h, double* error) override;
   void StepAccepted() override;
@@ -90,7 +91,8 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
   bool HasEndDerivative() const override { return true; }
   double AdjustStep(double proposed, double current) const override;
   void SerializeHistory(Archive& archive) override;
-  void Interpolate(double t, std::span<double> y) const override;
+  void PrepareDenseOutput() override;
+  void DenseOutput(double theta, std::span<double> y) const override;
 
  private:
   JacobianSource::Status EnsureJacobian(double h);
@@ -100,7 +102,8 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
 
   JacobianSource source_;
   StructuredPhi phi_;
-  double prepared_step_ = 0.0;  // the step of the current phi-functions (0: none)
+  double prepared_step_ = 0.0;   // the step of the current phi-functions (0: none)
+  std::size_t quadratures_ = 0;  // where the quadratures begin (system().ControlledSize())
 
   std::vector<double> half_;   // h/2 phi_1(hA/2) f
   std::vector<double> whole_;  // h phi_1(hA) f
@@ -108,6 +111,8 @@ class ExponentialRungeKutta final : public AdaptiveIntegrator {
   std::vector<double> d2_, d3_, d4_;
   std::vector<double> c2_, c3_;  // 4 D_3 - D_4 and 4 D_4 - 8 D_3, kept for the dense output
   std::vector<double> error_, product_;
+  // The dense output's data of the last accepted step: y0, f0 and its c2, c3.
+  std::vector<double> dense_y0_, dense_f0_, dense_c2_, dense_c3_;
   Eigen::VectorXd scratch_;
 };
 

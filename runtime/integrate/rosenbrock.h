@@ -67,6 +67,7 @@ class Rosenbrock final : public AdaptiveIntegrator {
  protected:
   int ErrorPower() const override { return 3; }  // order 3 with an order-2 embedded solution
   void ResizeWorkspace(std::size_t size) override;
+  bool ControlsQuadratures() const override { return true; }
   void RestartHistory() override;
   bool TryStep(double h, double* error) override;
   void StepAccepted() override;

@@ -9,7 +9,9 @@ namespace {
 RunSummary EveryFieldSet() {
   RunSummary s;
   s.integrator = "exponential";
-  s.stats = {4399, 113, 13539, 2, 3, 4, 3323, 0.9957541920744579, {3000, 0.12, 0.05}, {1399, 0.08, 0.2}, 7};
+  s.stats = {
+      4399, 113, 13539, 2, 3, 4, 3323, 0.9957541920744579, {3000, 0.12, 0.05}, {1399, 0.08, 0.2},
+      7};
   s.output_evaluations = 1999;
   s.error_estimate = 2.5e-6;
   s.wall_seconds = 0.252734325;

@@ -173,7 +173,10 @@ class RelaxingWithEvent : public OdeSystem {
   void Events(double, std::span<const double> y, std::span<double> g) override {
     g[0] = y[0] - 0.5;  // y0 ~ 1/(1+t) crosses 1/2 near t = 1
   }
-  void HandleEvent(std::size_t, int, double t, std::span<double>) override { event_time = t; }
+  EventEffect HandleEvent(std::size_t, int, double t, std::span<double>) override {
+    event_time = t;
+    return EventEffect::kModeChanged;
+  }
   double event_time = -1.0;
 };
 
