@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "runtime/model.h"
+#include "runtime/relative_motion.h"
 
 namespace sled::runtime {
 namespace {
@@ -364,10 +365,16 @@ std::string DumpModel(const Model& m) {
     const bool mirrored = o < m.output_mirrored.size() && m.output_mirrored[o] != 0;
     const int cfc = o < m.output_filter_class.size() ? m.output_filter_class[o] : 0;
     const bool iso = o < m.output_filter_iso.size() && m.output_filter_iso[o] != 0;
-    line(fmt::format("output {} {} {} index {} point {}{} filter {}{}", o, Name(m.output_kind[o]),
+    std::string relative;
+    if (o < m.output_relative.size() && m.output_relative[o] != 0) {
+      relative = fmt::format(
+          " {} {}{}", m.output_relative[o] == kExpressedIn ? "expressed_in" : "relative_to",
+          Text(m.output_frame[o]), m.output_frame_mirrored[o] != 0 ? " mirrored" : "");
+    }
+    line(fmt::format("output {} {} {} index {} point {}{} filter {}{}{}", o, Name(m.output_kind[o]),
                      Get(m.output_label, o), Get(m.output_index, o), Text(Get(m.output_point, o)),
                      mirrored ? " mirrored" : "", cfc > 0 ? fmt::format("cfc{}", cfc) : "none",
-                     iso ? " iso_6487" : ""));
+                     iso ? " iso_6487" : "", relative));
   }
   for (std::size_t c = 0; c < m.ncriterion(); ++c) {
     line(fmt::format("criterion {} {} {} output {} moment_output {}{}", c, Get(m.criterion_name, c),

@@ -254,6 +254,13 @@ struct Model {
   // Mirror symmetry: 1 when the output is of a right segment (or joint) the Model leaves out,
   // read from its left twin and mirrored. Empty when there is no mirror symmetry.
   std::vector<std::uint8_t> output_mirrored;
+  // Segment requests measured in a frame (OutputFrame, runtime/relative_motion.h): 1 seen from
+  // output_frame (`relative_to`), 2 relative to the ground in its axes (`expressed_in`), 0 as
+  // docs/runtime.md says; output_frame_mirrored is 1 when that frame is a right twin the Model
+  // leaves out, read from its left twin. Empty when no output has a frame.
+  std::vector<std::uint8_t> output_relative;
+  std::vector<FrameRef> output_frame;
+  std::vector<std::uint8_t> output_frame_mirrored;
   // SAE J211 channel frequency class of each group's filtered channels (0: not filtered), and
   // 1 where ISO 6487 gives the coefficients. Empty: nothing filtered.
   std::vector<std::int16_t> output_filter_class;

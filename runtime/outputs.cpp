@@ -10,6 +10,7 @@
 #include "runtime/forces.h"
 #include "runtime/joint.h"
 #include "runtime/mirror.h"
+#include "runtime/relative_motion.h"
 #include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
@@ -81,6 +82,58 @@ ChannelGroup GroupOf(const Model& model, std::size_t k) {
   return {"value", "", {"value"}};
 }
 
+bool IsRelative(const Model& model, std::size_t k) {
+  return k < model.output_relative.size() && model.output_relative[k] != 0;
+}
+
+// A segment request `relative_to` a frame (the quantity seen from the frame, in its axes) or
+// `expressed_in` it (the quantity relative to the ground, in the frame's axes). A right twin (of
+// the body or the frame) is its left twin's motion reflected, and its point is in its own axes
+// again.
+Vec3 RelativeValue(const Model& model, const Data& data, std::size_t k) {
+  const bool body_mirrored = !model.output_mirrored.empty() && model.output_mirrored[k] != 0;
+  const FrameMotion body =
+      WorldMotion(model, data, {FrameRef::Kind::kSegment, model.output_index[k]}, body_mirrored);
+  const FrameMotion frame =
+      WorldMotion(model, data, model.output_frame[k], model.output_frame_mirrored[k] != 0);
+  const Vec3 point =
+      body_mirrored ? MirrorFrameVector(model.output_point[k]) : Vec3(model.output_point[k]);
+  if (model.output_relative[k] == kExpressedIn) {
+    const FrameMotion ground;
+    const Mat3 to_frame = frame.rotation.transpose();
+    switch (model.output_kind[k]) {
+      case Model::OutputKind::kVelocity:
+        return to_frame * PointRelativeTo(body, point, ground).velocity;
+      case Model::OutputKind::kAcceleration:
+        return to_frame * PointRelativeTo(body, point, ground).acceleration;
+      case Model::OutputKind::kAngularVelocity:
+        return to_frame * body.angular_velocity;
+      case Model::OutputKind::kAngularAcceleration:
+        return to_frame * body.angular_acceleration;
+      default:
+        break;  // position and orientation take only `relative_to` (compiler/check)
+    }
+    return Vec3::Zero();
+  }
+  switch (model.output_kind[k]) {
+    case Model::OutputKind::kPosition:
+      return PointRelativeTo(body, point, frame).position;
+    case Model::OutputKind::kVelocity:
+      return PointRelativeTo(body, point, frame).velocity;
+    case Model::OutputKind::kAcceleration:
+      return PointRelativeTo(body, point, frame).acceleration;
+    case Model::OutputKind::kOrientation:
+      return YawPitchRoll(RotationRelativeTo(body, frame).rotation);
+    case Model::OutputKind::kAngularVelocity:
+      return RotationRelativeTo(body, frame).angular_velocity;
+    case Model::OutputKind::kAngularAcceleration:
+      return RotationRelativeTo(body, frame).angular_acceleration;
+    default:
+      break;
+  }
+  return Vec3::Zero();
+}
+
 }  // namespace
 
 std::vector<std::string> ChannelNames(const Model& model) {
@@ -133,6 +186,11 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
     mirrored = k < model.output_mirrored.size() && model.output_mirrored[k] != 0;
     const auto index = static_cast<std::size_t>(model.output_index[k]);
     const Vec3& point = model.output_point[k];
+    if (IsRelative(model, k)) {
+      mirrored = false;  // RelativeValue reflects right twins itself
+      put(RelativeValue(model, data, k), nullptr);
+      continue;
+    }
     switch (model.output_kind[k]) {
       case Model::OutputKind::kAcceleration: {
         // Classical acceleration of a body-fixed point, from the spatial acceleration.
@@ -164,14 +222,9 @@ void EvaluateChannels(const Model& model, const Data& data, std::span<double> va
       case Model::OutputKind::kAngularVelocity:
         put(data.velocity[index].head<3>(), MirrorFramePseudovector);
         break;
-      case Model::OutputKind::kOrientation: {
-        // Yaw about z, pitch about y, roll about x (the input convention).
-        const Mat3& R = data.rotation[index];
-        const double pitch = std::asin(std::clamp(-R(2, 0), -1.0, 1.0));
-        put(Vec3(std::atan2(R(1, 0), R(0, 0)), pitch, std::atan2(R(2, 1), R(2, 2))),
-            MirrorYawPitchRoll);
+      case Model::OutputKind::kOrientation:
+        put(YawPitchRoll(data.rotation[index]), MirrorYawPitchRoll);
         break;
-      }
       case Model::OutputKind::kJointAngle: {
         const auto qa = static_cast<std::size_t>(model.q_address[index]);
         switch (model.joint_kind[index]) {

@@ -252,6 +252,37 @@ bool Checker::ReadFilterStandard(const BoundBlock& bound) {
   return false;
 }
 
+// `relative_to FRAME` or `expressed_in FRAME` on a segment request: the frame and how the
+// quantity is taken in it. The frame names the channels unless `as` does
+// (`occupant.head.relative_to.sled`). False when the frame is reported.
+bool Checker::ReadOutputFrame(Scope& scope, const ast::Statement& request, const OutputSpec& spec,
+                              OutputRequest& output) {
+  if (spec.target_kind != "segment") return true;
+  const ast::Clause* relative = request.FindClause("relative_to");
+  const ast::Clause* expressed = request.FindClause("expressed_in");
+  if (relative && expressed) {
+    Report(DiagnosticKind::kMalformedStatement, expressed->word_range,
+           fmt::format("`{}` takes `relative_to` or `expressed_in`, not both", request.keyword),
+           "second frame",
+           "`relative_to F` is the motion seen from F; `expressed_in F` the motion relative to the "
+           "ground in F's axes");
+    return false;
+  }
+  const ast::Clause* clause = relative ? relative : expressed;
+  if (!clause ||
+      (expressed && (request.keyword == "position" || request.keyword == "orientation"))) {
+    return true;  // none, or reported as not allowed
+  }
+  output.relative_to = ResolveFrame(scope, clause->value);
+  if (!output.relative_to) return false;
+  output.expressed_in = expressed != nullptr;
+  if (!request.FindClause("as")) {
+    output.label =
+        fmt::format("{}.{}.{}", output.label, clause->word, FrameName(*output.relative_to));
+  }
+  return true;
+}
+
 void Checker::CheckOutputs() {
   for (const Pending& pending : outputs_) {
     const ast::Statement& statement = *pending.statement;
@@ -276,7 +307,10 @@ void Checker::CheckOutputs() {
       for (const ast::Clause& clause : request->clauses) {
         const bool allowed = (clause.word == "at" && spec->takes_point) || clause.word == "as" ||
                              clause.word == "filter" ||
-                             (clause.word == "with" && spec->target_kind == "contact");
+                             (clause.word == "with" && spec->target_kind == "contact") ||
+                             (clause.word == "relative_to" && spec->target_kind == "segment") ||
+                             (clause.word == "expressed_in" && spec->target_kind == "segment" &&
+                              request->keyword != "position" && request->keyword != "orientation");
         if (!allowed) {
           Report(DiagnosticKind::kMalformedStatement, clause.word_range,
                  fmt::format("`{}` takes no `{}` clause", request->keyword, clause.word),
@@ -297,6 +331,7 @@ void Checker::CheckOutputs() {
       if (const ast::Clause* at = request->FindClause("at"); at && spec->takes_point) {
         output.point = ExpectVector(scope, at->value, dim::kLength, "at").value_or(Vec3{});
       }
+      if (!ReadOutputFrame(scope, *request, *spec, output)) continue;  // reported
       if (spec->target_kind == "contact") {
         const ast::Clause* with = request->FindClause("with");
         if (!with) {

@@ -292,6 +292,11 @@ struct OutputRequest {
   std::vector<int> contacts;  // kContactForce: every contact pair the request names (index is
                               // the first): a segment's ellipsoids give one pair each
   Vec3 point{};               // point requests: the point in the segment frame
+  // `relative_to FRAME` on a segment request: the quantity relative to that frame (a segment, a
+  // vehicle or the ground), in its axes; none for the absolute quantity of docs/language.md §17.
+  std::optional<FrameRef> relative_to;
+  // `expressed_in FRAME` instead: the quantity relative to the ground, in that frame's axes.
+  bool expressed_in = false;
   // The SAE J211 class of the filtered channels [Hz]: 0 none, -1 the default for the kind; and
   // whether the block's filter_standard is ISO 6487.
   int filter_class = -1;

@@ -225,6 +225,8 @@ class Checker {
   void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
   void CheckInitialConditions();
   void CheckOutputs();
+  bool ReadOutputFrame(Scope& scope, const ast::Statement& request, const OutputSpec& spec,
+                       OutputRequest& output);
   // Contacts, output requests and criteria given twice (errors); belts and springs along the
   // same path (warnings). compiler/check/duplicates.cpp.
   void CheckDuplicates();

@@ -186,8 +186,12 @@ std::string Dump(const CheckedScenario& s) {
       for (int c : o.contacts) pairs += fmt::format(" #{}", c);
       pairs = " pairs" + pairs;
     }
-    line(fmt::format("output {} {} #{} at {}{}", static_cast<int>(o.kind), o.label, o.index,
-                     V(o.point), pairs));
+    const std::string relative =
+        o.relative_to ? fmt::format(" {} {}", o.expressed_in ? "expressed_in" : "relative_to",
+                                    FrameText(s, *o.relative_to))
+                      : "";
+    line(fmt::format("output {} {} #{} at {}{}{}", static_cast<int>(o.kind), o.label, o.index,
+                     V(o.point), pairs, relative));
   }
   for (const Criterion& c : s.criteria) {
     line(fmt::format("criterion {} segment {} joint {}", static_cast<int>(c.kind),

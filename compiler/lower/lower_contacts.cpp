@@ -278,7 +278,7 @@ void LowerContactOutput(Lowering& lowering, const OutputRequest& output) {
        {Model::OutputKind::kContactForce, Model::OutputKind::kContactPoint,
         Model::OutputKind::kContactDeflection}) {
     lowering.AddOutput({kind, output.label, group, runtime::Vec3::Zero(), false,
-                        FilterClassOf(output, kind), output.iso_filter});
+                        FilterClassOf(output, kind), output.iso_filter, std::nullopt, false, 0});
   }
 }
 

@@ -86,7 +86,8 @@ std::int32_t FindOrAddOutput(Lowering& lowering, Model::OutputKind kind, std::in
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
     const bool same_side =
         model.output_mirrored.empty() || (model.output_mirrored[k] != 0) == mirrored;
-    if (model.output_kind[k] == kind && model.output_index[k] == index && same_side &&
+    const bool absolute = model.output_relative.empty() || model.output_relative[k] == 0;
+    if (model.output_kind[k] == kind && model.output_index[k] == index && same_side && absolute &&
         model.output_point[k].isZero()) {
       return static_cast<std::int32_t>(k);
     }
@@ -97,7 +98,8 @@ std::int32_t FindOrAddOutput(Lowering& lowering, Model::OutputKind kind, std::in
     taken = taken || (model.output_kind[k] == kind && model.output_label[k] == label);
   }
   lowering.AddOutput({kind, taken ? label + ".cg" : label, index, runtime::Vec3::Zero(), mirrored,
-                      static_cast<std::int16_t>(DefaultFilterClass(kind)), false});
+                      static_cast<std::int16_t>(DefaultFilterClass(kind)), false, std::nullopt,
+                      false, 0});
   return static_cast<std::int32_t>(model.output_kind.size() - 1);
 }
 

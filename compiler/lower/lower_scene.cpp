@@ -8,6 +8,7 @@
 #include "compiler/check/schema.h"
 #include "compiler/lower/lowering.h"
 #include "runtime/mirror.h"
+#include "runtime/relative_motion.h"
 #include "runtime/vehicle.h"
 
 namespace sled::compiler::lowering {
@@ -298,10 +299,29 @@ void LowerOutputs(Lowering& lowering) {
       }
     }
     // A point of the right twin lies in the left one's frame with y reversed.
-    lowering.AddOutput(
-        {kind, output.label, index,
-         mirrored ? runtime::MirrorFrameVector(ToEigen(output.point)) : ToEigen(output.point),
-         mirrored, FilterClassOf(output, kind), output.iso_filter});
+    Lowering::Output lowered{
+        kind,
+        output.label,
+        index,
+        mirrored ? runtime::MirrorFrameVector(ToEigen(output.point)) : ToEigen(output.point),
+        mirrored,
+        FilterClassOf(output, kind),
+        output.iso_filter,
+        std::nullopt,
+        false,
+        0};
+    if (output.relative_to) {
+      // A right twin's frame is its left twin's, mirrored (runtime/relative_motion.h).
+      FrameRef frame = *output.relative_to;
+      lowered.frame_mirrored = lowering.Dropped(frame);
+      if (lowered.frame_mirrored) {
+        frame.index = lowering.mirror_twin[static_cast<std::size_t>(frame.index)];
+      }
+      lowered.frame = lowering.Frame(frame);
+      lowered.frame_mode = static_cast<std::uint8_t>(output.expressed_in ? runtime::kExpressedIn
+                                                                         : runtime::kRelativeTo);
+    }
+    lowering.AddOutput(lowered);
   }
 }
 

@@ -87,6 +87,11 @@ class Lowering {
     bool mirrored = false;  // read from a left twin (mirror symmetry)
     std::int16_t filter_class = 0;
     bool iso_filter = false;
+    // `relative_to` or `expressed_in` (frame_mode, runtime::Model::OutputFrame): the frame the
+    // output is measured in, and whether it is a right twin read from its left twin.
+    std::optional<runtime::FrameRef> frame;
+    bool frame_mirrored = false;
+    std::uint8_t frame_mode = 0;
   };
   void AddOutput(const Output& output);
   // Reports the notes to `diagnostics` in source order (those without a position last).

@@ -70,7 +70,7 @@ bool IsIdentifier(std::string_view text) {
 // Words the grammar never reads as a name: booleans and clause words.
 bool IsReserved(std::string_view word) {
   return word == "true" || word == "false" || word == "on" || word == "with" || word == "at" ||
-         word == "as" || word == "filter";
+         word == "as" || word == "filter" || word == "relative_to" || word == "expressed_in";
 }
 
 // A plain name: an identifier that is not a reserved word.
@@ -556,6 +556,11 @@ Statement& Statement::As(std::string_view name, SourceLocation where) {
 Statement& Statement::Filter(std::string_view filter_class, SourceLocation where) {
   CheckName(filter_class, "filter class", "Filter", where);
   clauses_.push_back({"filter", Ref(filter_class, where), where});
+  return *this;
+}
+
+Statement& Statement::RelativeTo(Value frame, SourceLocation where) {
+  clauses_.push_back({"relative_to", std::move(frame), where});
   return *this;
 }
 

@@ -186,6 +186,8 @@ class Statement {
   // `filter cfc1000` on an output request.
   Statement& Filter(std::string_view filter_class,
                     SourceLocation where = SourceLocation::current());
+  // `relative_to sled` on a segment output request: the quantity relative to a frame, in its axes.
+  Statement& RelativeTo(Value frame, SourceLocation where = SourceLocation::current());
   Statement& Is(Value value, SourceLocation where = SourceLocation::current());
   // `= value` (call again for `= a, b, c`).
   Statement& Equals(Value value);

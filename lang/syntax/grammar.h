@@ -9,7 +9,8 @@
 //   row        = sum "->" sum {"->" sum}               (starts with a number, `(` or `-`)
 //   header     = keyword [target] {clause} ["=" values] [block] end
 //   target     = path | string
-//   clause     = ("on" | "with" | "at" | "as" | "filter") value | ":" value
+//   clause     = ("on" | "with" | "at" | "as" | "filter" | "relative_to" | "expressed_in") value
+//              | ":" value
 //   values     = value {"," value}
 //   block      = "{" ws { item ws } "}"
 //   value      = arrow
@@ -56,7 +57,10 @@ struct kw_with : keyword< 'w', 'i', 't', 'h' > {};
 struct kw_at : keyword< 'a', 't' > {};
 struct kw_as : keyword< 'a', 's' > {};
 struct kw_filter : keyword< 'f', 'i', 'l', 't', 'e', 'r' > {};
-struct clause_word : sor< kw_on, kw_with, kw_at, kw_as, kw_filter > {};
+struct kw_relative_to : keyword< 'r', 'e', 'l', 'a', 't', 'i', 'v', 'e', '_', 't', 'o' > {};
+struct kw_expressed_in : keyword< 'e', 'x', 'p', 'r', 'e', 's', 's', 'e', 'd', '_', 'i', 'n' > {};
+struct clause_word
+    : sor< kw_on, kw_with, kw_at, kw_as, kw_filter, kw_relative_to, kw_expressed_in > {};
 struct reserved : sor< kw_true, kw_false, clause_word > {};
 
 struct name : identifier {};
