@@ -112,14 +112,14 @@ void Lowering::AddOutput(const Output& output) {
   if (!mirror_twin.empty()) model_.output_mirrored.push_back(output.mirrored ? 1 : 0);
   model_.output_filter_class.push_back(output.filter_class);
   model_.output_filter_iso.push_back(output.iso_filter ? 1 : 0);
+  // The arrays of frames start with the first output that has one (the earlier are absolute).
+  const std::size_t earlier = model_.output_kind.size() - 1;
   if (output.frame && model_.output_relative.empty()) {
-    // The first relative output: the earlier ones are absolute.
-    const std::size_t earlier = model_.output_kind.size() - 1;
-    model_.output_relative.assign(earlier, 0);
-    model_.output_frame.assign(earlier, runtime::FrameRef{});
-    model_.output_frame_mirrored.assign(earlier, 0);
+    model_.output_relative.resize(earlier, 0);
+    model_.output_frame.resize(earlier, runtime::FrameRef{});
+    model_.output_frame_mirrored.resize(earlier, 0);
   }
-  if (!model_.output_relative.empty()) {
+  if (!model_.output_relative.empty() || output.frame) {
     model_.output_relative.push_back(output.frame ? output.frame_mode : 0);
     model_.output_frame.push_back(output.frame.value_or(runtime::FrameRef{}));
     model_.output_frame_mirrored.push_back(output.frame_mirrored ? 1 : 0);

@@ -1,5 +1,5 @@
 // Outputs `relative_to` and `expressed_in` a frame (ATB's KREF) against hand computations: a free
-// body drifting in a straight line seen from a vehicle spinning in place and from a free body
+// body drifting in a straight line seen from a vehicle spun up in place and from a free body
 // spinning about its axis, in gravity-free space, where every motion has a closed form. The
 // expected values are worked out here from the closed-form paths (rotation matrices written out in
 // sines and cosines), not from the runtime's formulas.
@@ -16,10 +16,11 @@ namespace {
 
 using runtime::Vec3;
 
-// A frame spinning at rate w about z through (x0, y0, 0), observing a point moving as p0 + v t:
-// r(t) = Rz(-w t) (p(t) - o). Its derivatives seen from the frame follow by the product rule:
-// d/dt Rz(-w t) = -w [e_z]x Rz(-w t), so r' = Rz(-w t) v - w e_z x r and, v being constant,
-// r'' = -w e_z x Rz(-w t) v - w e_z x r'.
+// A frame turned by theta(t) about z through its origin o, observing a point moving as p0 + v t:
+// r(t) = Rz(-theta) (p(t) - o). Its derivatives seen from the frame follow by the product rule:
+// d/dt Rz(-theta) = -w [e_z]x Rz(-theta) with w = theta', so r' = Rz(-theta) u - w e_z x r (u the
+// point's velocity less the origin's, constant) and r'' = -w e_z x Rz(-theta) u - al e_z x r -
+// w e_z x r' (al = w').
 struct Seen {
   Vec3 position, velocity, acceleration;
 };
@@ -29,17 +30,23 @@ Vec3 RotateZ(double angle, const Vec3& v) {
           std::sin(angle) * v.x() + std::cos(angle) * v.y(), v.z()};
 }
 
-Seen FromSpinningFrame(double w, const Vec3& origin, const Vec3& frame_velocity, const Vec3& p0,
-                       const Vec3& v, double t) {
+struct Turn {
+  double angle, rate, acceleration;
+};
+
+Seen FromTurningFrame(const Turn& turn, const Vec3& origin, const Vec3& frame_velocity,
+                      const Vec3& p0, const Vec3& v, double t) {
   const Vec3 ez = Vec3::UnitZ();
   // The frame's origin moves too (frame_velocity, constant): only v - frame_velocity matters.
   const Vec3 d = p0 + v * t - (origin + frame_velocity * t);
   const Vec3 u = v - frame_velocity;
+  const double w = turn.rate;
   Seen seen;
-  seen.position = RotateZ(-w * t, d);
-  const Vec3 turned_u = RotateZ(-w * t, u);
+  seen.position = RotateZ(-turn.angle, d);
+  const Vec3 turned_u = RotateZ(-turn.angle, u);
   seen.velocity = turned_u - w * ez.cross(seen.position);
-  seen.acceleration = -w * ez.cross(turned_u) - w * ez.cross(seen.velocity);
+  seen.acceleration = -w * ez.cross(turned_u) - turn.acceleration * ez.cross(seen.position) -
+                      w * ez.cross(seen.velocity);
   return seen;
 }
 
@@ -55,15 +62,20 @@ double Time(const runtime::TimeSeries& series, std::size_t row) {
   return series.values[row * series.columns];
 }
 
-constexpr double kSpinVehicle = 3.0;  // rad/s
-constexpr double kSpinBody = -2.0;    // rad/s
+constexpr double kSpinUp = 3.0;     // rad/s^2 of the turntable, from rest
+constexpr double kSpinBody = -2.0;  // rad/s
 
 const char* const kScene = R"(scenario "relative outputs" {
   gravity = (0, 0, 0) m/s^2
   time { end = 600 ms  output_every = 20 ms }
   integrator dopri5 { tolerance = 1e-10 }
-  vehicle turntable { }
-  initial turntable { position = (0.2, -0.1, 0) m  angular_velocity = (0, 0, 3) rad/s }
+  vehicle turntable {
+    position = (0.2, -0.1, 0) m
+    motion = table(time -> acceleration -> angular_acceleration) {
+      0 s -> (0, 0, 0) m/s^2 -> (0, 0, 3) rad/s^2
+      1 s -> (0, 0, 0) m/s^2 -> (0, 0, 3) rad/s^2
+    }
+  }
   body ball {
     segment b { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 }
   }
@@ -101,10 +113,11 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
   double worst = 0;
   for (std::size_t row = 0; row < s.rows(); ++row) {
     const double t = Time(s, row);
+    const Turn turntable{kSpinUp * t * t / 2, kSpinUp * t, kSpinUp};
+    const Turn top{kSpinBody * t, kSpinBody, 0};
     const Seen from_table =
-        FromSpinningFrame(kSpinVehicle, Vec3(0.2, -0.1, 0), Vec3::Zero(), p0 + point, v, t);
-    const Seen from_top =
-        FromSpinningFrame(kSpinBody, Vec3(-0.4, 0.3, 0), Vec3(0, 0.1, 0), p0, v, t);
+        FromTurningFrame(turntable, Vec3(0.2, -0.1, 0), Vec3::Zero(), p0 + point, v, t);
+    const Seen from_top = FromTurningFrame(top, Vec3(-0.4, 0.3, 0), Vec3(0, 0.1, 0), p0, v, t);
     for (int i = 0; i < 3; ++i) {
       const std::string c = xyz[i];
       const std::string table = "ball.b.relative_to.turntable.";
@@ -122,20 +135,21 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
       // Relative to the ground: the absolute position.
       check("ball.b.relative_to.ground.position." + c + " [m]", (p0 + v * t)[i]);
       // The ball does not turn: seen from the turntable it turns backwards at the table's rate,
-      // and the top turns at -2 - 3 rad/s about z, steadily.
-      check(table + "angular_velocity." + c + " [rad/s]", i == 2 ? -kSpinVehicle : 0.0);
-      check("top.t.relative_to.turntable.angular_acceleration." + c + " [rad/s^2]", 0.0);
+      // and the top's rate relative to the table, -2 - 3 t rad/s about z, changes at -3 rad/s^2.
+      check(table + "angular_velocity." + c + " [rad/s]", i == 2 ? -turntable.rate : 0.0);
+      check("top.t.relative_to.turntable.angular_acceleration." + c + " [rad/s^2]",
+            i == 2 ? -kSpinUp : 0.0);
       // Relative to the ground in a turning frame's axes: a point 0.1 m out on the top (turned
       // -2 t) has the centripetal 4 * 0.1 m/s^2 towards the axis, seen in the table's axes
-      // (turned 3 t) at angle -5 t; the ball's velocity in the top's axes is v turned by 2 t.
-      const Vec3 centripetal = RotateZ(-5 * t, Vec3(-0.4, 0, 0));
+      // (turned by its angle); the ball's velocity in the top's axes is v turned by 2 t.
+      const Vec3 centripetal = RotateZ(-turntable.angle + kSpinBody * t, Vec3(-0.4, 0, 0));
       check("top.t.expressed_in.turntable.acceleration." + c + " [m/s^2]", centripetal[i]);
       check("ball.b.expressed_in.top.t.velocity." + c + " [m/s]", RotateZ(2 * t, v)[i]);
       check("top.t.expressed_in.turntable.angular_velocity." + c + " [rad/s]",
             i == 2 ? kSpinBody : 0.0);
     }
-    // Yaw of the ball in the table's axes: -3 t, wrapped to (-pi, pi].
-    const double yaw = std::remainder(-kSpinVehicle * t, 2 * M_PI);
+    // Yaw of the ball in the table's axes: minus the table's angle, wrapped to (-pi, pi].
+    const double yaw = std::remainder(-turntable.angle, 2 * M_PI);
     EXPECT_NEAR(
         std::remainder(Column(s, "ball.b.relative_to.turntable.orientation.yaw [rad]", row) - yaw,
                        2 * M_PI),
@@ -162,9 +176,12 @@ TEST(RelativeOutputs, AreRefusedOnRequestsThatAreNotOfASegment) {
   const Compiled compiled = CompileText(R"(scenario "bad" {
   time { end = 10 ms  output_every = 1 ms }
   body b { segment s { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 } }
-  output { spring_force s relative_to ground  position b.s relative_to nowhere
-           position b.s expressed_in ground
-           velocity b.s relative_to ground expressed_in ground }
+  output {
+    spring_force s relative_to ground
+    position b.s relative_to nowhere
+    position b.s expressed_in ground
+    velocity b.s relative_to ground expressed_in ground
+  }
 })");
   EXPECT_NE(compiled.errors.find("`spring_force` takes no `relative_to` clause"), std::string::npos)
       << compiled.errors;
