@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -143,11 +144,15 @@ struct HarnessCard {
   std::vector<HarnessBeltCard> belts;
 };
 
+// D.5 for a vehicle (NSEG < M <= NSEG + NVEH: the vehicle's own ellipsoid) or an extra one
+// (M >= NGRND: on whatever frame the F.3.b cards that name it put it; `vehicle` is 0).
 struct VehicleEllipsoidCard {
   std::uint32_t line = 0;
   int vehicle = 0;  // 1-based among the vehicles
+  int number = 0;   // M
   Vec3 semi_axes{}, center{}, orientation{};
   double degree = 2;
+  SourceRange where;  // of M
 };
 
 struct SpringCard {
@@ -172,6 +177,8 @@ struct ContactCard {
   std::uint32_t line = 0;
   bool with_plane = false;  // F.1 (plane) or F.3 (segment)
   Ref segment, other, force, friction;
+  // F.3: MS_SEG(1) and MS_SEG(3), the ellipsoids of `segment` and `other` (0: the frame's own).
+  Ref ellipsoid, other_ellipsoid;
   bool output = false;
 };
 
@@ -186,11 +193,25 @@ struct OrientationCard {
   Vec3 angles{}, angular_velocity{};
 };
 
+// H.1 to H.9: one time history. `frame` is KREF's frame when it names one; without it the
+// default of the card: H.1 and H.4 in the segment's own axes, the relative ones (H.2, H.3, H.5,
+// H.6) relative to the primary vehicle.
 struct OutputCard {
   std::uint32_t line = 0;
-  enum class Kind { kAcceleration, kVelocity, kPosition } kind = Kind::kAcceleration;
-  Ref segment;
+  enum class Kind {
+    kAcceleration,         // H.1: point total acceleration, in KREF's axes
+    kVelocity,             // H.2: point velocity relative to KREF
+    kPosition,             // H.3: point displacement relative to KREF
+    kAngularAcceleration,  // H.4: in KREF's axes
+    kAngularVelocity,      // H.5: relative to KREF
+    kOrientation,          // H.6: relative to KREF
+    kJointParameters,      // H.7: the joint's angles and torques
+    kJointForce,           // H.9: joint force and torque
+  } kind = Kind::kAcceleration;
+  Ref segment;  // MSG: the segment (H.7 and H.9: the joint)
   Vec3 point{};
+  Ref reference;  // KREF
+  std::optional<DeckFrame> frame;
 };
 
 struct Deck {
@@ -211,6 +232,7 @@ struct Deck {
   std::vector<PlaneCard> planes;
   std::vector<BeltCard> belts;
   std::vector<VehicleEllipsoidCard> vehicle_ellipsoids;
+  std::vector<VehicleEllipsoidCard> extra_ellipsoids;
   std::uint32_t symmetry_line = 0;
   std::vector<Ref> symmetry;  // per segment
   std::vector<SpringCard> springs;

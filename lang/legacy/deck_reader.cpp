@@ -1,6 +1,7 @@
 #include "lang/legacy/deck_reader.h"
 
 #include "lang/legacy/deck_fields.h"
+#include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
 
 #include <algorithm>
@@ -20,11 +21,12 @@ constexpr int kMaxEllipsoids = 20;
 constexpr int kMaxSprings = 20;
 constexpr int kMaxFunction = 98;
 constexpr int kMaxVehicles = 6;
-constexpr int kMaxOutputs = 20;
 constexpr int kMaxContacts = 200;
 constexpr int kMaxHarnesses = 5;
 constexpr int kMaxConstraints = 12;
 constexpr int kMaxAirbags = 5;
+// MAXELP = MAXSEG + MAXXELP: the largest D.5 ellipsoid number (V5.3.1 MODULE_STANDARD).
+constexpr int kMaxEllipsoidNumber = kMaxSegments + kMaxEllipsoids;
 
 std::string Upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -45,13 +47,14 @@ class DeckReader : public DeckFields {
     if (unknown_layout_) return std::move(deck_);  // F.5 cards of unknown length follow
     if (!r_.truncated()) ReadF();
     if (!r_.truncated()) ReadG();
-    if (!r_.truncated()) ReadH();
+    if (!r_.truncated()) ReadOutputRequests(*this, bags_);
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
-      const Card card = r_.Next("after H.3", {"(A80)"});
+      const Card card = r_.Next("after H.10", {"(A80)"});
       r_.Report(DiagnosticKind::kDeckExtraCards, card, 1, 80,
-                fmt::format("line {} follows the last card sled reads (H.3)", card.line),
-                "the layouts of cards H.4 to H.11 are not documented; remove these output "
-                "requests and add them to the scenario's `output` block by hand");
+                fmt::format("line {} follows the last card ATB V.3 reads (H.10; H.11 only with "
+                            "joint actuators)",
+                            card.line),
+                "remove the lines after the H.10 cards, or check the H cards' counts");
     }
     return std::move(deck_);
   }
@@ -538,13 +541,21 @@ class DeckReader : public DeckFields {
       segment.degree = exponents[0];
       segment.ellipsoid_line = card.line;
     } else if (m > segments && m <= segments + vehicles) {
-      deck_.vehicle_ellipsoids.push_back(
-          {card.line, m - segments, semi_axes, center, orientation, exponents[0]});
+      deck_.vehicle_ellipsoids.push_back({card.line, m - segments, m, semi_axes, center,
+                                          orientation, exponents[0], r_.Range(card, 1, 6)});
+    } else if (m >= segments + vehicles + bags_ + 1 && m <= kMaxEllipsoidNumber) {
+      // At or above NGRND: an extra ellipsoid, on the frames F.3.b's MS_SEG(1) or (3) name it.
+      deck_.extra_ellipsoids.push_back(
+          {card.line, 0, m, semi_axes, center, orientation, exponents[0], r_.Range(card, 1, 6)});
     } else {
-      Refuse(card, 1, 6, fmt::format("ellipsoid number {} (an airbag or ground ellipsoid)", m),
-             fmt::format("numbers 1 to {} replace a segment's ellipsoid and {} to {} are fixed "
-                         "in a vehicle; add ground ellipsoids by hand",
-                         segments, segments + 1, segments + vehicles));
+      Invalid(card, 1, 6,
+              m <= 0 || m > kMaxEllipsoidNumber
+                  ? fmt::format("ellipsoid number {} (ATB stops: STOP 63)", m)
+                  : fmt::format("ellipsoid number {} is an airbag's (ATB stops: STOP 64)", m),
+              fmt::format("numbers 1 to {} replace a segment's ellipsoid, {} to {} a vehicle's, "
+                          "and {} to {} are extra ellipsoids that F.3.b cards place",
+                          segments, segments + 1, segments + vehicles,
+                          segments + vehicles + bags_ + 1, kMaxEllipsoidNumber));
     }
   }
 
@@ -757,7 +768,9 @@ class DeckReader : public DeckFields {
       contact.segment = Reference(card, 5, 8, "MS_SEG(1), the segment");
     } else {
       contact.segment = Ref{owner, r_.Range(card, 1, 4), card.label};
+      contact.ellipsoid = Reference(card, 5, 8, "MS_SEG(1), the segment's ellipsoid");
       contact.other = Reference(card, 9, 12, "MS_SEG(2), the other segment");
+      contact.other_ellipsoid = Reference(card, 13, 16, "MS_SEG(3), the other's ellipsoid");
     }
     ReadFunctionNumbers(card, 17, &contact.force, &contact.friction);
     contact.output = r_.Integer(card, 41, 44, "NOUT, the output flag") != 0;
@@ -873,43 +886,6 @@ class DeckReader : public DeckFields {
             "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or leave "
             "these columns blank");
     return Vec3{};
-  }
-
-  // --- H: output requests ------------------------------------------------------------------
-  void ReadH() {
-    constexpr OutputCard::Kind kKinds[] = {
-        OutputCard::Kind::kAcceleration, OutputCard::Kind::kVelocity, OutputCard::Kind::kPosition};
-    for (int k = 0; k < 3 && !r_.truncated(); ++k) {
-      if (r_.OnlyBlankLinesRemain()) return;  // decks may end before the H cards
-      const Card head = r_.Next(fmt::format("H.{}.a", k + 1), {"(I6,2I3,3F12.6,I6)"});
-      const int count = Count(head, 1, 6, "KSG, the number of requests", kMaxOutputs);
-      if (count >= 1) ReadOutput(head, kKinds[k], 7, 10);
-      if (count <= 1) {
-        r_.Next(fmt::format("H.{} (dummy)", k + 1), {"(I2)"});
-        continue;
-      }
-      for (int i = 1; i < count; ++i) {
-        ReadOutput(r_.Next(fmt::format("H.{}.b (request {})", k + 1, i + 1), {"(I9,I3,3F12.6,I6)"}),
-                   kKinds[k], 1, 10);
-      }
-    }
-  }
-
-  void ReadOutput(const Card& card, OutputCard::Kind kind, int kref_first, int msg_first) {
-    OutputCard output;
-    output.line = card.line;
-    output.kind = kind;
-    const int kref_last = msg_first - 1;
-    const int kref = r_.Integer(card, kref_first, kref_last, "KREF, the reference segment");
-    output.segment = Reference(card, msg_first, msg_first + 2, "MSG, the segment");
-    output.point = Triple(card, 13, 12, "the point on the segment");
-    r_.Integer(card, 49, 54, "NODPR");
-    if (kref != 0) {
-      Refuse(card, kref_first, kref_last, fmt::format("KREF is {}: relative to a segment", kref),
-             "sled's point outputs are in the ground frame");
-      return;
-    }
-    deck_.outputs.push_back(std::move(output));
   }
 
   bool approximate_airbags_;

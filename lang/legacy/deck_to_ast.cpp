@@ -168,9 +168,9 @@ std::string NameOf(std::string_view label, std::string_view fallback, std::set<s
   while (!name.empty() && name.back() == '_') name.pop_back();
   if (name.size() > 24) name.resize(24);
   while (!name.empty() && name.back() == '_') name.pop_back();
-  static const std::set<std::string> kReserved = {"at",   "on",    "with",    "as",    "filter",
-                                                  "true", "false", "ground",  "x",     "y",
-                                                  "z",    "body",  "segment", "joint", "function"};
+  static const std::set<std::string> kReserved = {
+      "at", "on", "with", "as",      "filter", "true",     "false",       "ground",      "x",
+      "y",  "z",  "body", "segment", "joint",  "function", "relative_to", "expressed_in"};
   if (name.empty()) name = std::string(fallback);
   if (std::isdigit(static_cast<unsigned char>(name[0]))) name = std::string(fallback) + "_" + name;
   if (kReserved.count(name) != 0) name += "_";
@@ -269,6 +269,17 @@ class Mapper {
       return {};
     }
     return body_ + "." + segments_[static_cast<std::size_t>(ref.number - 1)];
+  }
+
+  // A joint of the body by deck number (B.3 order), or empty after reporting a bad number.
+  std::string Joint(const Ref& ref) {
+    if (ref.number < 1 || ref.number > static_cast<int>(joints_.size())) {
+      Report(DiagnosticKind::kDeckCountOutOfRange, ref,
+             fmt::format("card {}: joint {} does not exist", ref.card, ref.number),
+             fmt::format("joints are numbered 1 to {}", joints_.size()));
+      return {};
+    }
+    return body_ + "." + joints_[static_cast<std::size_t>(ref.number - 1)];
   }
 
   const FunctionCard* Function(const Ref& ref) {
@@ -483,27 +494,21 @@ class Mapper {
       Add(plane, std::move(corners));
       scenario.statements.push_back(std::move(plane));
     }
-    std::set<std::string> taken_local;
     for (const VehicleEllipsoidCard& card : deck_.vehicle_ellipsoids) {
       const std::string& vehicle = vehicles_[static_cast<std::size_t>(card.vehicle - 1)];
-      ast::Statement ellipsoid =
-          Declaration("ellipsoid", Path(NameOf(vehicle + "_ellipsoid", "ellipsoid", taken_)),
-                      CardComment("D.5", card.line));
-      ellipsoid.clauses.push_back({"on", {}, Path(vehicle)});
-      Add(ellipsoid, Attribute("semi_axes", Vector(card.semi_axes, L)));
-      if (!IsZero(card.center)) Add(ellipsoid, Attribute("center", Vector(card.center, L)));
-      if (!IsZero(card.orientation))
-        Add(ellipsoid, Attribute("orientation", Vector(card.orientation, "deg")));
-      if (card.degree != 2) Add(ellipsoid, Attribute("degree", Number(card.degree)));
-      scenario.statements.push_back(std::move(ellipsoid));
+      const std::string name = NameOf(vehicle + "_ellipsoid", "ellipsoid", taken_);
+      vehicle_ellipsoid_names_[card.vehicle] = name;  // a later card replaces an earlier one
+      scenario.statements.push_back(EllipsoidOn(card, name, vehicle));
     }
+    std::vector<ast::Statement> contacts;
     for (const ContactCard& card : deck_.contacts) {
-      const std::string segment = Segment(card.segment, "segment");
-      std::string other;
+      std::string segment, other;
       if (card.with_plane) {
+        segment = Segment(card.segment, "segment");
         other = planes_[static_cast<std::size_t>(card.other.number - 1)];
       } else {
-        other = Segment(card.other, "segment");
+        segment = Surface(card.segment, card.ellipsoid, scenario);
+        other = Surface(card.other, card.other_ellipsoid, scenario);
       }
       auto force = FunctionFor(card.force, Use::kContact);
       const auto friction = Friction(card.friction);
@@ -514,8 +519,84 @@ class Mapper {
       Add(contact, Attribute("force", std::move(*force)));
       if (*friction != 0) Add(contact, Attribute("friction", Number(*friction)));
       if (card.output) contact_outputs_.emplace_back(segment, other);
-      scenario.statements.push_back(std::move(contact));
+      contacts.push_back(std::move(contact));
     }
+    for (const VehicleEllipsoidCard& card : deck_.extra_ellipsoids) {
+      if (placed_extras_.count(card.number) == 0) {
+        Report(DiagnosticKind::kDeckIgnoredField, Ref{card.number, card.where, "D.5"},
+               fmt::format("extra ellipsoid {} (D.5, line {}) is named by no F.3.b card, so ATB "
+                           "puts it on no segment; it is left out",
+                           card.number, card.line),
+               "name it in MS_SEG(1) or MS_SEG(3) of an F.3.b card, or remove the D.5 card");
+      }
+    }
+    for (ast::Statement& contact : contacts) scenario.statements.push_back(std::move(contact));
+  }
+
+  ast::Statement EllipsoidOn(const VehicleEllipsoidCard& card, const std::string& name,
+                             const std::string& frame) {
+    ast::Statement ellipsoid = Declaration("ellipsoid", Path(name), CardComment("D.5", card.line));
+    ellipsoid.clauses.push_back({"on", {}, Path(frame)});
+    Add(ellipsoid, Attribute("semi_axes", Vector(card.semi_axes, L)));
+    if (!IsZero(card.center)) Add(ellipsoid, Attribute("center", Vector(card.center, L)));
+    if (!IsZero(card.orientation))
+      Add(ellipsoid, Attribute("orientation", Vector(card.orientation, "deg")));
+    if (card.degree != 2) Add(ellipsoid, Attribute("degree", Number(card.degree)));
+    return ellipsoid;
+  }
+
+  // The surface of an F.3.b side: frame `frame` (a body segment or a vehicle) with ellipsoid
+  // `ellipsoid` (0 or the frame's own number: the frame's own; at or above NGRND an extra D.5
+  // ellipsoid, declared on this frame the first time a card puts it there). Empty after a report.
+  std::string Surface(const Ref& frame, const Ref& ellipsoid, ast::Block& scenario) {
+    const int segments = static_cast<int>(segments_.size());
+    const int vehicles = static_cast<int>(vehicles_.size());
+    std::string frame_name;
+    if (frame.number >= 1 && frame.number <= segments) {
+      frame_name = body_ + "." + segments_[static_cast<std::size_t>(frame.number - 1)];
+    } else if (frame.number > segments && frame.number <= segments + vehicles) {
+      frame_name = vehicles_[static_cast<std::size_t>(frame.number - segments - 1)];
+    } else {
+      Report(DiagnosticKind::kDeckCountOutOfRange, frame,
+             fmt::format("card {}: segment {} does not exist", frame.card, frame.number),
+             fmt::format("body segments are 1 to {} and vehicles {} to {}", segments, segments + 1,
+                         segments + vehicles));
+      return {};
+    }
+    const bool vehicle = frame.number > segments;
+    if (ellipsoid.number == 0 || ellipsoid.number == frame.number) {
+      if (!vehicle) return frame_name;
+      const auto found = vehicle_ellipsoid_names_.find(frame.number - segments);
+      if (found != vehicle_ellipsoid_names_.end()) return found->second;
+      Report(DiagnosticKind::kDeckInvalidValue, frame,
+             fmt::format("card {}: vehicle segment {} has no ellipsoid", frame.card, frame.number),
+             fmt::format("give it one with a D.5 card numbered {}", frame.number));
+      return {};
+    }
+    // A later D.5 card of the same number replaces an earlier one, as in ATB.
+    for (auto it = deck_.extra_ellipsoids.rbegin(); it != deck_.extra_ellipsoids.rend(); ++it) {
+      const VehicleEllipsoidCard& card = *it;
+      if (card.number != ellipsoid.number) continue;
+      auto key = std::make_pair(card.number, frame_name);
+      auto found = extra_names_.find(key);
+      if (found == extra_names_.end()) {
+        const std::string name =
+            NameOf(fmt::format("{}_ellipsoid_{}", frame_name.substr(frame_name.rfind('.') + 1),
+                               card.number),
+                   "ellipsoid", taken_);
+        found = extra_names_.emplace(key, name).first;
+        placed_extras_.insert(card.number);
+        scenario.statements.push_back(EllipsoidOn(card, name, frame_name));
+      }
+      return found->second;
+    }
+    Report(DiagnosticKind::kDeckInvalidValue, ellipsoid,
+           fmt::format("card {}: ellipsoid {} is neither segment {}'s own nor an extra D.5 "
+                       "ellipsoid",
+                       ellipsoid.card, ellipsoid.number, frame.number),
+           "leave the field 0 for the segment's own ellipsoid, or give an extra ellipsoid's "
+           "number (a D.5 card's M at or above NGRND)");
+    return {};
   }
 
   void MapRestraints(ast::Block& scenario) {
@@ -890,20 +971,69 @@ class Mapper {
       Add(initial, Attribute("angular_velocity", Vector(card.angular_velocity, "deg/" + T)));
   }
 
+  // One H request. KREF 0 is each card's default: H.1 and H.4 in the segment's own axes (sled's
+  // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.
+  void MapOutput(const OutputCard& card, ast::Statement& block) {
+    using Kind = OutputCard::Kind;
+    auto request = [&](const char* keyword, std::string target) {
+      ast::Statement statement;
+      statement.keyword = keyword;
+      statement.target = Path(std::move(target));
+      return statement;
+    };
+    if (card.kind == Kind::kJointParameters || card.kind == Kind::kJointForce) {
+      const std::string joint = Joint(card.segment);
+      if (joint.empty()) return;
+      const bool parameters = card.kind == Kind::kJointParameters;
+      if (parameters) {
+        Report(DiagnosticKind::kDeckApproximated, card.segment,
+               fmt::format("card {}: ATB's H.7 lists seven joint parameters of joint {}; sled "
+                           "outputs its angles and torques (`joint_angle`, `joint_torque`)",
+                           card.segment.card, card.segment.number),
+               "docs/legacy.md, H cards");
+      }
+      Add(block, request(parameters ? "joint_angle" : "joint_force", joint));
+      Add(block, request("joint_torque", joint));
+      return;
+    }
+    const std::string segment = Segment(card.segment, "segment");
+    if (segment.empty()) return;
+    static constexpr const char* kKeywords[] = {"acceleration",     "velocity",
+                                                "position",         "angular_acceleration",
+                                                "angular_velocity", "orientation"};
+    ast::Statement statement = request(kKeywords[static_cast<int>(card.kind)], segment);
+    const bool point = card.kind == Kind::kAcceleration || card.kind == Kind::kVelocity ||
+                       card.kind == Kind::kPosition;
+    if (point) statement.clauses.push_back({"at", {}, Vector(card.point, L)});
+    const bool in_axes =
+        card.kind == Kind::kAcceleration || card.kind == Kind::kAngularAcceleration;
+    if (in_axes) {
+      if (card.frame)
+        statement.clauses.push_back({"expressed_in", {}, Path(FrameName(*card.frame))});
+    } else {
+      const std::string frame = card.frame ? FrameName(*card.frame) : Primary();
+      statement.clauses.push_back({"relative_to", {}, Path(frame)});
+      if (card.kind == Kind::kVelocity && card.frame &&
+          card.frame->kind == DeckFrame::Kind::kSegment) {
+        // ATB's H.2 is R^T (v_p - v_F); seen from a turning frame sled also takes away the
+        // frame's turning, w_F x r (the deck's vehicles only translate: there it is exact).
+        Report(DiagnosticKind::kDeckApproximated, card.reference,
+               fmt::format("card {}: KREF {} is a body segment, which turns: ATB's relative "
+                           "velocity is the difference of the two velocities in its axes, "
+                           "sled's the velocity seen from it, which differs by the segment's "
+                           "angular velocity times the distance between the point and it",
+                           card.reference.card, card.reference.number),
+               "for ATB's quantity, request `velocity ... expressed_in` of both and subtract");
+      }
+    }
+    Add(block, std::move(statement));
+  }
+
   void MapOutputs(ast::Block& scenario) {
     ast::Statement output =
-        Declaration("output", Path("x"), "cards H.1 to H.3, and NOUT of the F cards");
+        Declaration("output", Path("x"), "cards H.1 to H.9, and NOUT of the F cards");
     output.target.reset();
-    static constexpr const char* kKinds[] = {"acceleration", "velocity", "position"};
-    for (const OutputCard& card : deck_.outputs) {
-      const std::string segment = Segment(card.segment, "segment");
-      if (segment.empty()) continue;
-      ast::Statement request;
-      request.keyword = kKinds[static_cast<int>(card.kind)];
-      request.target = Path(segment);
-      request.clauses.push_back({"at", {}, Vector(card.point, L)});
-      Add(output, std::move(request));
-    }
+    for (const OutputCard& card : deck_.outputs) MapOutput(card, output);
     for (const auto& [a, b] : contact_outputs_) {
       ast::Statement request;
       request.keyword = "contact_force";
@@ -933,6 +1063,9 @@ class Mapper {
   std::set<std::string> body_names_;
   std::string body_;
   std::vector<std::string> segments_, joints_, vehicles_, planes_, belts_;
+  std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
+  std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
+  std::set<int> placed_extras_;
   std::map<std::pair<int, int>, std::string> function_names_;
   std::vector<FunctionUse> uses_;
   std::set<int> used_;
