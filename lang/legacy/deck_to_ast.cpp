@@ -975,10 +975,10 @@ class Mapper {
   // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.
   void MapOutput(const OutputCard& card, ast::Statement& block) {
     using Kind = OutputCard::Kind;
-    auto request = [&](const char* keyword, std::string target) {
+    auto request = [&](const char* keyword, const std::string& target) {
       ast::Statement statement;
       statement.keyword = keyword;
-      statement.target = Path(std::move(target));
+      statement.target = Path(target);
       return statement;
     };
     if (card.kind == Kind::kJointParameters || card.kind == Kind::kJointForce) {

@@ -118,10 +118,10 @@ class OutputReader {
     if (card.line == 0) return;
     const bool list_directed = card.item_count > 0;
     if (list_directed) return;  // a `.lin` READ stops after the count
-    const auto from = static_cast<std::size_t>(first - 1);
+    const auto from = static_cast<std::size_t>(first) - 1;
     if (card.text.size() <= from) return;
-    const std::string_view rest =
-        card.text.substr(from, static_cast<std::size_t>(last - first + 1));
+    const std::string_view rest = card.text.substr(
+        from, static_cast<std::size_t>(last) - static_cast<std::size_t>(first) + 1);
     if (rest.find_first_not_of(" 0.") == std::string_view::npos) return;
     f_.Ignored(card, first, last, fmt::format("the count is 0, so ATB ignores {}", what),
                "leave these columns blank, or set the count");
