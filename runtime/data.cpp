@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "runtime/constraints.h"
+#include "runtime/contact/contact_forces.h"
 #include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
@@ -53,6 +54,7 @@ Data MakeData(const Model& model) {
   SizeAirbagState(model, data);
   SetUpConstraints(model, data);
   SetUpBelts(model, data);
+  SetUpContacts(model, data);
   return data;
 }
 

@@ -30,6 +30,17 @@ double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, do
   return history.max_force * std::pow((x - history.permanent) / range, history.exponent);
 }
 
+double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, double x,
+                             const LoadingHistory& history) {
+  if (!HasHysteresis(functions, id) || x >= history.max_deflection) {
+    return FunctionSlope(functions, id, x);
+  }
+  const double range = history.max_deflection - history.permanent;
+  if (x <= history.permanent || range <= 0) return 0.0;
+  const double fraction = (x - history.permanent) / range;
+  return history.max_force * history.exponent * std::pow(fraction, history.exponent - 1) / range;
+}
+
 void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
                           LoadingHistory& history) {
   if (id < 0 || !(x > history.max_deflection)) return;

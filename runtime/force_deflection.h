@@ -14,8 +14,9 @@
 // F_max (x_max - x_p) / (n + 1), exactly (1 - G) E, so a full unloading dissipates G E; with
 // only p given the curve is the straight line (n = 1). G = p = 0: elastic, unloading along f.
 //
-// The history (x_max and the curve) changes only when an integration step is accepted, so each
-// evaluation inside a step is a function of the state.
+// The history (x_max and the curve) changes only at events, where the deflection turns while it
+// loads (runtime/system.h, runtime/restraint/belt_events.h), so every evaluation is a function
+// of the state and the events so far.
 #pragma once
 
 #include <cstdint>
@@ -35,8 +36,12 @@ struct LoadingHistory {
 double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, double x,
                              const LoadingHistory& history);
 
-// After an accepted step at deflection x: a new largest deflection loads further and moves the
-// unloading curve.
+// dF/dx under the history.
+double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, double x,
+                             const LoadingHistory& history);
+
+// At a deflection x that turns (an event, or the start): a new largest deflection loads further
+// and moves the unloading curve.
 void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
                           LoadingHistory& history);
 

@@ -32,6 +32,33 @@ double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double 
   return 0.0;
 }
 
+double FunctionSlope(const FunctionTable& functions, std::int32_t id, double x) {
+  if (id < 0) return 0.0;
+  const auto f = static_cast<std::size_t>(id);
+  const auto first = static_cast<std::size_t>(functions.first[f]);
+  const auto count = static_cast<std::size_t>(functions.count[f]);
+  switch (functions.kind[f]) {
+    case FunctionTable::Kind::kConstant:
+      return 0.0;
+    case FunctionTable::Kind::kPolynomial: {
+      double value = 0.0;
+      for (std::size_t k = count; k-- > 1;) {
+        value = value * x + static_cast<double>(k) * functions.coefficients[first + k];
+      }
+      return value;
+    }
+    case FunctionTable::Kind::kTable: {
+      const double* xs = functions.points_x.data() + first;
+      const double* ys = functions.points_y.data() + first;
+      if (count == 1) return 0.0;
+      const double* upper = std::upper_bound(xs + 1, xs + count - 1, x);
+      const std::size_t i = static_cast<std::size_t>(upper - xs) - 1;
+      return (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i]);
+    }
+  }
+  return 0.0;
+}
+
 double IntegrateFunction(const FunctionTable& functions, std::int32_t id, double x) {
   if (id < 0) return 0.0;
   const auto f = static_cast<std::size_t>(id);

@@ -8,6 +8,9 @@ namespace sled::runtime {
 // f(x). Tables interpolate linearly and extend their end slopes beyond the last rows.
 double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double x);
 
+// df/dx (a table's slope on the piece that holds x, the right one at a row).
+double FunctionSlope(const FunctionTable& functions, std::int32_t id, double x);
+
 // The integral of f from 0 to x (a work or an energy when f is a force of a deflection); exact
 // for every form.
 double IntegrateFunction(const FunctionTable& functions, std::int32_t id, double x);

@@ -36,7 +36,18 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     if (model.contacts.pair_impulse[k]) events_.push_back({EventKind::kContactImpulse, k});
+    if (data.contacts.hysteresis[k]) events_.push_back({EventKind::kContactTurn, k});
   }
+  for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
+    const auto f = static_cast<std::size_t>(model.contacts.pair_function[k]);
+    watches_tables_ = watches_tables_ || model.functions.kind[f] == FunctionTable::Kind::kTable;
+  }
+  for (std::size_t b = 0; b < model.belts.size(); ++b) {
+    const auto f = static_cast<std::size_t>(model.belts.function[b]);
+    watches_tables_ = watches_tables_ || model.functions.kind[f] == FunctionTable::Kind::kTable;
+  }
+  belt_events_ = BeltEvents(model, data);
+  for (std::size_t k = 0; k < belt_events_.size(); ++k) events_.push_back({EventKind::kBelt, k});
   const AirbagTable& bags = model.airbags;
   for (std::size_t b = 0; b < bags.size(); ++b) {
     events_.push_back({EventKind::kAirbagFull, b});
@@ -177,10 +188,15 @@ void MultibodySystem::ProjectState(double t, std::span<double> y) {
 }
 
 void MultibodySystem::CommitStep(double t, std::span<const double> y) {
-  Load(t, y);  // (forgets the last evaluation: the histories change)
-  CommitContactHistory(model_, data_);
-  // Belts: the webbing distribution and loading histories of the accepted step.
-  CommitBelts(model_, data_);
+  if (!watches_tables_) return;
+  Load(t, y);
+  ComputeKinematics(model_, data_);
+  PlaceContactSurfaces(model_, data_);
+  WatchContactTables(model_, data_);
+  if (model_.belts.size() > 0) {
+    EvaluateBelts(model_, data_);
+    WatchBeltTables(model_, data_);
+  }
 }
 
 std::uint8_t MultibodySystem::LockableAxes(std::size_t s) const {
@@ -220,9 +236,23 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
 
 void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {
   Evaluate(t, y);
+  if (!belt_events_.empty()) UpdateBeltRates(model_, data_);
   for (std::size_t k = 0; k < events_.size(); ++k) {
     if (events_[k].kind == EventKind::kContactImpulse) {
       g[k] = data_.contacts.gap[events_[k].segment];  // > 0 while the surfaces are apart
+      continue;
+    }
+    if (events_[k].kind == EventKind::kBelt) {
+      g[k] = BeltEventFunction(model_, data_, belt_events_[events_[k].segment]);
+      continue;
+    }
+    if (events_[k].kind == EventKind::kContactTurn) {
+      // The deflection rate while the pair loads beyond its largest deflection (it falls through
+      // zero where the deflection turns); 1 otherwise, when nothing can turn the history.
+      const std::size_t pair = events_[k].segment;
+      const ContactState& contacts = data_.contacts;
+      g[k] = contacts.deflection[pair] > contacts.history[pair].max_deflection ? contacts.rate[pair]
+                                                                               : 1.0;
       continue;
     }
     if (events_[k].kind == EventKind::kAirbagFull) {
@@ -262,6 +292,8 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
         break;
       }
       case EventKind::kContactImpulse:
+      case EventKind::kContactTurn:
+      case EventKind::kBelt:
       case EventKind::kAirbagFull:
       case EventKind::kAirbagInflow:
         break;
@@ -328,6 +360,24 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     // Just past the event's time (which it may have been located a hair before).
     data_.airbags.inflow_phase[events_[k].segment] =
         AirbagInflowPhase(model_, events_[k].segment, std::max(t, events_[k].time));
+    return EventEffect::kModeChanged;
+  }
+  if (events_[k].kind == EventKind::kBelt) {
+    if (direction < 0 && Evaluate(t, y)) {
+      HandleBeltEvent(model_, data_, belt_events_[events_[k].segment], direction);
+      Invalidate();
+    }
+    return EventEffect::kModeChanged;
+  }
+  if (events_[k].kind == EventKind::kContactTurn) {
+    if (direction < 0 && Evaluate(t, y)) {
+      TurnContactHistory(model_, data_, events_[k].segment);
+      Invalidate();
+    }
+    return EventEffect::kModeChanged;
+  }
+  if (events_[k].kind == EventKind::kContactImpulse && direction > 0) {
+    data_.contacts.engaged[events_[k].segment] = 0;  // apart: the next touch is an impact
     return EventEffect::kModeChanged;
   }
   Load(t, y);
@@ -398,6 +448,8 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
       break;
     }
     case EventKind::kContactImpulse:
+    case EventKind::kContactTurn:
+    case EventKind::kBelt:
     case EventKind::kAirbagFull:
     case EventKind::kAirbagInflow:
       break;

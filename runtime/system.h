@@ -10,6 +10,7 @@
 #include "runtime/data.h"
 #include "runtime/integrate/ode.h"
 #include "runtime/multibody_jacobian.h"
+#include "runtime/restraint/belt_events.h"
 
 namespace sled::runtime {
 
@@ -28,8 +29,8 @@ class MultibodySystem : public OdeSystem {
   // Unit quaternions and loop constraints: y moved back onto its manifold (by the drift only).
   void Project(double t, std::span<double> y) override { ProjectState(t, y); }
   void ProjectState(double t, std::span<double> y);
-  // The load histories of an accepted step at (t, y): contacts' largest deflections and impulse
-  // engagement, belts' webbing distribution and loading histories.
+  // After an accepted step: only watches the tables of contacts and belts for arguments past
+  // their rows (runtime/table_range.h), a report; every history changes at events.
   void CommitStep(double t, std::span<const double> y) override;
   std::string FailureReason() const override;
 
@@ -52,10 +53,23 @@ class MultibodySystem : public OdeSystem {
   // kAirbagFull (an airbag's envelope becomes full, or stops being full) and kAirbagInflow (its
   // inflator starts or stops at `time`) switch the bag's mode where its gas equations change,
   // so no step straddles the jump in their rates.
-  enum class EventKind { kStop, kTwistStop, kLock, kContactImpulse, kAirbagFull, kAirbagInflow };
+  // kContactTurn: a hysteretic contact pair's deflection turns while it loads (its largest
+  // deflection, and with it the unloading curve, is set there). kBelt: a belt's junction sticks
+  // or slips, a wrap re-anchors, a span's strain turns (runtime/restraint/belt_events.h).
+  enum class EventKind {
+    kStop,
+    kTwistStop,
+    kLock,
+    kContactImpulse,
+    kContactTurn,
+    kBelt,
+    kAirbagFull,
+    kAirbagInflow
+  };
   struct Event {
     EventKind kind;
-    std::size_t segment;  // the joint's (child) segment; for kContactImpulse the contact pair;
+    std::size_t segment;  // the joint's (child) segment; for the contact events the pair; for
+                          // kBelt the index into belt_events_;
                           // for the airbag events the bag
     double time = 0.0;    // kAirbagInflow
   };
@@ -86,6 +100,8 @@ class MultibodySystem : public OdeSystem {
   double evaluated_t_ = 0.0;
   std::vector<double> evaluated_y_;
   std::vector<Event> events_;
+  std::vector<BeltEvent> belt_events_;
+  bool watches_tables_ = false;                 // some contact or belt has a tabulated function
   std::vector<double> saved_v_;                 // scratch for UnitResponse
   std::vector<double> event_v_;                 // velocities before an event's impulse
   std::vector<std::vector<double>> responses_;  // up to six unit responses, nv each

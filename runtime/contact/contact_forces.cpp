@@ -139,6 +139,7 @@ void AccumulateContactForces(const Model& model, Data& data) {
       state.deflection[k] = 0.0;
       state.normal_force[k] = 0.0;
       state.force[k].setZero();
+      state.rate[k] = 0.0;
       continue;
     }
     // Relative motion of the material points at the contact point: the deflection rate and
@@ -164,6 +165,11 @@ void AccumulateContactForces(const Model& model, Data& data) {
       force -= mu * normal_force * per_speed * sliding;
     }
     state.deflection[k] = g.deflection;
+    state.rate[k] = 0.0;
+    if (state.hysteresis[k] && g.deflection > state.history[k].max_deflection) {
+      state.rate[k] = -g.normal.dot(SurfacePointVelocity(model, data, k, 0, g.deepest_first) -
+                                    SurfacePointVelocity(model, data, k, 1, g.deepest_second));
+    }
     state.normal_force[k] = normal_force;
     state.force[k] = force;
     state.point[k] = g.point;
@@ -181,20 +187,18 @@ void AccumulateContactForces(const Model& model, Data& data) {
   }
 }
 
-void CommitContactHistory(const Model& model, Data& data) {
-  ContactState& state = data.contacts;
-  if (!state.any_commit) return;
+void SetUpContacts(const Model& model, Data& data) {
+  const ContactTable& table = model.contacts;
+  if (table.npair() == 0) return;
   ComputeKinematics(model, data);
   PlaceContactSurfaces(model, data);
-  const ContactTable& table = model.contacts;
+  ContactState& state = data.contacts;
   for (std::size_t k = 0; k < table.npair(); ++k) {
-    const std::int32_t f = table.pair_function[k];
-    const bool history = HasHysteresis(model.functions, f);
-    if (!history && !table.pair_impulse[k]) continue;
+    if (!table.pair_impulse[k] && !state.hysteresis[k]) continue;
     const ContactGeometry g = BoundedGeometry(model, data, k);
     if (table.pair_impulse[k]) state.engaged[k] = g.touching ? 1 : 0;
-    if (history && g.touching) {
-      UpdateLoadingHistory(model.functions, f, g.deflection, state.history[k]);
+    if (state.hysteresis[k] && g.touching) {
+      UpdateLoadingHistory(model.functions, table.pair_function[k], g.deflection, state.history[k]);
     }
   }
   WatchContactTables(model, data);
@@ -211,6 +215,13 @@ void WatchContactTables(const Model& model, Data& data) {
       RecordTableArgument(model.functions, f, data.time, g.deflection, data.table_watch.contact[k]);
     }
   }
+}
+
+void TurnContactHistory(const Model& model, Data& data, std::size_t k) {
+  ContactState& state = data.contacts;
+  if (!(state.deflection[k] > 0)) return;
+  UpdateLoadingHistory(model.functions, model.contacts.pair_function[k], state.deflection[k],
+                       state.history[k]);
 }
 
 }  // namespace sled::runtime

@@ -1,7 +1,8 @@
 // The contact force elements: each derivative evaluation places the contact surfaces, skips the
 // pairs whose bounding spheres are apart, and applies the CVS force law (loading or unloading,
 // damping, Coulomb friction, the finite plane's edge weight) to the segments as wrenches in
-// data.external. The loading history is committed after accepted steps only.
+// data.external. The loading history changes only at events (where a deflection turns), so every
+// evaluation is a function of the state and the events so far.
 #pragma once
 
 #include <span>
@@ -16,11 +17,13 @@ namespace sled::runtime {
 // force and point in data.contacts. Needs current kinematics (positions and velocities).
 void AccumulateContactForces(const Model& model, Data& data);
 
-// After an accepted step, with data's time and state at its end: records each contact's largest
-// deflection, which fixes its unloading curve, and whether pairs with the impulse option touch.
-// Nothing to do (and no work) when no contact function loses energy or sets and no pair has
-// the impulse.
-void CommitContactHistory(const Model& model, Data& data);
+// At the initial state (called by MakeData): pairs with the impulse option that start apart wait
+// for their first touch; a hysteretic pair that starts deflected has loaded to that deflection.
+void SetUpContacts(const Model& model, Data& data);
+
+// The event where pair k's deflection turns while it loads: its largest deflection is the one
+// at data's state (after Forward), which fixes its unloading curve.
+void TurnContactHistory(const Model& model, Data& data, std::size_t k);
 
 // With data's kinematics and surfaces current (after an accepted step or at an output row):
 // records each tabulated contact's deflection past its table's rows (runtime/table_range.h).

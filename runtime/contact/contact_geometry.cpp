@@ -166,7 +166,8 @@ ContactGeometry PlaneEllipsoid(const PlaneShape& plane, const EllipsoidShape& el
   ContactGeometry out;
   out.normal = plane.normal;
   double reach = 0.0;
-  SupportPoint(ellipsoid, -plane.normal, &reach);
+  out.deepest_first = SupportPoint(ellipsoid, -plane.normal, &reach);
+  out.deepest_second = out.deepest_first;
   const double height = plane.normal.dot(ellipsoid.center - plane.origin);
   out.deflection = reach - height;
   // The crossing of the plane by the line from the centre to the force point (the deepest
@@ -265,6 +266,8 @@ ContactGeometry EllipsoidEllipsoid(const EllipsoidShape& first, const EllipsoidS
   ContactGeometry out;
   out.deflection = current.value;
   out.normal = -n;
+  out.deepest_first = current.first_point;
+  out.deepest_second = current.second_point;
   out.point = IsEllipsoid(first.degree) && IsEllipsoid(second.degree)
                   ? 0.5 * (current.first_point + current.second_point)
                   : 0.5 * (ForcePoint(first, n) + ForcePoint(second, -n));

@@ -42,6 +42,12 @@ struct ContactGeometry {
   Vec3 normal = Vec3::UnitZ();  // unit: the direction the first surface (the ellipsoid) is pushed
   Vec3 point = Vec3::Zero();    // where the force acts
   double weight = 1.0;          // share of the contact footprint that lies on a finite plane
+  // The deepest point of each surface along the normal (for a plane, where its material point
+  // under the ellipsoid's deepest point is): the deflection's time derivative is the closing
+  // speed of the surfaces' material points there, -normal . (v_first - v_second) (the envelope
+  // theorem: the support points' own motion along the surfaces does not change the extents).
+  Vec3 deepest_first = Vec3::Zero();
+  Vec3 deepest_second = Vec3::Zero();
 };
 
 // An ellipsoid against a finite plane. Deflection: how far the ellipsoid's deepest point lies

@@ -30,6 +30,7 @@ bool ApplyContactImpulse(const Model& model, Data& data, std::size_t k) {
   PlaceContactSurfaces(model, data);
   const ContactGeometry g = PairGeometry(model, data, k);
   const double closing = -SeparationSpeed(model, data, k, g.point, g.normal);
+  state.engaged[k] = 1;  // the force law takes the contact, until the event of separation
   if (!(closing > kImpulseSpeed)) return true;
 
   // The velocity response to a unit impulse along the normal (on the first surface; its
@@ -67,6 +68,9 @@ bool ApplyContactImpulse(const Model& model, Data& data, std::size_t k) {
   for (std::size_t i = 0; i < data.v.size(); ++i) {
     data.v[i] = state.saved_v[i] + impulse * state.response[i];
   }
+  // Surfaces that rebound part at once: the force law waits for their next touch, an impact
+  // of its own. (Their separation is not an event: it happens where this one is.)
+  if (impulse > 0 && restitution > 0) state.engaged[k] = 0;
   ComputeKinematics(model, data);
   return solved && per_unit > 0;
 }

@@ -15,16 +15,13 @@ void SizeContactState(const Model& model, ContactState& state) {
   state.point.assign(n, Vec3::Zero());
   state.normal.assign(n, Vec3::UnitZ());
   state.search_direction.assign(n, Vec3::Zero());
+  state.rate.assign(n, 0.0);
   state.history.assign(n, LoadingHistory{});
-  state.engaged.assign(n, 1);  // until the first accepted step says whether they touch
-  state.any_commit = false;
+  state.hysteresis.assign(n, 0);
   for (std::size_t k = 0; k < n; ++k) {
-    // Tables too: their deflections are watched for the rows' end (runtime/table_range.h).
-    state.any_commit = state.any_commit || table.pair_impulse[k] ||
-                       HasHysteresis(model.functions, table.pair_function[k]) ||
-                       model.functions.kind[static_cast<std::size_t>(table.pair_function[k])] ==
-                           FunctionTable::Kind::kTable;
+    state.hysteresis[k] = HasHysteresis(model.functions, table.pair_function[k]) ? 1 : 0;
   }
+  state.engaged.assign(n, 1);  // SetUpContacts says which start apart
   state.ellipsoid_center.assign(table.nellipsoid(), Vec3::Zero());
   state.ellipsoid_rotation.assign(table.nellipsoid(), Mat3::Identity());
   state.plane_origin.assign(table.nplane(), Vec3::Zero());

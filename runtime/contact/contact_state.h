@@ -27,13 +27,19 @@ struct ContactState {
   // first ellipsoid towards the second).
   std::vector<Vec3> search_direction;
 
-  // --- Per pair, committed after accepted steps: the largest deflection and its unloading curve.
+  // Per pair with a hysteretic force law, from the last force evaluation: the deflection's time
+  // derivative while the pair is loading (beyond its largest deflection so far), else 0.
+  std::vector<double> rate;
+
+  // --- Per pair, changed only at events (runtime/system.h): the largest deflection and its
+  // unloading curve, set where the deflection turns (the event's function is `rate` while the
+  // pair loads), so the integrators' error control sees every force between two turns.
   std::vector<LoadingHistory> history;
-  // Per pair with the impulse option: 1 while its surfaces are in contact at the last accepted
-  // step (the impulse has been applied, or they started in contact). The force law waits for
+  std::vector<std::uint8_t> hysteresis;  // fixed: the pair's force law keeps a history
+  // Per pair with the impulse option: 1 from the impulse at first touch (or from the start when
+  // the surfaces start in contact) until the event of their separation. The force law waits for
   // it, so the step that reaches the surface is free flight and the impact is located exactly.
   std::vector<std::uint8_t> engaged;
-  bool any_commit = false;  // some pair keeps a history or has the impulse option
 
   // --- Per surface, recomputed each evaluation: world pose and motion of its frame.
   std::vector<Vec3> ellipsoid_center;    // world
@@ -58,6 +64,7 @@ struct ContactState {
     a.Field(point);
     a.Field(normal);
     a.Field(search_direction);
+    a.Field(rate);
     a.Field(history);
     a.Field(engaged);
   }

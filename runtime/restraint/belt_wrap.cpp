@@ -43,6 +43,18 @@ struct Section {
   }
 };
 
+// The length of the section's arc from angle `from` to angle `to` (clockwise when from > to),
+// signed: |dx/dphi| by 16-point Gauss-Legendre.
+double SectionArc(const Section& section, double from, double to) {
+  const double half = 0.5 * (from - to), mid = to + half;
+  double arc = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    arc += kWeights[k] * (section.Clockwise(mid + half * kNodes[k]).norm() +
+                          section.Clockwise(mid - half * kNodes[k]).norm());
+  }
+  return arc * half;
+}
+
 // The tangent point of the unit circle from p: on the circle's right of p -> point (`from` side)
 // or of point -> p (`to` side); the nearest point along the ray when p is inside.
 Vec2 TangentPoint(const Vec2& p, bool from_side) {
@@ -77,6 +89,7 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
     // A fixed point of the segment: the webbing passes through it.
     wrap.entry = wrap.exit = wrap.middle = c;
     wrap.contact = true;
+    wrap.reach = 1.0;
     const Vec3 in = c - from, out = to - c;
     if (in.norm() > 0 && out.norm() > 0) {
       wrap.turning = std::acos(std::clamp(in.normalized().dot(out.normalized()), -1.0, 1.0));
@@ -101,6 +114,7 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
   // Contact while the ellipse reaches across the line toward `side`: its support in that
   // direction, sqrt((B^-1)_11), beyond the line's offset.
   const double support = std::sqrt(b00 / (b00 * b11 - b01 * b01));
+  wrap.reach = support - p.y();
   if (!(support > p.y())) {
     // Straight: entry and exit where the body's support point in direction `side`,
     // B^-1 w / sqrt(w^T B^-1 w) with w = (0, 1), projects onto the line (between the ends).
@@ -120,14 +134,8 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
   if (sweep > kTwoPi - 1e-9) sweep = 0.0;          // tangent points that just met, past by rounding
   wrap.entry = world(section.FromCircle(entry));
   wrap.exit = world(section.FromCircle(exit));
-  // Arc length: |dx/dphi| over the sweep.
-  const double half = 0.5 * sweep, mid = phi_exit + half;
-  double arc = 0.0;
-  for (int k = 0; k < 8; ++k) {
-    arc += kWeights[k] * (section.Clockwise(mid + half * kNodes[k]).norm() +
-                          section.Clockwise(mid - half * kNodes[k]).norm());
-  }
-  wrap.arc = arc * half;
+  const double mid = phi_exit + 0.5 * sweep;
+  wrap.arc = SectionArc(section, phi_exit + sweep, phi_exit);
   // Turning: from the tangent at the entry to the tangent at the exit, clockwise. A linear map
   // keeps a half turn a half turn, so a sweep under pi turns under pi (rounding aside).
   const Vec2 t_in = section.Clockwise(phi_entry), t_out = section.Clockwise(phi_exit);
@@ -137,7 +145,19 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
   wrap.middle = world(section.FromCircle(Vec2(std::cos(mid), std::sin(mid))));
   const Vec2 t_mid = section.Clockwise(mid);
   wrap.tangent = (t_mid.x() * along + t_mid.y() * side).normalized();
+  wrap.section = {true, c, along, side, section.l00, section.l10, section.l11, mid};
   return wrap;
+}
+
+double ArcFromMiddle(const WrapSection& s, const Vec3& point) {
+  if (!s.valid) return 0.0;
+  const Section section{s.l00, s.l10, s.l11};
+  const Vec2 y =
+      section.ToCircle(Vec2((point - s.centre).dot(s.along), (point - s.centre).dot(s.side)));
+  if (!(y.squaredNorm() > 0)) return 0.0;
+  // Ahead of the middle (toward `to`) is clockwise: a smaller angle, by less than half a turn.
+  const double ahead = std::remainder(s.phi_middle - std::atan2(y.y(), y.x()), kTwoPi);
+  return SectionArc(section, s.phi_middle, s.phi_middle - ahead);
 }
 
 }  // namespace sled::runtime

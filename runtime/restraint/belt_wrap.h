@@ -32,15 +32,31 @@ struct WrapSurface {
   Eigen::Vector3d semi_axes;  // all zero: a fixed point of the segment, no surface
 };
 
+// The ellipsoid's section in the webbing's plane, in the coordinates WrapOver uses: for
+// measuring lengths along the surface (ArcFromMiddle). Empty (no surface) for a fixed point or
+// a webbing that runs straight.
+struct WrapSection {
+  bool valid = false;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d along = Eigen::Vector3d::UnitX();  // unit: the line from `from` to `to`
+  Eigen::Vector3d side = Eigen::Vector3d::UnitY();   // unit: across it, toward the body's side
+  double l00 = 1.0, l10 = 0.0, l11 = 1.0;            // the section is the unit circle of y = L^T x
+  double phi_middle = 0.0;                           // the arc's middle, as an angle on that circle
+};
+
 struct Wrap {
-  Eigen::Vector3d entry;    // where the webbing from `from` meets the surface
-  Eigen::Vector3d exit;     // where it leaves toward `to`
-  double arc = 0.0;         // length along the surface from entry to exit [m]
-  double turning = 0.0;     // how far the webbing turns over the surface [rad]
-  bool contact = false;     // the webbing presses on the body
+  Eigen::Vector3d entry;  // where the webbing from `from` meets the surface
+  Eigen::Vector3d exit;   // where it leaves toward `to`
+  double arc = 0.0;       // length along the surface from entry to exit [m]
+  double turning = 0.0;   // how far the webbing turns over the surface [rad]
+  bool contact = false;   // the webbing presses on the body
+  // How far the body reaches across the straight line from `from` to `to` toward `side` [m]:
+  // contact while positive; continuous, so where contact is made or lost can be located.
+  double reach = 0.0;
   Eigen::Vector3d side;     // unit: the side of the body the webbing lies on
   Eigen::Vector3d middle;   // the arc's middle point (entry when there is no arc)
   Eigen::Vector3d tangent;  // unit direction of the webbing (from -> to) at `middle`
+  WrapSection section;
 };
 
 // `side_hint`: the side the webbing lay on before (any vector with a positive component toward
@@ -48,5 +64,10 @@ struct Wrap {
 // on the line from `from` to `to`.
 Wrap WrapOver(const WrapSurface& surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
               const Eigen::Vector3d& side_hint);
+
+// The length along the section from the wrap's middle to `point` projected onto the section's
+// plane and seen from its centre (positive ahead, toward `to`): how far a body point has moved
+// along the webbing. 0 without a section.
+double ArcFromMiddle(const WrapSection& section, const Eigen::Vector3d& point);
 
 }  // namespace sled::runtime

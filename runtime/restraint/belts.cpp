@@ -40,8 +40,9 @@ WrapSurface SurfaceOf(const BeltTable& table, const Data& data, std::size_t poin
 }
 
 // Where the webbing lies along belt b: anchors where they are, wraps by Gauss-Seidel sweeps
-// (each wrap between its neighbours' current tangent points) until the tangent points settle;
-// then each span's ends and length (its straight part plus half the arc at each wrapped end).
+// (each wrap between its neighbours' current tangent points, starting from the body's centre)
+// until the tangent points settle; then each span's ends and length (its straight part plus half
+// the arc at each wrapped end).
 void BeltGeometry(const Model& model, Data& data, std::size_t b) {
   const BeltTable& table = model.belts;
   BeltState& state = data.belts;
@@ -51,14 +52,12 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
   for (std::size_t k = first; k < first + count; ++k) {
     if (table.point_wraps[k]) {
       ++wraps;
-      // Start from the body point the webbing lay on, or the centre.
-      const auto s = Index(table.point_frame[k].index);
-      const Vec3 start = state.committed_contact[k]
-                             ? Vec3(data.position[s] + data.rotation[s] * state.committed_middle[k])
-                             : SurfaceOf(table, data, k).centre;
+      const Vec3 start = SurfaceOf(table, data, k).centre;
       state.entry[k] = state.exit[k] = state.middle[k] = start;
       state.arc[k] = state.turning[k] = 0.0;
       state.contact[k] = 0;
+      state.reach[k] = 0.0;
+      state.section[k] = WrapSection{};
     } else {
       const Vec3 anchor =
           PointInFrame(data, table.point_frame[k], table.point_position[k]).position;
@@ -70,8 +69,9 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
     double change = 0.0;
     for (std::size_t k = first + 1; k + 1 < first + count; ++k) {
       if (!table.point_wraps[k]) continue;
+      const auto s = Index(table.point_frame[k].index);
       const Wrap wrap = WrapOver(SurfaceOf(table, data, k), state.exit[k - 1], state.entry[k + 1],
-                                 state.committed_side[k]);
+                                 data.rotation[s] * state.side_in_segment[k]);
       change = std::max(
           {change, (wrap.entry - state.entry[k]).norm(), (wrap.exit - state.exit[k]).norm()});
       state.entry[k] = wrap.entry;
@@ -79,9 +79,11 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
       state.arc[k] = wrap.arc;
       state.turning[k] = wrap.turning;
       state.contact[k] = wrap.contact ? 1 : 0;
+      state.reach[k] = wrap.reach;
       state.middle[k] = wrap.middle;
       state.tangent[k] = wrap.tangent;
       state.side[k] = wrap.side;
+      state.section[k] = wrap.section;
     }
     if (change <= kWrapTolerance) break;
   }
@@ -119,62 +121,17 @@ double TieTurning(const Model& model, const BeltState& state, std::size_t tie) {
   return std::acos(std::clamp(in.dot(out), -1.0, 1.0));
 }
 
-// Geometry, junction ratios, the webbing carried by the wrapped bodies, slip and tensions.
-void EvaluateBelts(const Model& model, Data& data) {
-  const BeltTable& table = model.belts;
-  BeltState& state = data.belts;
-  for (std::size_t b = 0; b < table.size(); ++b) BeltGeometry(model, data, b);
-  std::copy(state.committed_rest_length.begin(), state.committed_rest_length.end(),
-            state.rest_length.begin());
-  for (std::size_t j = 0; j < state.junction_first.size(); ++j) {
-    const std::int32_t point = state.junction_point[j];
-    const double turning = point >= 0 ? state.turning[Index(point)]
-                                      : TieTurning(model, state, Index(state.junction_tie[j]));
-    state.junction_ratio[j] = std::exp(state.junction_friction[j] * turning);
-    if (point < 0) continue;
-    // Webbing that sticks moves with the body: the body point under the webbing's middle at the
-    // last accepted step has moved this far along the webbing. That much stretched webbing is
-    // that much over 1 + the mean strain of the two sides unstretched (which makes the work of
-    // the tension difference on the body equal the change of a linear webbing's energy).
-    const auto k = Index(point);
-    if (!state.contact[k] || !state.committed_contact[k]) continue;
-    const auto s = Index(table.point_frame[k].index);
-    const Vec3 stuck = data.position[s] + data.rotation[s] * state.committed_middle[k];
-    const auto a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
-    const double stretch =
-        0.5 * (state.length[a] / state.rest_length[a] + state.length[c] / state.rest_length[c]);
-    const double carried =
-        std::clamp((stuck - state.middle[k]).dot(state.tangent[k]) / std::max(stretch, 1e-3),
-                   -0.5 * state.rest_length[c], 0.5 * state.rest_length[a]);
-    state.rest_length[a] -= carried;
-    state.rest_length[c] += carried;
+// The webbing's stiffness per unit strain where it starts to pull: the slope at zero strain, or
+// where the function first rises; the slip solver extends the tension below zero strain with it.
+double SlackStiffness(const FunctionTable& functions, std::int32_t function) {
+  const double slope = FunctionSlope(functions, function, 0.0);
+  if (slope > 0) return slope;
+  for (int k = 1; k <= 1000; ++k) {
+    const double strain = 1e-3 * k;
+    const double force = EvaluateFunction(functions, function, strain);
+    if (force > 0) return force / strain;
   }
-  ResolveSlip(model, state);
-}
-
-// The history after an accepted step at data's state (after EvaluateBelts).
-void CommitEvaluated(const Model& model, Data& data) {
-  const BeltTable& table = model.belts;
-  BeltState& state = data.belts;
-  std::copy(state.rest_length.begin(), state.rest_length.end(),
-            state.committed_rest_length.begin());
-  for (std::size_t span = 0; span < state.rest_length.size(); ++span) {
-    const double strain = state.length[span] / state.rest_length[span] - 1.0;
-    const std::size_t belt = Index(state.span_belt[span]);
-    UpdateLoadingHistory(model.functions, table.function[belt], strain, state.history[span]);
-    // Taut webbing past its table's rows runs on the extrapolation (runtime/table_range.h).
-    if (strain > 0) {
-      RecordTableArgument(model.functions, table.function[belt], data.time, strain,
-                          data.table_watch.belt[belt]);
-    }
-  }
-  for (std::size_t k = 0; k < table.npoint(); ++k) {
-    if (!table.point_wraps[k]) continue;
-    const auto s = Index(table.point_frame[k].index);
-    state.committed_side[k] = state.side[k];
-    state.committed_contact[k] = state.contact[k];
-    state.committed_middle[k] = data.rotation[s].transpose() * (state.middle[k] - data.position[s]);
-  }
+  return 1.0;  // a webbing that never pulls: any positive value keeps the solver regular
 }
 
 }  // namespace
@@ -196,33 +153,94 @@ double StrainAtTension(const FunctionTable& functions, std::int32_t function, do
   return -1.0;
 }
 
+void WatchBeltTables(const Model& model, Data& data) {
+  const BeltTable& table = model.belts;
+  BeltState& state = data.belts;
+  for (std::size_t span = 0; span < state.rest_length.size(); ++span) {
+    const double strain = state.length[span] / state.rest_length[span] - 1.0;
+    const std::size_t belt = Index(state.span_belt[span]);
+    // Taut webbing past its table's rows runs on the extrapolation (runtime/table_range.h).
+    if (strain > 0) {
+      RecordTableArgument(model.functions, table.function[belt], data.time, strain,
+                          data.table_watch.belt[belt]);
+    }
+  }
+}
+
+double CarriedLength(const Model& model, const Data& data, std::size_t j, const Vec3& anchor) {
+  const BeltState& state = data.belts;
+  const std::int32_t point = state.junction_point[j];
+  if (point < 0) return 0.0;
+  const auto k = Index(point);
+  const auto s = Index(model.belts.point_frame[k].index);
+  return ArcFromMiddle(state.section[k], data.position[s] + data.rotation[s] * anchor);
+}
+
+void EvaluateBelts(const Model& model, Data& data) {
+  const BeltTable& table = model.belts;
+  BeltState& state = data.belts;
+  for (std::size_t b = 0; b < table.size(); ++b) BeltGeometry(model, data, b);
+  for (std::size_t j = 0; j < state.junction_first.size(); ++j) {
+    const std::int32_t point = state.junction_point[j];
+    const double turning = point >= 0 ? state.turning[Index(point)]
+                                      : TieTurning(model, state, Index(state.junction_tie[j]));
+    state.junction_ratio[j] = std::exp(state.junction_friction[j] * turning);
+    // How far the body under a sticking wrap has carried the webbing along its surface since
+    // the junction stuck (the slip solver turns it into unstretched webbing).
+    const bool carried = state.mode[j] == JunctionMode::kStick && point >= 0 && state.carries[j];
+    state.carried_arc[j] = carried ? CarriedLength(model, data, j, state.anchor[j]) : 0.0;
+  }
+  ResolveSlip(model, state);
+}
+
+void AnchorJunction(const Model& model, Data& data, std::size_t j) {
+  BeltState& state = data.belts;
+  const std::int32_t point = state.junction_point[j];
+  if (point < 0) return;
+  const auto k = Index(point);
+  const auto s = Index(model.belts.point_frame[k].index);
+  const auto a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
+  state.anchor[j] = data.rotation[s].transpose() * (state.middle[k] - data.position[s]);
+  state.carry_stretch[j] = std::max(
+      0.5 * (state.length[a] / state.rest_length[a] + state.length[c] / state.rest_length[c]),
+      1e-3);
+  state.carries[j] = state.contact[k];
+}
+
 void SetUpBelts(const Model& model, Data& data) {
   const BeltTable& table = model.belts;
   BeltState& state = data.belts;
   const std::size_t spans = table.nspan(), points = table.npoint();
   state = BeltState{};
   state.span_belt.resize(spans);
+  state.base_length.assign(spans, 0.0);
   state.rest_length.assign(spans, 0.0);
-  state.committed_rest_length.assign(spans, 0.0);
   state.history.assign(spans, LoadingHistory{});
+  state.hysteresis.assign(spans, 0);
   state.length.assign(spans, 0.0);
   state.tension.assign(spans, 0.0);
+  state.strain_rate.assign(spans, 0.0);
   state.start.assign(spans, Vec3::Zero());
   state.end.assign(spans, Vec3::Zero());
   for (auto* v : {&state.entry, &state.exit, &state.middle, &state.tangent, &state.side,
-                  &state.committed_side, &state.committed_middle}) {
+                  &state.side_in_segment}) {
     v->assign(points, Vec3::Zero());
   }
+  state.section.assign(points, WrapSection{});
   state.arc.assign(points, 0.0);
   state.turning.assign(points, 0.0);
+  state.reach.assign(points, 0.0);
   state.contact.assign(points, 0);
-  state.committed_contact.assign(points, 0);
   state.start_anchor_force.assign(table.size(), Vec3::Zero());
   state.end_anchor_force.assign(table.size(), Vec3::Zero());
+  state.slack_stiffness.assign(table.size(), 1.0);
+  state.rate_q.assign(static_cast<std::size_t>(model.nq), 0.0);
+  state.rate_dq.assign(static_cast<std::size_t>(model.nq), 0.0);
   for (std::size_t b = 0; b < table.size(); ++b) {
     const auto first = Index(table.first_point[b]), first_span = Index(table.first_span(b));
     for (std::size_t i = 0; i < Index(table.span_count(b)); ++i) {
       state.span_belt[first_span + i] = static_cast<std::int32_t>(b);
+      state.hysteresis[first_span + i] = HasHysteresis(model.functions, table.function[b]) ? 1 : 0;
     }
     for (std::size_t k = first + 1; k + 1 < first + Index(table.point_count[b]); ++k) {
       if (!table.point_wraps[k]) continue;
@@ -233,6 +251,7 @@ void SetUpBelts(const Model& model, Data& data) {
       state.junction_tie.push_back(-1);
       state.junction_friction.push_back(table.friction[b]);
     }
+    state.slack_stiffness[b] = SlackStiffness(model.functions, table.function[b]);
   }
   for (std::size_t t = 0; t < table.tie_points.size(); ++t) {
     state.junction_first.push_back(
@@ -243,12 +262,26 @@ void SetUpBelts(const Model& model, Data& data) {
     state.junction_tie.push_back(static_cast<std::int32_t>(t));
     state.junction_friction.push_back(table.harness_friction[Index(table.tie_harness[t])]);
   }
-  state.junction_ratio.assign(state.junction_first.size(), 1.0);
+  const std::size_t junctions = state.junction_first.size();
+  state.junction_ratio.assign(junctions, 1.0);
+  state.transfer.assign(junctions, 0.0);
+  state.slip_rate.assign(junctions, 0.0);
+  state.rate_anchor.assign(junctions, Vec3::Zero());
+  state.held_transfer.assign(junctions, 0.0);
+  state.anchor.assign(junctions, Vec3::Zero());
+  state.carry_stretch.assign(junctions, 1.0);
+  state.carried_arc.assign(junctions, 0.0);
+  state.carries.assign(junctions, 0);
+  state.mode.assign(junctions, JunctionMode::kStick);
+  for (std::size_t j = 0; j < junctions; ++j) {
+    if (!(state.junction_friction[j] > 0)) state.mode[j] = JunctionMode::kFree;
+  }
+  SizeSlipSolver(state);
   if (table.size() == 0) return;
 
   // Fit at the initial state. Each body is wrapped on the side facing away from the line between
   // its neighbours (anchors, or the centres of the neighbouring wrapped bodies): the path says the
-  // webbing lies over the body.
+  // webbing lies over the body. The side is kept in the segment frame: it turns with the body.
   ComputeKinematics(model, data);
   for (std::size_t b = 0; b < table.size(); ++b) {
     const auto first = Index(table.first_point[b]);
@@ -265,7 +298,8 @@ void SetUpBelts(const Model& model, Data& data) {
       const Vec3 away = (centre - from) - (centre - from).dot(along) * along;
       // A centre on the line: over the top (world z), or x for a vertical line.
       const Vec3 up = std::abs(along.z()) < 0.9 ? Vec3::UnitZ() : Vec3::UnitX();
-      state.committed_side[k] = away.norm() > 1e-12 ? away : up;
+      const auto s = Index(table.point_frame[k].index);
+      state.side_in_segment[k] = data.rotation[s].transpose() * (away.norm() > 1e-12 ? away : up);
     }
     BeltGeometry(model, data, b);
     const double strain = StrainAtTension(model.functions, table.function[b], table.pretension[b]);
@@ -278,14 +312,14 @@ void SetUpBelts(const Model& model, Data& data) {
       const std::size_t span = first_span + i;
       const double share =
           total > 0 ? state.length[span] / total : 1.0 / static_cast<double>(span_count);
-      state.committed_rest_length[span] =
+      state.base_length[span] =
           std::max(state.length[span] / stretch + table.slack[b] * share, 1e-9);
       UpdateLoadingHistory(model.functions, table.function[b], std::max(strain, 0.0),
                            state.history[span]);
     }
   }
   EvaluateBelts(model, data);
-  CommitEvaluated(model, data);
+  for (std::size_t j = 0; j < junctions; ++j) AnchorJunction(model, data, j);
 }
 
 void ComputeBeltForces(const Model& model, Data& data) {
@@ -319,13 +353,6 @@ void ComputeBeltForces(const Model& model, Data& data) {
     state.end_anchor_force[b] = FrameRotation(data, table.point_frame[first + spans]).transpose() *
                                 state.end_anchor_force[b];
   }
-}
-
-void CommitBelts(const Model& model, Data& data) {
-  if (model.belts.size() == 0) return;
-  ComputeKinematics(model, data);
-  EvaluateBelts(model, data);
-  CommitEvaluated(model, data);
 }
 
 void AppendBeltChannelNames(const Model& model, std::size_t belt, const std::string& label,

@@ -318,8 +318,10 @@ int main(int argc, char** argv) {
       sled::runtime::Data data = sled::runtime::MakeData(scene);
       const sled::runtime::MultibodySystem system(scene, data);
       std::cerr << fmt::format(
-          "{}: {} event functions, contact histories {}, {} belts, {} loop constraints\n",
-          suite_case.name, system.EventCount(), data.contacts.any_commit ? "yes" : "no",
+          "{}: {} event functions, {} contact pairs with a history, {} belts, {} loop "
+          "constraints\n",
+          suite_case.name, system.EventCount(),
+          std::count(data.contacts.hysteresis.begin(), data.contacts.hysteresis.end(), 1),
           scene.belts.size(), scene.nconstraint());
     }
     const Outcome reference = RunSled(WithTolerance(scene, "dopri5", 1e-10));

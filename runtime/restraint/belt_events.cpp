@@ -1,0 +1,168 @@
+#include "runtime/restraint/belt_events.h"
+
+#include <algorithm>
+
+#include "runtime/dynamics.h"
+#include "runtime/joint.h"
+#include "runtime/restraint/belt_slip.h"
+#include "runtime/restraint/belts.h"
+
+namespace sled::runtime {
+namespace {
+
+// The time step of the central differences [s]: small next to any belt's time scale, large
+// enough that the rounding of the positions (1e-16 m) stays below 1e-9 of a rate.
+constexpr double kRateStep = 1e-6;
+
+std::size_t Index(std::int32_t value) { return static_cast<std::size_t>(value); }
+
+bool Slips(JunctionMode mode) {
+  return mode == JunctionMode::kSlipIntoFirst || mode == JunctionMode::kSlipIntoSecond;
+}
+
+double Strain(const BeltState& state, std::size_t span) {
+  return state.length[span] / state.rest_length[span] - 1.0;
+}
+
+bool Loads(const BeltState& state, std::size_t span) {
+  return state.hysteresis[span] && Strain(state, span) > state.history[span].max_deflection;
+}
+
+double Extended(const Model& model, const BeltState& state, std::size_t span) {
+  return SpanForceAt(model, state, span, state.rest_length[span]).extended;
+}
+
+}  // namespace
+
+std::vector<BeltEvent> BeltEvents(const Model& model, const Data& data) {
+  (void)model;
+  const BeltState& state = data.belts;
+  std::vector<BeltEvent> events;
+  for (std::size_t j = 0; j < state.mode.size(); ++j) {
+    if (state.mode[j] == JunctionMode::kFree) continue;
+    events.push_back({BeltEventKind::kSlipIntoFirst, j});
+    events.push_back({BeltEventKind::kSlipIntoSecond, j});
+    events.push_back({BeltEventKind::kStop, j});
+    if (state.junction_point[j] >= 0) events.push_back({BeltEventKind::kContact, j});
+  }
+  for (std::size_t span = 0; span < state.hysteresis.size(); ++span) {
+    if (state.hysteresis[span]) events.push_back({BeltEventKind::kTurn, span});
+  }
+  return events;
+}
+
+void UpdateBeltRates(const Model& model, Data& data) {
+  BeltState& state = data.belts;
+  bool needed = false;
+  for (std::size_t j = 0; j < state.mode.size() && !needed; ++j) needed = Slips(state.mode[j]);
+  for (std::size_t span = 0; span < state.hysteresis.size() && !needed; ++span) {
+    needed = Loads(state, span);
+  }
+  if (!needed) return;
+  // The body point under each wrap's middle now: how far the body carries the webbing is how
+  // far that point moves along it.
+  const BeltTable& table = model.belts;
+  for (std::size_t j = 0; j < state.mode.size(); ++j) {
+    const std::int32_t point = state.junction_point[j];
+    if (point < 0) continue;
+    const auto s = Index(table.point_frame[Index(point)].index);
+    state.rate_anchor[j] =
+        data.rotation[s].transpose() * (state.middle[Index(point)] - data.position[s]);
+  }
+  // The slip of each junction (its transfer less the carried webbing) and each span's strain a
+  // half step back and ahead along the motion (q +- h/2 qdot, the vehicles at those times);
+  // then back where Forward left them.
+  const double t = data.time;
+  std::copy(data.q.begin(), data.q.end(), state.rate_q.begin());
+  PositionDerivative(model, data.q, data.v, data.locked, state.rate_dq);
+  for (const double sign : {-1.0, 1.0}) {
+    for (std::size_t i = 0; i < data.q.size(); ++i) {
+      data.q[i] = state.rate_q[i] + sign * 0.5 * kRateStep * state.rate_dq[i];
+    }
+    data.time = t + sign * 0.5 * kRateStep;
+    ComputeKinematics(model, data);
+    EvaluateBelts(model, data);
+    for (std::size_t j = 0; j < state.transfer.size(); ++j) {
+      double slip = state.transfer[j];
+      const std::int32_t point = state.junction_point[j];
+      if (point >= 0 && state.contact[Index(point)]) {
+        const auto a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
+        const double stretch =
+            0.5 * (state.length[a] / state.rest_length[a] + state.length[c] / state.rest_length[c]);
+        slip -= CarriedLength(model, data, j, state.rate_anchor[j]) / std::max(stretch, 1e-3);
+      }
+      state.slip_rate[j] = sign < 0 ? -slip : (state.slip_rate[j] + slip) / kRateStep;
+    }
+    for (std::size_t span = 0; span < state.length.size(); ++span) {
+      state.strain_rate[span] = sign < 0
+                                    ? -Strain(state, span)
+                                    : (state.strain_rate[span] + Strain(state, span)) / kRateStep;
+    }
+  }
+  std::copy(state.rate_q.begin(), state.rate_q.end(), data.q.begin());
+  data.time = t;
+  ComputeKinematics(model, data);
+  EvaluateBelts(model, data);
+}
+
+double BeltEventFunction(const Model& model, const Data& data, const BeltEvent& event) {
+  const BeltState& state = data.belts;
+  if (event.kind == BeltEventKind::kTurn) {
+    return Loads(state, event.index) ? state.strain_rate[event.index] : 1.0;
+  }
+  const std::size_t j = event.index;
+  const JunctionMode mode = state.mode[j];
+  const std::size_t a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
+  switch (event.kind) {
+    case BeltEventKind::kSlipIntoFirst:
+      if (mode != JunctionMode::kStick) return 1.0;
+      return CapstanBound(state.junction_ratio[j], Extended(model, state, c)) -
+             Extended(model, state, a);
+    case BeltEventKind::kSlipIntoSecond:
+      if (mode != JunctionMode::kStick) return 1.0;
+      return CapstanBound(state.junction_ratio[j], Extended(model, state, a)) -
+             Extended(model, state, c);
+    case BeltEventKind::kStop:
+      if (mode == JunctionMode::kSlipIntoSecond) return state.slip_rate[j];
+      if (mode == JunctionMode::kSlipIntoFirst) return -state.slip_rate[j];
+      return 1.0;
+    case BeltEventKind::kContact: {
+      if (mode != JunctionMode::kStick) return 1.0;
+      const double reach = state.reach[Index(state.junction_point[j])];
+      return state.carries[j] ? reach : -reach;
+    }
+    case BeltEventKind::kTurn:
+      break;
+  }
+  return 1.0;
+}
+
+void HandleBeltEvent(const Model& model, Data& data, const BeltEvent& event, int direction) {
+  if (direction > 0) return;
+  BeltState& state = data.belts;
+  if (event.kind == BeltEventKind::kTurn) {
+    const std::size_t span = event.index;
+    UpdateLoadingHistory(model.functions, model.belts.function[Index(state.span_belt[span])],
+                         Strain(state, span), state.history[span]);
+    return;
+  }
+  const std::size_t j = event.index;
+  switch (event.kind) {
+    case BeltEventKind::kSlipIntoFirst:
+      state.mode[j] = JunctionMode::kSlipIntoFirst;
+      break;
+    case BeltEventKind::kSlipIntoSecond:
+      state.mode[j] = JunctionMode::kSlipIntoSecond;
+      break;
+    case BeltEventKind::kStop:
+    case BeltEventKind::kContact:
+      state.mode[j] = JunctionMode::kStick;
+      AnchorJunction(model, data, j);
+      break;
+    case BeltEventKind::kTurn:
+      break;
+  }
+  state.held_transfer[j] = state.transfer[j];
+}
+
+}  // namespace sled::runtime
