@@ -27,7 +27,7 @@
 
 (defconst sled--declarations
   '("scenario" "import" "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid"
-    "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "initial"
+    "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "load" "initial"
     "output" "time" "integrator" "restart" "settle" "symmetry"))
 
 (defconst sled--font-lock-keywords

@@ -15,7 +15,7 @@
 // Generate and test with the tree-sitter CLI: `tree-sitter generate && tree-sitter test`
 // (editors/tests/tree_sitter_test.sh also parses every .sled file of the repository).
 
-const CLAUSE_WORDS = ['on', 'with', 'at', 'as', 'filter'];
+const CLAUSE_WORDS = ['on', 'with', 'at', 'as', 'filter', 'relative_to', 'expressed_in'];
 
 const PREC = {
   arrow: 1,

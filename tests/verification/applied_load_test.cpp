@@ -141,7 +141,7 @@ TEST(AppliedLoad, AForceAcrossASlipJointPushesTheTwoApart) {
 }
 )");
   ASSERT_EQ(pushed.errors, "");
-  const std::size_t d = Column(pushed.series, "pair.j.joint_angle");
+  const std::size_t d = Column(pushed.series, "pair.j.joint_displacement");
   for (std::size_t row = 0; row < pushed.series.rows(); row += 10) {
     const double t = Value(pushed.series, row, 0);
     EXPECT_NEAR(Value(pushed.series, row, d), 0.5 * 6.0 * (1 / 3.0 + 1 / 1.0) * t * t, 1e-8) << t;

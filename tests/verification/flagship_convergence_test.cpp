@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -23,11 +24,15 @@ std::string FlagshipWith(const std::string& method, const std::string& tolerance
   std::stringstream text;
   text << in.rdbuf();
   std::string scene = text.str();
-  const std::string integrator = "integrator exponential { tolerance = 1e-5";
-  const std::size_t at = scene.find(integrator);
-  if (at == std::string::npos) return {};
-  return scene.replace(at, integrator.size(),
-                       "integrator " + method + " { tolerance = " + tolerance);
+  // Whatever method and tolerance the example names, the run gets the ones asked for.
+  const std::regex integrator(R"(integrator \w+ \{ tolerance = [0-9.e+-]+)");
+  if (!std::regex_search(scene, integrator)) {
+    ADD_FAILURE() << "the flagship names no `integrator METHOD { tolerance = ...`";
+    return {};
+  }
+  return std::regex_replace(scene, integrator,
+                            "integrator " + method + " { tolerance = " + tolerance,
+                            std::regex_constants::format_first_only);
 }
 
 // The largest deviation of `run` from `reference` over all channels, each over its own range

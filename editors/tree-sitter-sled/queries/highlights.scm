@@ -15,7 +15,7 @@
   keyword: (identifier) @keyword
   (#any-of? @keyword
     "scenario" "import" "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid"
-    "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "initial"
+    "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "load" "initial"
     "output" "time" "integrator" "restart" "settle" "symmetry"))
 
 (statement
@@ -23,7 +23,7 @@
   target: (path (identifier) @type.definition)
   (#any-of? @_declaration
     "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid" "function" "belt"
-    "harness" "airbag" "spring" "tension" "constraint"))
+    "harness" "airbag" "spring" "tension" "constraint" "load"))
 
 ; Any other statement keyword is an attribute (`mass = 11.7 kg`) or an output request.
 (statement
