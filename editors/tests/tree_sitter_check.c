@@ -116,6 +116,7 @@ int main(int argc, char **argv) {
       print_keywords(ts_tree_root_node(tree), text);
       ts_tree_delete(tree);
       free(text);
+      ts_parser_delete(parser);
       return 0;
     }
     if (strcmp(argv[1], "tree") == 0) {
@@ -125,6 +126,7 @@ int main(int argc, char **argv) {
       free(printed);
       ts_tree_delete(tree);
       free(text);
+      ts_parser_delete(parser);
       return 0;
     }
     if (!corpus) {
