@@ -164,10 +164,10 @@ class AirbagReader {
   bool Valid(const AirbagCard& airbag, const Cylinder& cylinder, const Card& shape, const Card& d,
              const Card& e, const Card& f) {
     bool ok = true;
-    auto require = [&](bool condition, const Card& card, int first, std::string what,
+    auto require = [&](bool condition, const Card& card, int first, std::string_view what,
                        std::string help) {
       if (!condition) {
-        f_.Invalid(card, first, first + 11, std::move(what), std::move(help));
+        f_.Invalid(card, first, first + 11, what, std::move(help));
         ok = false;
       }
     };
