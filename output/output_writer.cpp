@@ -239,6 +239,32 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
       number("energy_balance.scale", e.scale),
       number("energy_balance.relative_residual", e.relative()));
   out << "  },\n";
+  if (summary.settle.settled) {
+    // How the scene settled before the run (runtime/settle.h): the convergence test's measures
+    // at its last check, against its tolerances.
+    const SettleSummary& settle = summary.settle;
+    const Model::Settle& want = model.settle;
+    out << "  \"settle\": {\n";
+    out << fmt::format("    \"converged\": {},\n    \"time\": {},\n    \"duration\": {},\n",
+                       settle.converged ? "true" : "false", settle.time, want.duration);
+    out << fmt::format("    \"steps\": {},\n    \"evaluations\": {},\n", settle.steps,
+                       settle.evaluations);
+    out << fmt::format("    \"largest_velocity\": {},\n    \"velocity_tolerance\": {},\n",
+                       settle.largest_velocity, want.velocity);
+    out << fmt::format(
+        "    \"largest_angular_velocity\": {},\n    \"angular_velocity_tolerance\": {},\n",
+        settle.largest_angular_velocity, want.angular_velocity);
+    out << fmt::format("    \"largest_acceleration\": {},\n    \"acceleration_tolerance\": {},\n",
+                       settle.largest_acceleration, want.velocity / want.check_every);
+    out << fmt::format(
+        "    \"largest_angular_acceleration\": {},\n    \"angular_acceleration_tolerance\": "
+        "{},\n",
+        settle.largest_angular_acceleration, want.angular_velocity / want.check_every);
+    out << fmt::format("    \"largest_force\": {},\n", settle.largest_force);
+    out << fmt::format("    \"largest_force_change\": {},\n    \"force_change_tolerance\": {}\n",
+                       settle.largest_force_change, want.force_change);
+    out << "  },\n";
+  }
   if (summary.failed) {
     const Failure& f = summary.failure;
     out << "  \"failure\": {\n";

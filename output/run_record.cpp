@@ -11,8 +11,10 @@ namespace {
 // Failure or TimeSeries must be added here: the size checks below fail until it is.
 static_assert(std::is_trivially_copyable_v<IntegratorStats>);
 static_assert(std::is_trivially_copyable_v<EnergySummary>);
+static_assert(sizeof(SettleSummary) == 144 || sizeof(std::string) != 32,
+              "SettleSummary changed: list the new field in Serialize");
 static_assert(sizeof(std::string) != 32 ||
-                  (sizeof(RunSummary) == 464 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
+                  (sizeof(RunSummary) == 544 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
               "RunSummary, Failure or TimeSeries changed: list the new field in Serialize");
 
 void Strings(Archive& archive, std::vector<std::string>& texts) {
@@ -45,6 +47,20 @@ void Serialize(Archive& archive, RunSummary& summary, TimeSeries& series) {
   archive.Resizable(summary.output_error);
   archive.Field(summary.end_time);
   archive.Field(summary.energy);
+  SettleSummary& settle = summary.settle;
+  archive.Field(settle.settled);
+  archive.Field(settle.converged);
+  archive.Field(settle.time);
+  archive.Field(settle.steps);
+  archive.Field(settle.evaluations);
+  archive.Field(settle.largest_velocity);
+  archive.Resizable(settle.fastest_segment);
+  archive.Field(settle.largest_angular_velocity);
+  archive.Field(settle.largest_acceleration);
+  archive.Field(settle.largest_angular_acceleration);
+  archive.Field(settle.largest_force_change);
+  archive.Field(settle.largest_force);
+  archive.Resizable(settle.failure);
   Strings(archive, summary.checkpoints);
   Strings(archive, summary.notes);
   Strings(archive, series.names);

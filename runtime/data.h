@@ -99,6 +99,10 @@ struct Data {
   double applied_power = 0.0;  // of the applied loads into the segments (AddAppliedLoads)
   EnergyBalance energy;
 
+  // A mass-proportional damping rate [1/s] (generalized force -c M v), applied only while the
+  // run settles (runtime/settle.h); 0 otherwise.
+  double settling_damping = 0.0;
+
   std::int64_t evaluations = 0;
 };
 

@@ -1,6 +1,7 @@
 // runtime::DumpModel: a stable text form of a Model for `sled check --dump-model` and golden
 // tests. One line per entity; numbers in their shortest round-trip form; rotation matrices row by
 // row. Equal dumps mean equal models.
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
@@ -239,6 +240,13 @@ std::string DumpModel(const Model& m) {
                   "absolute_tolerance {} min_step {} max_step {} initial_step {}",
                   m.start_time, m.end_time, m.output_every, m.integrator, m.relative_tolerance,
                   m.absolute_tolerance, m.min_step, m.max_step, m.initial_step));
+  if (m.settle.duration > 0) {
+    line(
+        fmt::format("settle duration {} damping {} velocity {} angular_velocity {} "
+                    "force_change {} check_every {}",
+                    m.settle.duration, m.settle.damping, m.settle.velocity,
+                    m.settle.angular_velocity, m.settle.force_change, m.settle.check_every));
+  }
   line(
       fmt::format("sizes segments {} nq {} nv {} vehicles {} functions {} springs {} "
                   "constraints {} outputs {}",
@@ -377,10 +385,14 @@ std::string DumpModel(const Model& m) {
                      iso ? " iso_6487" : "", relative));
   }
   for (std::size_t c = 0; c < m.ncriterion(); ++c) {
-    line(fmt::format("criterion {} {} {} output {} moment_output {}{}", c, Get(m.criterion_name, c),
-                     Get(m.criterion_target, c), Get(m.criterion_output, c),
-                     Get(m.criterion_moment_output, c),
-                     Get(m.criterion_filter_iso, c) != 0 ? " iso_6487" : ""));
+    const bool own_limit = c < m.criterion_limit.size() && !std::isnan(m.criterion_limit[c]);
+    line(fmt::format("criterion {} {} {} output {} moment_output {}{}{}", c,
+                     Get(m.criterion_name, c), Get(m.criterion_target, c),
+                     Get(m.criterion_output, c), Get(m.criterion_moment_output, c),
+                     Get(m.criterion_filter_iso, c) != 0 ? " iso_6487" : "",
+                     own_limit ? fmt::format(" limit {} standard \"{}\"", m.criterion_limit[c],
+                                             m.criterion_standard[c])
+                               : std::string()));
   }
   return out;
 }

@@ -223,6 +223,19 @@ struct Model {
   double max_step = 0.0;      // 0: none
   double initial_step = 0.0;  // 0: automatic
 
+  // --- Settling before the run (runtime/settle.h): a damped pre-simulation with the vehicles
+  // held at their starting pose, until the convergence test holds. None when duration is 0.
+  struct Settle {
+    double duration = 0.0;           // the longest pre-simulation [s]
+    double damping = 10.0;           // mass-proportional damping rate [1/s]
+    double velocity = 1e-3;          // every centre of mass slower than this [m/s]
+    double angular_velocity = 0.01;  // every segment turning slower than this [rad/s]
+    double force_change = 0.01;      // contact, belt and spring forces changed by less than this
+                                     // fraction of the largest of them over one check interval
+    double check_every = 0.01;       // [s]
+  };
+  Settle settle;
+
   // --- Output requests, as compiled channel groups.
   enum class OutputKind : std::uint8_t {
     kAcceleration,
@@ -278,15 +291,20 @@ struct Model {
     kNeckTension,
     kNeckCompression,
     kFemurLoad,
+    kNkm,
   };
   std::vector<CriterionKind> criterion_kind;
   std::vector<std::string> criterion_name;    // as the language spells it: hic15
   std::vector<std::string> criterion_target;  // the segment or joint: occupant.head
   // The output group it reads: the acceleration of the segment's centre of mass, or the joint
-  // force; Nij also reads the joint torque (else -1).
+  // force; Nij and Nkm also read the joint torque (else -1).
   std::vector<std::int32_t> criterion_output;
   std::vector<std::int32_t> criterion_moment_output;
   std::vector<std::uint8_t> criterion_filter_iso;  // 1: ISO 6487 coefficients
+  // A limit the scene gives a criterion (`limit = ...`, with the standard it comes from), in
+  // the criterion's unit; NaN: the default limit of its standard (output/post/injury_criteria).
+  std::vector<double> criterion_limit;
+  std::vector<std::string> criterion_standard;
 
   // --- Side table: where each entity was declared.
   std::vector<SourcePosition> segment_source;

@@ -53,6 +53,44 @@ void SerializeRunState(Archive& archive, Integrator& integrator, Data& data,
   archive.Field(energy);
 }
 
+// Why settling did not give the run a start: the pre-simulation failed, or its convergence test
+// did not hold within the settling time (what did not hold, and by how much).
+Failure SettleFailure(const Model& model, const SettleSummary& settle) {
+  Failure failure;
+  failure.time = model.start_time;
+  const Model::Settle& want = model.settle;
+  if (!settle.failure.empty()) {
+    failure.cause = fmt::format("settling failed after {:.4g} s: {}", settle.time, settle.failure);
+    return failure;
+  }
+  std::string what;
+  if (settle.largest_velocity > want.velocity) {
+    failure.where = settle.fastest_segment;
+    what = fmt::format("a centre of mass still moves at {:.3g} m/s (at most {:.3g})",
+                       settle.largest_velocity, want.velocity);
+  } else if (settle.largest_angular_velocity > want.angular_velocity) {
+    what = fmt::format("a segment still turns at {:.3g} rad/s (at most {:.3g})",
+                       settle.largest_angular_velocity, want.angular_velocity);
+  } else if (settle.largest_acceleration > want.velocity / want.check_every) {
+    what = fmt::format("a centre of mass still accelerates at {:.3g} m/s^2 (at most {:.3g})",
+                       settle.largest_acceleration, want.velocity / want.check_every);
+  } else if (settle.largest_angular_acceleration > want.angular_velocity / want.check_every) {
+    what =
+        fmt::format("a segment's angular acceleration is still {:.3g} rad/s^2 (at most {:.3g})",
+                    settle.largest_angular_acceleration, want.angular_velocity / want.check_every);
+  } else {
+    what = fmt::format(
+        "a force still changed by {:.3g} of the largest, {:.4g} N, in {:.3g} s "
+        "(at most {:.3g})",
+        settle.largest_force_change, settle.largest_force, want.check_every, want.force_change);
+  }
+  failure.cause = fmt::format(
+      "the scene did not settle in {:.4g} s: {}; give settling a longer `duration` or more "
+      "`damping`",
+      want.duration, what);
+  return failure;
+}
+
 }  // namespace
 
 std::size_t OutputRowCount(const Model& model) {
@@ -85,6 +123,15 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     summary.failed = true;
     summary.failure.cause = fmt::format("unknown integrator `{}`", model.integrator);
     return summary;
+  }
+  if (options.resume == nullptr && model.settle.duration > 0.0) {
+    summary.settle = Settle(model, data);
+    if (!summary.settle.converged) {
+      summary.failed = true;
+      summary.failure = SettleFailure(model, summary.settle);
+      summary.end_time = data.time;
+      return summary;
+    }
   }
   MultibodySystem system(model, data);
   data.energy = EnergyBalance{};

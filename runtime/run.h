@@ -8,6 +8,7 @@
 
 #include "runtime/data.h"
 #include "runtime/integrate/ode.h"
+#include "runtime/settle.h"
 #include "runtime/time_series.h"
 
 namespace sled::runtime {
@@ -45,6 +46,7 @@ struct RunSummary {
   // Ran to the end time: no failure, no interruption, no output error.
   bool complete() const { return !failed && !interrupted && output_error.empty(); }
   EnergySummary energy;
+  SettleSummary settle;                  // how the scene settled before the run, if it did
   std::vector<std::string> checkpoints;  // where the checkpoint sink kept them (files)
   std::vector<std::string> notes;        // what the user should know (a resume's changes)
 };

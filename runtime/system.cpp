@@ -108,6 +108,11 @@ bool MultibodySystem::Derivative(double t, std::span<const double> y, std::span<
   PositionDerivative(model_, data_.q, data_.v, data_.locked, dy.first(nq));
   auto rates =
       std::copy(data_.vdot.begin(), data_.vdot.end(), dy.begin() + static_cast<std::ptrdiff_t>(nq));
+  if (data_.settling_damping > 0.0) {
+    // -c M v as a generalized force is -c v in the accelerations; it keeps J v = 0 of the loops.
+    for (std::size_t i = 0; i < data_.v.size(); ++i)
+      dy[nq + i] -= data_.settling_damping * data_.v[i];
+  }
   rates = std::copy(data_.wdot.begin(), data_.wdot.end(), rates);
   const SegmentPower power = PowerIntoSegments(model_, data_);
   // The applied loads' work is a term of its own, not the force elements'.

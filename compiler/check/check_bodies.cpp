@@ -40,6 +40,7 @@ void Checker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body_sta
         DeclareFileContents(*body_scope, *body_statement.block, BlockKind::kBody);
     current_body_ = saved;
     pending.reference = One(bound, "reference");
+    pending.h_point = One(bound, "h_point");
   }
   bodies_.push_back(pending);
 }
@@ -217,40 +218,7 @@ void Checker::CheckBodyDetails() {
     joint.axes_in_parent = axes[0].value_or(Vec3{});
     joint.axes_in_child = axes[1].value_or(Vec3{});
 
-    // Attributes that only some joint types have.
-    const bool euler = joint.type == JointType::kEuler;
-    auto only_for = [&](AttributeKey name, bool allowed, std::string_view types) {
-      const ast::Statement* attribute = One(bound, name);
-      if (attribute && !allowed) {
-        Report(DiagnosticKind::kMisplacedStatement, attribute->keyword_range,
-               fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name.view(), types,
-                           joint.name, JointTypeName(joint.type)),
-               "not for this joint type", "remove it, or change the joint's type");
-        return false;
-      }
-      return attribute != nullptr;
-    };
-    if (only_for("axis", joint.type == JointType::kPin || joint.type == JointType::kSlip,
-                 "pin and slip")) {
-      joint.axis = ReadVector(scope, bound, BlockKind::kJoint, "axis").value_or(Vec3{0, 0, 1});
-    }
-    const bool bending = joint.type == JointType::kBall || joint.type == JointType::kPin ||
-                         joint.type == JointType::kSlip;
-    if (only_for("flexure", bending, "ball, pin and slip")) {
-      joint.flexure = ReadFunction(scope, bound, BlockKind::kJoint, "flexure").value_or(-1);
-    }
-    if (only_for("twist", joint.type == JointType::kBall, "ball")) {
-      joint.twist = ReadFunction(scope, bound, BlockKind::kJoint, "twist").value_or(-1);
-    }
-    if (only_for("precession", euler, "euler")) {
-      joint.precession = ReadFunction(scope, bound, BlockKind::kJoint, "precession").value_or(-1);
-    }
-    if (only_for("nutation", euler, "euler")) {
-      joint.nutation = ReadFunction(scope, bound, BlockKind::kJoint, "nutation").value_or(-1);
-    }
-    if (only_for("spin", euler, "euler")) {
-      joint.spin = ReadFunction(scope, bound, BlockKind::kJoint, "spin").value_or(-1);
-    }
+    ReadJointCharacteristics(scope, bound, BlockKind::kJoint, joint);
     if (is_null) {
       for (const auto& [name, statements] : bound.attributes) {
         if (name != "at" && name != "axes") {
@@ -261,49 +229,30 @@ void Checker::CheckBodyDetails() {
         }
       }
     }
-    joint.viscous = ReadQuantity(scope, bound, BlockKind::kJoint, "viscous").value_or(0.0);
-    joint.coulomb = ReadQuantity(scope, bound, BlockKind::kJoint, "coulomb").value_or(0.0);
-    joint.energy_loss = ReadQuantity(scope, bound, BlockKind::kJoint, "energy_loss").value_or(0);
-    joint.stop = ReadQuantity(scope, bound, BlockKind::kJoint, "stop");
-    joint.twist_stop = ReadQuantity(scope, bound, BlockKind::kJoint, "twist_stop");
-    joint.stop_impulse = ReadBool(bound, "stop_impulse").value_or(false);
-    joint.restitution = ReadQuantity(scope, bound, BlockKind::kJoint, "restitution").value_or(0.0);
-    joint.lock_below = ReadQuantity(scope, bound, BlockKind::kJoint, "lock_below");
-    joint.unlock_above = ReadQuantity(scope, bound, BlockKind::kJoint, "unlock_above");
-    if (const ast::Statement* locked = One(bound, "locked")) {
-      static const std::vector<std::string> kAxes = {"precession", "nutation", "spin"};
-      for (const ast::Expr& value : locked->values) {
-        if (value.kind == ast::ExprKind::kBool) {
-          if (locked->values.size() == 1 && value.text == "true") joint.locked_axes = 7;
-          continue;
-        }
-        const auto axis = value.kind == ast::ExprKind::kPath && value.path.size() == 1
-                              ? std::find(kAxes.begin(), kAxes.end(), value.path[0])
-                              : kAxes.end();
-        if (axis == kAxes.end()) {
-          Report(DiagnosticKind::kInvalidEnumValue, value.range,
-                 "`locked` is true, false, or a list of Euler axes", "not an axis",
-                 value.kind == ast::ExprKind::kPath ? lang::DidYouMean(value.PathText(), kAxes)
-                                                    : std::string());
-          continue;
-        }
-        if (!euler) {
-          Report(DiagnosticKind::kInvalidLockAxes, value.range,
-                 fmt::format("`{}` is a {} joint; only Euler joints lock single axes", joint.name,
-                             JointTypeName(joint.type)),
-                 "no such axis", "write `locked = true` to lock the whole joint");
-          continue;
-        }
-        joint.locked_axes |= 1u << static_cast<unsigned>(axis - kAxes.begin());
-      }
+  }
+
+  // `override JOINT { ... }`: the scene changes a joint's characteristics (an imported body's,
+  // usually), in the order the overrides are written; every value is checked as in a joint.
+  for (const Pending& pending : joint_overrides_) {
+    const ast::Statement& statement = *pending.statement;
+    const BoundBlock bound = Bind(BlockKind::kOverride, statement.block.get(), statement.range);
+    if (!statement.target) {
+      Report(DiagnosticKind::kMalformedStatement, statement.range,
+             "an override names the joint it changes", "no joint named",
+             "write `override occupant.neck_upper { viscous = 2 N*m*s/rad }`");
+      continue;
     }
-    if (joint.lock_below && joint.unlock_above && *joint.lock_below > *joint.unlock_above) {
-      Report(DiagnosticKind::kValueOutOfRange, One(bound, "lock_below")->values[0].range,
-             fmt::format("joint `{}` locks below {:g} N*m but unlocks above {:g} N*m", joint.name,
-                         *joint.lock_below, *joint.unlock_above),
-             "lock level above unlock level",
-             "the lock level must not exceed the unlock level, or the joint would chatter");
+    Entity* target = Resolve(*pending.scope, *statement.target, {EntityKind::kJoint});
+    if (!target) continue;
+    Joint& joint = scenario_.joints[static_cast<std::size_t>(target->index)];
+    if (joint.parent < 0) continue;  // its own declaration did not check
+    if (joint.type == JointType::kNull && !bound.attributes.empty()) {
+      Report(DiagnosticKind::kMisplacedStatement, statement.target->range,
+             fmt::format("`{}` is a null joint, which has no characteristics", joint.name),
+             "a null joint", "override a ball, pin, euler or slip joint");
+      continue;
     }
+    ReadJointCharacteristics(*pending.scope, bound, BlockKind::kOverride, joint);
   }
 
   for (const PendingBody& pending : bodies_) {
@@ -315,7 +264,98 @@ void Checker::CheckBodyDetails() {
         }
       }
     }
+    if (pending.h_point) {
+      if (const ast::Expr* value = SingleValue(*pending.h_point)) {
+        body.h_point = ExpectVector(*pending.scope, *value, dim::kLength, "h_point");
+      }
+    }
     CheckTopology(body, pending.index);
+  }
+}
+
+// The characteristics a joint's block (or an `override` of it) gives: only what the block
+// states changes, so an override keeps the imported body's other values.
+void Checker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                       Joint& joint) {
+  const bool euler = joint.type == JointType::kEuler;
+  auto only_for = [&](AttributeKey name, bool allowed, std::string_view types) {
+    const ast::Statement* attribute = One(bound, name);
+    if (attribute && !allowed) {
+      Report(DiagnosticKind::kMisplacedStatement, attribute->keyword_range,
+             fmt::format("`{}` applies to {} joints; `{}` is a {} joint", name.view(), types,
+                         joint.name, JointTypeName(joint.type)),
+             "not for this joint type", "remove it, or change the joint's type");
+      return false;
+    }
+    return attribute != nullptr;
+  };
+  if (only_for("axis", joint.type == JointType::kPin || joint.type == JointType::kSlip,
+               "pin and slip")) {
+    joint.axis = ReadVector(scope, bound, kind, "axis").value_or(Vec3{0, 0, 1});
+  }
+  const bool bending = joint.type == JointType::kBall || joint.type == JointType::kPin ||
+                       joint.type == JointType::kSlip;
+  if (only_for("flexure", bending, "ball, pin and slip")) {
+    joint.flexure = ReadFunction(scope, bound, kind, "flexure").value_or(joint.flexure);
+  }
+  if (only_for("twist", joint.type == JointType::kBall, "ball")) {
+    joint.twist = ReadFunction(scope, bound, kind, "twist").value_or(joint.twist);
+  }
+  if (only_for("precession", euler, "euler")) {
+    joint.precession = ReadFunction(scope, bound, kind, "precession").value_or(joint.precession);
+  }
+  if (only_for("nutation", euler, "euler")) {
+    joint.nutation = ReadFunction(scope, bound, kind, "nutation").value_or(joint.nutation);
+  }
+  if (only_for("spin", euler, "euler")) {
+    joint.spin = ReadFunction(scope, bound, kind, "spin").value_or(joint.spin);
+  }
+  joint.viscous = ReadQuantity(scope, bound, kind, "viscous").value_or(joint.viscous);
+  joint.coulomb = ReadQuantity(scope, bound, kind, "coulomb").value_or(joint.coulomb);
+  joint.energy_loss = ReadQuantity(scope, bound, kind, "energy_loss").value_or(joint.energy_loss);
+  if (auto stop = ReadQuantity(scope, bound, kind, "stop")) joint.stop = stop;
+  if (auto stop = ReadQuantity(scope, bound, kind, "twist_stop")) joint.twist_stop = stop;
+  joint.stop_impulse = ReadBool(bound, "stop_impulse").value_or(joint.stop_impulse);
+  joint.restitution = ReadQuantity(scope, bound, kind, "restitution").value_or(joint.restitution);
+  if (auto level = ReadQuantity(scope, bound, kind, "lock_below")) joint.lock_below = level;
+  if (auto level = ReadQuantity(scope, bound, kind, "unlock_above")) joint.unlock_above = level;
+  if (const ast::Statement* locked = One(bound, "locked")) {
+    joint.locked_axes = 0;
+    static const std::vector<std::string> kAxes = {"precession", "nutation", "spin"};
+    for (const ast::Expr& value : locked->values) {
+      if (value.kind == ast::ExprKind::kBool) {
+        if (locked->values.size() == 1 && value.text == "true") joint.locked_axes = 7;
+        continue;
+      }
+      const auto axis = value.kind == ast::ExprKind::kPath && value.path.size() == 1
+                            ? std::find(kAxes.begin(), kAxes.end(), value.path[0])
+                            : kAxes.end();
+      if (axis == kAxes.end()) {
+        Report(DiagnosticKind::kInvalidEnumValue, value.range,
+               "`locked` is true, false, or a list of Euler axes", "not an axis",
+               value.kind == ast::ExprKind::kPath ? lang::DidYouMean(value.PathText(), kAxes)
+                                                  : std::string());
+        continue;
+      }
+      if (!euler) {
+        Report(DiagnosticKind::kInvalidLockAxes, value.range,
+               fmt::format("`{}` is a {} joint; only Euler joints lock single axes", joint.name,
+                           JointTypeName(joint.type)),
+               "no such axis", "write `locked = true` to lock the whole joint");
+        continue;
+      }
+      joint.locked_axes |= 1u << static_cast<unsigned>(axis - kAxes.begin());
+    }
+  }
+  const ast::Statement* level = One(bound, "lock_below");
+  if (!level) level = One(bound, "unlock_above");
+  if (level && !level->values.empty() && joint.lock_below && joint.unlock_above &&
+      *joint.lock_below > *joint.unlock_above) {
+    Report(DiagnosticKind::kValueOutOfRange, level->values[0].range,
+           fmt::format("joint `{}` locks below {:g} N*m but unlocks above {:g} N*m", joint.name,
+                       *joint.lock_below, *joint.unlock_above),
+           "lock level above unlock level",
+           "the lock level must not exceed the unlock level, or the joint would chatter");
   }
 }
 

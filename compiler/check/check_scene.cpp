@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
+#include "compiler/check/displacement_history.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -182,6 +183,8 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
       }
     } else if (keyword == "contact") {
       contacts_.push_back({statement, &scope, -1});
+    } else if (keyword == "override") {
+      joint_overrides_.push_back({statement, &scope, -1});
     } else if (keyword == "initial") {
       initials_.push_back({statement, &scope, -1});
     } else if (keyword == "output") {
@@ -346,19 +349,49 @@ void Checker::CheckSceneElements() {
       }
       read_axis(arguments);
     } else if (form == "trapezoid") {
+      // By its shape (peak, rise, dwell, fall), or by the test's delta-v and pulse duration
+      // with the rise and fall: then dwell = duration - rise - fall and the peak gives the
+      // delta-v, peak = delta_v / (duration - (rise + fall) / 2).
+      const bool by_delta_v = std::any_of(
+          call->arguments.begin(), call->arguments.end(),
+          [](const ast::Argument& a) { return a.name == "delta_v" || a.name == "duration"; });
       auto arguments =
-          ReadArguments(*this, *call, {"peak", "rise", "dwell", "fall", "axis", "start"},
-                        {"peak", "rise", "dwell", "fall"});
+          by_delta_v
+              ? ReadArguments(*this, *call,
+                              {"delta_v", "duration", "rise", "fall", "axis", "start"},
+                              {"delta_v", "duration", "rise", "fall"})
+              : ReadArguments(*this, *call, {"peak", "rise", "dwell", "fall", "axis", "start"},
+                              {"peak", "rise", "dwell", "fall"});
       if (!arguments.ok) continue;
       m.kind = Motion::Kind::kTrapezoid;
-      m.peak =
-          ExpectQuantity(scope, *arguments.named["peak"], dim::kAcceleration, "peak").value_or(0.0);
       m.rise = ExpectQuantity(scope, *arguments.named["rise"], dim::kTime, "rise").value_or(0.0);
-      m.dwell = ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
       m.fall = ExpectQuantity(scope, *arguments.named["fall"], dim::kTime, "fall").value_or(0.0);
+      if (by_delta_v) {
+        const double delta_v =
+            ExpectQuantity(scope, *arguments.named["delta_v"], dim::kVelocity, "delta_v")
+                .value_or(0.0);
+        const auto duration =
+            ExpectQuantity(scope, *arguments.named["duration"], dim::kTime, "duration");
+        m.dwell = duration.value_or(0.0) - m.rise - m.fall;
+        if (duration && m.dwell < 0.0) {
+          Report(DiagnosticKind::kValueOutOfRange, arguments.named["duration"]->range,
+                 fmt::format("the pulse lasts {:g} ms, less than its rise and fall ({:g} ms)",
+                             *duration * 1e3, (m.rise + m.fall) * 1e3),
+                 "shorter than rise + fall",
+                 "a trapezoid's duration is rise + dwell + fall: make it at least rise + fall");
+          continue;
+        }
+        const double effective = m.dwell + 0.5 * (m.rise + m.fall);
+        m.peak = effective > 0.0 ? delta_v / effective : 0.0;
+      } else {
+        m.peak = ExpectQuantity(scope, *arguments.named["peak"], dim::kAcceleration, "peak")
+                     .value_or(0.0);
+        m.dwell =
+            ExpectQuantity(scope, *arguments.named["dwell"], dim::kTime, "dwell").value_or(0.0);
+      }
       for (const auto& [name, value] :
            {std::pair{"rise", m.rise}, std::pair{"dwell", m.dwell}, std::pair{"fall", m.fall}}) {
-        if (value < 0.0) {
+        if (value < 0.0 && arguments.named.count(name) != 0) {
           Report(DiagnosticKind::kValueOutOfRange, arguments.named[name]->range,
                  fmt::format("the pulse's `{}` is negative", name), "negative",
                  "a trapezoid's rise, dwell and fall are durations: zero or more");
@@ -413,13 +446,16 @@ void Checker::CheckSceneElements() {
         continue;
       }
       const bool six_dof = signature && signature->operands.size() == 3;
+      // table(time -> displacement): the vehicle's travel along the axis, as recorded.
+      const bool displacement = signature && signature->operands.size() == 2 &&
+                                signature->operands[1].PathText() == "displacement";
       if (!signature || signature->operands.size() < 2 ||
           signature->operands[0].PathText() != "time" ||
-          signature->operands[1].PathText() != "acceleration" ||
+          (signature->operands[1].PathText() != "acceleration" && !displacement) ||
           (six_dof && signature->operands[2].PathText() != "angular_acceleration")) {
         Report(DiagnosticKind::kMissingArgument, call->range,
-               "a motion table is `table(time -> acceleration)` or `table(time -> acceleration "
-               "-> angular_acceleration)`",
+               "a motion table is `table(time -> acceleration)`, `table(time -> displacement)` "
+               "or `table(time -> acceleration -> angular_acceleration)`",
                "signature missing or wrong", "write `table(time -> acceleration) { rows }`");
         continue;
       }
@@ -445,6 +481,11 @@ void Checker::CheckSceneElements() {
                  "order the rows by increasing time, each time once");
           continue;
         }
+        if (displacement && m.table.empty() && *t != 0.0) {
+          Report(DiagnosticKind::kValueOutOfRange, arrow.operands[0].range,
+                 "a displacement history starts at 0 ms", "not 0",
+                 "give the travel at the motion's start first; `start` delays the whole history");
+        }
         previous = *t;
         if (six_dof) {
           auto linear = ExpectVector(scope, arrow.operands[1], dim::kAcceleration, "acceleration");
@@ -454,9 +495,21 @@ void Checker::CheckSceneElements() {
             m.six_dof.push_back({*t, (*linear)[0], (*linear)[1], (*linear)[2], (*angular)[0],
                                  (*angular)[1], (*angular)[2]});
           }
-        } else if (auto a = ExpectQuantity(scope, arrow.operands[1], dim::kAcceleration,
-                                           "acceleration")) {
+        } else if (auto a = ExpectQuantity(scope, arrow.operands[1],
+                                           displacement ? dim::kLength : dim::kAcceleration,
+                                           displacement ? "displacement" : "acceleration")) {
           m.table.push_back({*t, *a});
+        }
+      }
+      if (displacement && m.table.size() >= 2) {
+        // The natural cubic spline through the samples, as its acceleration table; the vehicle
+        // starts where the history starts, at its rate there (before the motion's `start`, it
+        // moves steadily at that rate).
+        const AccelerationHistory history = AccelerationFromDisplacement(m.table);
+        m.table = history.table;
+        for (std::size_t k = 0; k < 3; ++k) {
+          vehicle.velocity[k] += m.axis[k] * history.velocity;
+          vehicle.position[k] += m.axis[k] * (history.position - history.velocity * m.start);
         }
       }
       if ((six_dof ? m.six_dof.size() : m.table.size()) < 2 && !rows.rows.empty()) {

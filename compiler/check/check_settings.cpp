@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
+#include "compiler/check/initial_pose.h"
 #include "runtime/integrate/ode.h"
 
 namespace sled::compiler::internal {
@@ -127,7 +128,18 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
       }
     } else if (keyword == "settle") {
       const BoundBlock bound = Bind(BlockKind::kSettle, statement->block.get(), statement->range);
-      run.settle_duration = ReadQuantity(scope, bound, BlockKind::kSettle, "duration");
+      SettleSettings settle;
+      settle.duration =
+          ReadQuantity(scope, bound, BlockKind::kSettle, "duration").value_or(settle.duration);
+      settle.damping =
+          ReadQuantity(scope, bound, BlockKind::kSettle, "damping").value_or(settle.damping);
+      settle.velocity =
+          ReadQuantity(scope, bound, BlockKind::kSettle, "velocity").value_or(settle.velocity);
+      settle.angular_velocity = ReadQuantity(scope, bound, BlockKind::kSettle, "angular_velocity")
+                                    .value_or(settle.angular_velocity);
+      settle.force_change = ReadQuantity(scope, bound, BlockKind::kSettle, "force_change")
+                                .value_or(settle.force_change);
+      run.settle = settle;
     } else if (keyword == "symmetry") {
       static const std::vector<std::string> kKinds = {"planar", "mirror"};
       const std::string kind = statement->target ? statement->target->PathText() : "";
@@ -215,8 +227,117 @@ void Checker::CheckInitialConditions() {
     initial.velocity = ReadVector(scope, bound, BlockKind::kInitial, "velocity");
     initial.angular_velocity = ReadVector(scope, bound, BlockKind::kInitial, "angular_velocity");
     initial.joint_angles = ReadVector(scope, bound, BlockKind::kInitial, "angles");
+    if (const ast::Statement* h_statement = One(bound, "h_point")) {
+      PlaceByHPoint(scope, bound, *h_statement, initial);
+    }
     scenario_.initial_conditions.push_back(std::move(initial));
   }
+}
+
+// `initial BODY { h_point = P }`: the body's reference segment placed so that the H-point its
+// body declares is at P (ground frame), in the orientation the block gives.
+void Checker::PlaceByHPoint(Scope& scope, const BoundBlock& bound,
+                            const ast::Statement& h_statement, InitialCondition& initial) {
+  const SourceRange where = h_statement.keyword_range;
+  if (initial.kind != InitialCondition::Kind::kBody) {
+    Report(DiagnosticKind::kMisplacedStatement, where, "`h_point` places a body",
+           "not for this target", "name the body after `initial`, or give `position`");
+    return;
+  }
+  const Body& body = scenario_.bodies[static_cast<std::size_t>(initial.index)];
+  if (!body.h_point) {
+    Report(DiagnosticKind::kMissingAttribute, where,
+           fmt::format("body `{}` declares no H-point", body.name), "no `h_point` in the body",
+           "give the body `h_point = (x, y, z) mm` in its reference segment's frame, or place "
+           "it by `position`");
+    return;
+  }
+  if (initial.position) {
+    Report(DiagnosticKind::kDuplicateAttribute, where,
+           "`h_point` and `position` both place the body", "given with `position`",
+           "keep one of the two");
+    return;
+  }
+  const auto target = ReadVector(scope, bound, BlockKind::kInitial, "h_point");
+  if (!target) return;
+  const Mat3 rotation = RotationFromYawPitchRoll(initial.orientation.value_or(Vec3{}));
+  Vec3 position{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    double turned = 0.0;
+    for (std::size_t j = 0; j < 3; ++j) turned += rotation[i][j] * (*body.h_point)[j];
+    position[i] = (*target)[i] - turned;
+  }
+  initial.position = position;
+}
+
+// The dimension of a criterion's value: what its `limit` is given in.
+static Dimension CriterionDimension(Criterion::Kind kind) {
+  switch (kind) {
+    case Criterion::Kind::kHead3ms:
+    case Criterion::Kind::kChest3ms:
+      return dim::kAcceleration;
+    case Criterion::Kind::kNeckTension:
+    case Criterion::Kind::kNeckCompression:
+    case Criterion::Kind::kFemurLoad:
+      return dim::kForce;
+    case Criterion::Kind::kViscousCriterion:
+      return dim::kVelocity;
+    case Criterion::Kind::kHic15:
+    case Criterion::Kind::kHic36:
+    case Criterion::Kind::kGaddHead:
+    case Criterion::Kind::kGaddChest:
+    case Criterion::Kind::kNij:
+    case Criterion::Kind::kNkm:
+      return dim::kDimensionless;
+  }
+  return dim::kDimensionless;
+}
+
+// A criterion's own limit: `hic15(pedestrian.head, limit = 1000, standard = "GTR 9")`, in the
+// criterion's dimension, always with the standard it comes from. False after reporting.
+bool Checker::ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion& criterion) {
+  const ast::Expr* limit = nullptr;
+  const ast::Expr* standard = nullptr;
+  bool ok = true;
+  for (std::size_t i = 1; i < call.arguments.size(); ++i) {
+    const ast::Argument& argument = call.arguments[i];
+    if (argument.name == "limit" && !limit) {
+      limit = argument.value.get();
+    } else if (argument.name == "standard" && !standard) {
+      standard = argument.value.get();
+    } else {
+      Report(DiagnosticKind::kUnknownArgument,
+             argument.name.empty() ? argument.value->range : argument.name_range,
+             "a criterion takes its target, then `limit` and `standard`", "unexpected argument",
+             "write `hic15(pedestrian.head, limit = 1000, standard = \"GTR 9\")`");
+      ok = false;
+    }
+  }
+  if (!limit && !standard) return ok;
+  if (!limit || !standard) {
+    Report(DiagnosticKind::kMissingArgument, call.range,
+           limit ? "a criterion's own limit names the standard it comes from"
+                 : "a criterion's `standard` comes with the `limit` it sets",
+           limit ? "no `standard`" : "no `limit`",
+           "give both: `limit = 1000, standard = \"GTR 9\"`");
+    return false;
+  }
+  if (standard->kind != ast::ExprKind::kString || standard->text.empty()) {
+    Report(DiagnosticKind::kWrongValueKind, standard->range,
+           "a criterion's `standard` is its name in quotes", "not a string",
+           "write the standard's name in double quotes, such as `standard = \"Euro NCAP\"`");
+    return false;
+  }
+  const auto value = ExpectQuantity(scope, *limit, CriterionDimension(criterion.kind), "limit");
+  if (!value) return false;
+  if (!(*value > 0.0)) {
+    Report(DiagnosticKind::kValueOutOfRange, limit->range, "a criterion's limit must be positive",
+           "not positive", "give the largest value the standard allows");
+    return false;
+  }
+  criterion.limit = *value;
+  criterion.standard = standard->text;
+  return ok;
 }
 
 // `filter cfc1000` on an output request: the class in Hz, 0 for `none`, -1 when invalid
@@ -397,7 +518,7 @@ void Checker::CheckOutputs() {
     }
     if (const ast::Statement* criteria = One(bound, "criteria")) {
       for (const ast::Expr& value : criteria->values) {
-        if (value.kind != ast::ExprKind::kCall || value.arguments.size() != 1 ||
+        if (value.kind != ast::ExprKind::kCall || value.arguments.empty() ||
             !value.arguments[0].name.empty()) {
           Report(DiagnosticKind::kWrongValueKind, value.range,
                  "a criterion is written `name(target)`, as in `hic15(occupant.head)`",
@@ -421,6 +542,7 @@ void Checker::CheckOutputs() {
         (kind == EntityKind::kSegment ? criterion.segment : criterion.joint) = target->index;
         criterion.iso_filter = iso_filter;
         criterion.range = value.range;
+        if (!ReadCriterionLimit(scope, value, criterion)) continue;
         scenario_.criteria.push_back(criterion);
       }
     }

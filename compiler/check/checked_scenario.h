@@ -110,6 +110,7 @@ struct Body {
   std::vector<int> segments;
   std::vector<int> joints;
   std::vector<int> reference_segments;  // the root of each tree (null joints start new ones)
+  std::optional<Vec3> h_point;          // in the (first) reference segment's frame
   SourceRange range;
 };
 
@@ -317,10 +318,15 @@ struct Criterion {
     kNeckCompression,
     kFemurLoad,
     kViscousCriterion,
+    kNkm,
   };
   Kind kind = Kind::kHic15;
   int segment = -1;  // head, chest criteria
   int joint = -1;    // neck and femur criteria
+  // The scene's own limit (SI, in the criterion's dimension) and the standard it comes from;
+  // none: the default limit of the criterion's standard.
+  std::optional<double> limit;
+  std::string standard;
   // The block's filter_standard is ISO 6487.
   bool iso_filter = false;
   SourceRange range;
@@ -335,6 +341,15 @@ enum class Symmetry { kNone, kPlanar, kMirror };
 // until the run ends, so a million rows of a full occupant already take about a gigabyte.
 inline constexpr double kMaxOutputRows = 1e6;
 
+// A `settle` block: the damped pre-simulation before the run (runtime/settle.h); SI units.
+struct SettleSettings {
+  double duration = 0.0;
+  double damping = 10.0;
+  double velocity = 1e-3;
+  double angular_velocity = 0.01;
+  double force_change = 0.01;
+};
+
 struct RunSettings {
   double start = 0.0;
   double end = 0.0;
@@ -348,7 +363,7 @@ struct RunSettings {
   Vec3 gravity{0, 0, -9.80665};
   std::optional<double> checkpoint_every;
   std::string resume_from;
-  std::optional<double> settle_duration;
+  std::optional<SettleSettings> settle;
   Symmetry symmetry = Symmetry::kNone;
   std::vector<std::array<int, 2>> mirror_pairs;  // segment pairs mirrored in the xz plane
 };

@@ -211,6 +211,10 @@ class Checker {
   // Force and torque laws of the wrong sign (compiler/check/check_element_laws.cpp): E0420.
   void CheckElementLaws();
   void ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind, Ellipsoid& ellipsoid);
+  // The torque characteristics, damping, stops and locking a joint's (or an override's) block
+  // states; what it does not state stays as it was.
+  void ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                Joint& joint);
   // `at FRAME = (x, y, z) mm` statements of a joint, spring or constraint: one point per frame.
   // Reports a frame that is neither of the two, and (when `required`) a missing one.
   std::array<std::optional<Vec3>, 2> ReadAtPoints(Scope& scope, const BoundBlock& bound,
@@ -224,6 +228,9 @@ class Checker {
                                                         const ast::Expr& arrow);
   void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
   void CheckInitialConditions();
+  bool ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion& criterion);
+  void PlaceByHPoint(Scope& scope, const BoundBlock& bound, const ast::Statement& h_statement,
+                     InitialCondition& initial);
   void CheckOutputs();
   bool ReadOutputFrame(Scope& scope, const ast::Statement& request, const OutputSpec& spec,
                        OutputRequest& output);
@@ -299,10 +306,12 @@ class Checker {
     Scope* scope;  // the body's scope
     int index;
     const ast::Statement* reference = nullptr;  // `reference = segment`
+    const ast::Statement* h_point = nullptr;    // `h_point = (x, y, z) mm`
   };
   std::vector<PendingBody> bodies_;
   std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,
-      springs_, loads_, constraints_, initials_, outputs_, functions_, segments_, joints_;
+      springs_, loads_, constraints_, initials_, outputs_, functions_, segments_, joints_,
+      joint_overrides_;
   int current_body_ = -1;  // the body whose block DeclareFileContents is reading
   std::vector<const ast::Statement*> run_blocks_;  // time, integrator, restart, settle, symmetry
   const ast::Statement* scenario_statement_ = nullptr;

@@ -70,7 +70,8 @@ std::string Dump(const CheckedScenario& s) {
                   r.absolute_tolerance, r.min_step, Optional(r.max_step), Optional(r.initial_step),
                   V(r.gravity)));
   line(fmt::format("restart every {} from \"{}\" settle {} symmetry {} pairs {}",
-                   Optional(r.checkpoint_every), r.resume_from, Optional(r.settle_duration),
+                   Optional(r.checkpoint_every), r.resume_from,
+                   r.settle ? fmt::format("{}", r.settle->duration) : std::string("-"),
                    static_cast<int>(r.symmetry), r.mirror_pairs.size()));
   for (std::size_t i = 0; i < s.functions.size(); ++i) {
     line(fmt::format("function #{} {}", i, FunctionText(s, static_cast<FunctionId>(i))));

@@ -85,6 +85,8 @@ std::vector<BlockSpec> MakeSpecs() {
        "a fixed-point, fixed-distance, rolling or sliding "
        "constraint"},
       {"initial", BlockKind::kInitial, "initial position, orientation, velocity or joint angles"},
+      {"override", BlockKind::kOverride,
+       "changes the characteristics of a joint of an imported body"},
       {"output", BlockKind::kOutput, "the time histories and injury criteria to compute"},
       {"time", BlockKind::kTime, "start, end and output step of the run"},
       {"integrator", BlockKind::kIntegrator, "the integration method and its tolerances"},
@@ -122,7 +124,9 @@ std::vector<BlockSpec> MakeSpecs() {
   specs.push_back({BlockKind::kBody,
                    {Reference("reference", "segment",
                               "the reference segment; default: the root of the "
-                              "joint tree")},
+                              "joint tree"),
+                    Vector("h_point", d::kLength,
+                           "the H-point (hip-joint centre) in the reference segment's frame")},
                    {{"segment", BlockKind::kSegment, "a rigid segment"},
                     {"joint", BlockKind::kJoint, "a joint: ball, pin, euler, slip or null"},
                     {"ellipsoid", BlockKind::kEllipsoid, "an extra contact ellipsoid on a segment"},
@@ -145,31 +149,34 @@ std::vector<BlockSpec> MakeSpecs() {
                2.0, 32.0)};
   specs.push_back({BlockKind::kSegmentEllipsoid, ellipsoid_attributes, {}});
   specs.push_back({BlockKind::kEllipsoid, ellipsoid_attributes, {}});
-  specs.push_back(
-      {BlockKind::kJoint,
-       {AtFrame("joint location in one of the two segments: `at pelvis = (0, 0, 120) mm`"),
-        Repeatable(Vector("axes", d::kAngle,
-                          "yaw, pitch, roll of the joint axes in one segment: `axes pelvis = "
-                          "(0, 0, 0) deg`")),
-        Vector("axis", d::kDimensionless, "pin or slip axis in the parent segment"),
-        Function("flexure", d::kAngle, d::kTorque, "flexure torque against flexure angle"),
-        Function("twist", d::kAngle, d::kTorque, "twist torque against twist angle"),
-        Function("precession", d::kAngle, d::kTorque, "Euler joint: precession torque"),
-        Function("nutation", d::kAngle, d::kTorque, "Euler joint: nutation torque"),
-        Function("spin", d::kAngle, d::kTorque, "Euler joint: spin torque"),
-        NonNegative("viscous", d::kRotationalDamping, "viscous torque coefficient"),
-        NonNegative("coulomb", d::kTorque, "Coulomb friction torque"),
-        Fraction("energy_loss", "fraction of energy dissipated in the joint spring"),
-        Quantity("stop", d::kAngle, "flexure angle of the joint stop", false, 0.0, 3.1416, true),
-        Quantity("twist_stop", d::kAngle, "twist angle of the joint stop", false, 0.0, 3.1416,
-                 true),
-        Bool("stop_impulse", "an impulse (with restitution) when the joint hits its stop"),
-        Fraction("restitution", "coefficient of restitution at the stop"),
-        Typed("locked", V::kLock,
-              "true, false, or the Euler axes locked at the start: precession, nutation, spin"),
-        NonNegative("lock_below", d::kTorque, "the joint locks when its torque falls below"),
-        NonNegative("unlock_above", d::kTorque, "a locked joint unlocks above this torque")},
-       {}});
+  // A joint's characteristics: what an `override` of an imported body's joint may change.
+  const std::vector<AttributeSpec> joint_characteristics = {
+      Function("flexure", d::kAngle, d::kTorque, "flexure torque against flexure angle"),
+      Function("twist", d::kAngle, d::kTorque, "twist torque against twist angle"),
+      Function("precession", d::kAngle, d::kTorque, "Euler joint: precession torque"),
+      Function("nutation", d::kAngle, d::kTorque, "Euler joint: nutation torque"),
+      Function("spin", d::kAngle, d::kTorque, "Euler joint: spin torque"),
+      NonNegative("viscous", d::kRotationalDamping, "viscous torque coefficient"),
+      NonNegative("coulomb", d::kTorque, "Coulomb friction torque"),
+      Fraction("energy_loss", "fraction of energy dissipated in the joint spring"),
+      Quantity("stop", d::kAngle, "flexure angle of the joint stop", false, 0.0, 3.1416, true),
+      Quantity("twist_stop", d::kAngle, "twist angle of the joint stop", false, 0.0, 3.1416, true),
+      Bool("stop_impulse", "an impulse (with restitution) when the joint hits its stop"),
+      Fraction("restitution", "coefficient of restitution at the stop"),
+      Typed("locked", V::kLock,
+            "true, false, or the Euler axes locked at the start: precession, nutation, spin"),
+      NonNegative("lock_below", d::kTorque, "the joint locks when its torque falls below"),
+      NonNegative("unlock_above", d::kTorque, "a locked joint unlocks above this torque")};
+  std::vector<AttributeSpec> joint_attributes = {
+      AtFrame("joint location in one of the two segments: `at pelvis = (0, 0, 120) mm`"),
+      Repeatable(Vector("axes", d::kAngle,
+                        "yaw, pitch, roll of the joint axes in one segment: `axes pelvis = "
+                        "(0, 0, 0) deg`")),
+      Vector("axis", d::kDimensionless, "pin or slip axis in the parent segment")};
+  joint_attributes.insert(joint_attributes.end(), joint_characteristics.begin(),
+                          joint_characteristics.end());
+  specs.push_back({BlockKind::kJoint, joint_attributes, {}});
+  specs.push_back({BlockKind::kOverride, joint_characteristics, {}});
   specs.push_back({BlockKind::kVehicle,
                    {Typed("motion", V::kMotion, "prescribed motion: half_sine, trapezoid or table"),
                     Vector("position", d::kLength, "initial position in the ground frame"),
@@ -257,6 +264,8 @@ std::vector<BlockSpec> MakeSpecs() {
        {}});
   specs.push_back({BlockKind::kInitial,
                    {Vector("position", d::kLength, "position of the reference segment or vehicle"),
+                    Vector("h_point", d::kLength,
+                           "a body: where its H-point is, instead of its reference segment"),
                     Vector("orientation", d::kAngle, "yaw, pitch and roll"),
                     Vector("velocity", d::kVelocity, "linear velocity"),
                     Vector("angular_velocity", d::kAngularVelocity, "angular velocity"),
@@ -288,7 +297,16 @@ std::vector<BlockSpec> MakeSpecs() {
                     Text("resume_from", "a checkpoint file to continue from")},
                    {}});
   specs.push_back({BlockKind::kSettle,
-                   {Positive("duration", d::kTime, "time to settle under gravity", true)},
+                   {Positive("duration", d::kTime, "longest time to settle under gravity", true),
+                    Positive("damping", d::kFrequency,
+                             "mass-proportional damping rate while settling; default 10 1/s"),
+                    Positive("velocity", d::kVelocity,
+                             "settled when every centre of mass is slower; default 1 mm/s"),
+                    Positive("angular_velocity", d::kAngularVelocity,
+                             "and every segment turns slower; default 0.01 rad/s"),
+                    Positive("force_change", d::kDimensionless,
+                             "and no contact, belt or spring force changes by more than this "
+                             "fraction of the largest in 10 ms; default 0.01")},
                    {}});
   specs.push_back({BlockKind::kSymmetry,
                    {Repeatable(Typed("pair", V::kPair, "two segments mirrored in the xz plane"))},
@@ -348,6 +366,8 @@ std::string_view BlockName(BlockKind kind) {
       return "restart";
     case BlockKind::kSettle:
       return "settle";
+    case BlockKind::kOverride:
+      return "override";
     case BlockKind::kSymmetry:
       return "symmetry";
   }
@@ -448,6 +468,7 @@ const std::vector<CriterionSpec>& AllCriterionSpecs() {
       {"neck_compression", "joint", "peak neck compression"},
       {"femur_load", "joint", "peak axial femur load"},
       {"viscous_criterion", "segment", "Viscous Criterion of the chest"},
+      {"nkm", "joint", "neck injury criterion of rear impacts, from the upper neck joint"},
   };
   return kCriteria;
 }

@@ -40,6 +40,7 @@ enum class BlockKind {
   kRestart,
   kSettle,
   kSymmetry,
+  kOverride,
 };
 
 std::string_view BlockName(BlockKind kind);

@@ -310,6 +310,13 @@ int RunCommand(const RunCommandOptions& options) {
         s.exponential_share.simulated, s.exponential_share.steps, s.exponential_share.wall_seconds,
         s.switches, s.switches == 1 ? "" : "es");
   }
+  if (summary.settle.converged) {
+    std::cerr << fmt::format(
+        "sled: settled in {:.4g} s ({} steps): centres of mass at most {:.3g} m/s, segments "
+        "turning at most {:.3g} rad/s, forces changing by {:.3g} of the largest\n",
+        summary.settle.time, summary.settle.steps, summary.settle.largest_velocity,
+        summary.settle.largest_angular_velocity, summary.settle.largest_force_change);
+  }
   if (!summary.checkpoints.empty()) {
     std::cerr << fmt::format("sled: {} checkpoint{}, the last `{}`\n", summary.checkpoints.size(),
                              summary.checkpoints.size() == 1 ? "" : "s",

@@ -163,7 +163,6 @@ runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager&
   lowering::LowerBelts(lowering);
   lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);
-  lowering::NoteLeftOut(lowering);
   lowering.ReportNotes(*options.diagnostics);
   return model;
 }

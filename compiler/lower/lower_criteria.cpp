@@ -1,6 +1,8 @@
 // Channel filter classes and injury criteria: each output group gets its SAE J211 class (the
 // request's `filter`, else the default for its kind), and each criterion the output groups it
 // reads, added to the Model when the scene did not request them.
+#include <limits>
+
 #include <fmt/format.h>
 
 #include "compiler/check/schema.h"
@@ -11,6 +13,8 @@ namespace sled::compiler::lowering {
 namespace {
 
 using runtime::Model;
+
+constexpr double kStandardGravity = 9.80665;  // m/s^2 per g, the unit of the 3 ms criteria
 
 // J211's channel classes for what a request measures: accelerations as head, pelvis and rib
 // accelerometers (CFC 1000), joint forces as neck load cells (CFC 1000), joint torques as neck
@@ -71,6 +75,8 @@ runtime::Model::CriterionKind ModelKind(Criterion::Kind kind) {
       return K::kNeckTension;
     case Criterion::Kind::kNeckCompression:
       return K::kNeckCompression;
+    case Criterion::Kind::kNkm:
+      return K::kNkm;
     case Criterion::Kind::kFemurLoad:
     case Criterion::Kind::kViscousCriterion:  // not lowered (LowerCriteria notes it)
       return K::kFemurLoad;
@@ -152,7 +158,7 @@ void LowerCriteria(Lowering& lowering) {
       }
       const auto [index, mirrored] = ModelSegment(lowering, joint.child);
       output = FindOrAddOutput(lowering, Model::OutputKind::kJointForce, index, mirrored, target);
-      if (criterion.kind == Criterion::Kind::kNij) {
+      if (criterion.kind == Criterion::Kind::kNij || criterion.kind == Criterion::Kind::kNkm) {
         moment_output =
             FindOrAddOutput(lowering, Model::OutputKind::kJointTorque, index, mirrored, target);
       }
@@ -163,6 +169,13 @@ void LowerCriteria(Lowering& lowering) {
     model.criterion_output.push_back(output);
     model.criterion_moment_output.push_back(moment_output);
     model.criterion_filter_iso.push_back(criterion.iso_filter ? 1 : 0);
+    // The scene's own limit, in the unit the criterion reports (g for the 3 ms criteria).
+    const bool in_g =
+        criterion.kind == Criterion::Kind::kHead3ms || criterion.kind == Criterion::Kind::kChest3ms;
+    model.criterion_limit.push_back(criterion.limit
+                                        ? *criterion.limit / (in_g ? kStandardGravity : 1.0)
+                                        : std::numeric_limits<double>::quiet_NaN());
+    model.criterion_standard.push_back(criterion.standard);
   }
 }
 

@@ -204,6 +204,13 @@ void LowerRunSettings(Lowering& lowering) {
   model.min_step = run.min_step;
   model.max_step = run.max_step.value_or(0.0);
   model.initial_step = run.initial_step.value_or(0.0);
+  if (run.settle) {
+    model.settle.duration = run.settle->duration;
+    model.settle.damping = run.settle->damping;
+    model.settle.velocity = run.settle->velocity;
+    model.settle.angular_velocity = run.settle->angular_velocity;
+    model.settle.force_change = run.settle->force_change;
+  }
 }
 
 std::string_view OutputKeyword(OutputRequest::Kind kind) {
@@ -334,16 +341,6 @@ void LowerScene(Lowering& lowering) {
   LowerConstraints(lowering);
   LowerRunSettings(lowering);
   LowerOutputs(lowering);
-}
-
-void NoteLeftOut(Lowering& lowering) {
-  const CheckedScenario& scenario = lowering.scenario();
-  const RunSettings& run = scenario.run;
-  if (run.settle_duration) {
-    lowering.AddNote(lang::DiagnosticKind::kNotSimulatedYet, {},
-                     "equilibrium settling is not simulated yet; the run starts from the "
-                     "initial conditions as given");
-  }
 }
 
 }  // namespace sled::compiler::lowering

@@ -142,7 +142,5 @@ void LowerCriteria(Lowering& lowering);
 // The shapes the animation draws for segments beyond their contact ellipsoids (after
 // LowerContacts).
 void LowerShapes(Lowering& lowering);
-// Notes for the features the Model does not hold yet.
-void NoteLeftOut(Lowering& lowering);
 
 }  // namespace sled::compiler::lowering

@@ -236,6 +236,7 @@ constexpr CriterionCode kCriterionCodes[] = {
     {"neck_compression", "NECK", "UP", "CO", "FO"},
     {"femur_load", "FEMR", "00", "00", "FO"},
     {"viscous_criterion", "VCCR", "00", "00", "00"},
+    {"nkm", "NKMC", "00", "00", "00"},  // a location of our own: not in the RED B list we have
 };
 
 }  // namespace
@@ -342,8 +343,10 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
     }
     if (location.main == "FEMR") location.fine = LocationOf(value.target).fine;
     if (value.variant == "continuous") fine2 = "XS";
-    // Nij's quadrant terms: NTE, NTF, NCE, NCF in fine location 1.
-    if (value.name == "nij" && value.variant.size() == 3) location.fine = value.variant.substr(1);
+    // Nij's quadrant terms: NTE, NTF, NCE, NCF in fine location 1; Nkm's NEA, NFA, NEP, NFP.
+    if ((value.name == "nij" || value.name == "nkm") && value.variant.size() == 3) {
+      location.fine = value.variant.substr(1);
+    }
     IsoMmeChannel channel;
     channel.code =
         book.Take(Code(positions.Of(value.target), location, fine2, dimension, 'R', 'X'));

@@ -33,6 +33,7 @@ int InputClass(Kind kind) {
     case Kind::kGaddChest:
       return 180;
     case Kind::kNij:
+    case Kind::kNkm:
     case Kind::kFemurLoad:
       return 600;
   }
@@ -66,6 +67,8 @@ Limit LimitOf(Kind kind) {
       return {4000.0, "FMVSS 208"};
     case Kind::kFemurLoad:
       return {10008.0, "FMVSS 208"};
+    case Kind::kNkm:
+      return {1.0, "Schmitt et al. (2001)"};
   }
   return {0.0, ""};
 }
@@ -89,6 +92,11 @@ class Evaluator {
     base.has_limit = true;
     base.limit = limit.value;
     base.limit_source = limit.source;
+    // The scene's own limit for its load case, with the standard it names.
+    if (c < model_.criterion_limit.size() && !std::isnan(model_.criterion_limit[c])) {
+      base.limit = model_.criterion_limit[c];
+      base.limit_source = model_.criterion_standard[c];
+    }
     standard_ = c < model_.criterion_filter_iso.size() && model_.criterion_filter_iso[c] != 0
                     ? FilterStandard::kIso6487
                     : FilterStandard::kSaeJ211;
@@ -141,7 +149,8 @@ class Evaluator {
         break;
       }
       case Kind::kNij:
-        EvaluateNij(c, base, xyz, out);
+      case Kind::kNkm:
+        EvaluateNeck(c, kind == Kind::kNkm, base, xyz, out);
         break;
     }
   }
@@ -191,9 +200,10 @@ class Evaluator {
     return compression;
   }
 
-  void EvaluateNij(std::size_t c, const CriterionValue& base,
-                   const std::array<std::vector<double>, 3>& force,
-                   std::vector<CriterionValue>& out) {
+  // Nij (axial force and moment) or Nkm (shear force and moment), with their quadrants.
+  void EvaluateNeck(std::size_t c, bool nkm, const CriterionValue& base,
+                    const std::array<std::vector<double>, 3>& force,
+                    std::vector<CriterionValue>& out) {
     std::array<std::vector<double>, 3> moment;
     CriterionValue value = base;
     if (!FilterGroup(model_.criterion_moment_output[c], base.filter_class, moment, value)) {
@@ -205,12 +215,16 @@ class Evaluator {
     std::vector<double> flexion(moment[1]);
     for (double& m : flexion) m = -m;
     // The moment is taken about the joint point, which is the condyle: no load-cell offset.
+    // Nkm's shear is the force along the head's x: anterior when the neck pushes it forward.
     const NijResult nij =
-        NeckInjuryCriterion(tension, force[0], flexion, 0.0, kHybridIII50thMale, period_, start_);
+        nkm ? NeckInjuryCriterion(force[0], force[0], flexion, 0.0, kNkmIntercepts, period_, start_)
+            : NeckInjuryCriterion(tension, force[0], flexion, 0.0, kHybridIII50thMale, period_,
+                                  start_);
     out.push_back(Done(value, nij.value, "", nij.time, nij.time));
     for (std::size_t q = 0; q < nij.quadrants.size(); ++q) {
       CriterionValue term = base;
-      term.variant = QuadrantName(static_cast<NeckQuadrant>(q));
+      term.variant = nkm ? NkmQuadrantName(static_cast<NeckQuadrant>(q))
+                         : QuadrantName(static_cast<NeckQuadrant>(q));
       const QuadrantPeak& peak = nij.quadrants[q];
       if (!peak.reached) {
         term.reason = "the neck load never entered this quadrant";

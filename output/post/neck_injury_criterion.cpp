@@ -19,6 +19,20 @@ const char* QuadrantName(NeckQuadrant quadrant) {
   return "";
 }
 
+const char* NkmQuadrantName(NeckQuadrant quadrant) {
+  switch (quadrant) {
+    case NeckQuadrant::kTensionExtension:
+      return "NEA";
+    case NeckQuadrant::kTensionFlexion:
+      return "NFA";
+    case NeckQuadrant::kCompressionExtension:
+      return "NEP";
+    case NeckQuadrant::kCompressionFlexion:
+      return "NFP";
+  }
+  return "";
+}
+
 NijResult NeckInjuryCriterion(std::span<const double> fz, std::span<const double> fx,
                               std::span<const double> my, double condyle_offset,
                               const NeckIntercepts& intercepts, double sample_period,

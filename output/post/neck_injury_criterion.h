@@ -19,6 +19,12 @@ struct NeckIntercepts {
 };
 // Hybrid III 50th male, in position (FMVSS 208).
 inline constexpr NeckIntercepts kHybridIII50thMale{6806.0, 6160.0, 310.0, 135.0};
+// Nkm (Schmitt, Muser and Niederer, ESV 2001, paper 124: a neck criterion for rear impacts)
+// has the same form with the shear force Fx in place of the axial force: Nkm = Fx / Fint +
+// My / Mint, with Fint = 845 N for both shear senses, Mint = 88.1 N*m in flexion and 47.5 N*m in
+// extension; its limit is 1.0. Pass the shear as `fz` to NeckInjuryCriterion; its tension and
+// compression quadrants are then the anterior and posterior shear (NkmQuadrantName).
+inline constexpr NeckIntercepts kNkmIntercepts{845.0, 845.0, 88.1, 47.5};
 // The upper-neck load cell of the Hybrid III sits this far below the occipital condyle [m].
 inline constexpr double kHybridIIICondyleOffset = 0.01778;
 
@@ -30,6 +36,9 @@ enum class NeckQuadrant {
 };
 // "NTE", "NTF", "NCE", "NCF".
 const char* QuadrantName(NeckQuadrant quadrant);
+// The same quadrants of Nkm: "NEA", "NFA", "NEP", "NFP" (extension or flexion, anterior or
+// posterior shear).
+const char* NkmQuadrantName(NeckQuadrant quadrant);
 
 struct QuadrantPeak {
   double value = 0.0;  // 0 when the load never entered the quadrant

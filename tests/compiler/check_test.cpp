@@ -482,5 +482,103 @@ TEST(CheckOutputs, AnUnknownFilterClassOrStandardIsReported) {
   EXPECT_THAT(r.messages, Contains(HasSubstr("`filter_standard` is `sae_j211` or `iso_6487`")));
 }
 
+// --- Load cases: overriding an imported body's joints, seating by the H-point, trapezoids by
+// delta-v, and criteria with the scene's own limits.
+
+const Joint& NamedJoint(const CheckedScenario& scenario, const std::string& name) {
+  for (const Joint& joint : scenario.joints) {
+    if (joint.name == name) return joint;
+  }
+  throw std::runtime_error("no joint " + name);
+}
+
+TEST(CheckOverride, ChangesOnlyWhatItStatesOfAnImportedJoint) {
+  const Result plain = CheckText(Scene("  import std.humans.male50 as occupant"));
+  const Result r = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  function stiff = table(angle -> torque) { 0 deg -> 0 N*m  30 deg -> 60 N*m }
+  override occupant.neck_upper { nutation = stiff  viscous = 3 N*m*s/rad  stop = 40 deg }
+  override occupant.elbow_l { locked = true })"));
+  ASSERT_EQ(r.errors + r.warnings, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  const Joint& before = NamedJoint(plain.scenario, "occupant.neck_upper");
+  const Joint& neck = NamedJoint(r.scenario, "occupant.neck_upper");
+  EXPECT_DOUBLE_EQ(neck.viscous, 3.0);
+  ASSERT_TRUE(neck.stop.has_value());
+  EXPECT_NEAR(*neck.stop, 40.0 * std::numbers::pi / 180.0, 1e-12);
+  ASSERT_GE(neck.nutation, 0);
+  EXPECT_EQ(r.scenario.functions[static_cast<std::size_t>(neck.nutation)].points.size(), 2u);
+  // What the override does not state stays the body's.
+  EXPECT_EQ(neck.precession >= 0, before.precession >= 0);
+  EXPECT_EQ(neck.spin >= 0, before.spin >= 0);
+  EXPECT_EQ(neck.twist_stop, before.twist_stop);
+  EXPECT_EQ(neck.location_in_parent, before.location_in_parent);
+  EXPECT_EQ(NamedJoint(r.scenario, "occupant.elbow_l").locked_axes, 7u);
+  EXPECT_EQ(NamedJoint(r.scenario, "occupant.elbow_r").locked_axes,
+            NamedJoint(plain.scenario, "occupant.elbow_r").locked_axes);
+}
+
+TEST(CheckOverride, ChecksEachValueAsTheJointWould) {
+  const Result r = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  override occupant.knee_l { twist = 2 N*m/deg }
+  override occupant.knee_r { viscous = 2 kg }
+  override occupant.pelvis { viscous = 1 N*m*s/rad }
+  override occupant.hip_l { at occupant.pelvis = (0, 0, 0) mm })"));
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0211@5:30")));  // twist on a pin joint
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0302@6:40")));  // wrong dimension
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0205@7:12")));  // a segment, not a joint
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0211@8:29")));  // geometry is not overridable
+}
+
+TEST(CheckHPoint, SeatsTheBodyByItsHPoint) {
+  const Result r = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  initial occupant { h_point = (100, 0, 200) mm  orientation = (0, -20, 0) deg })"));
+  ASSERT_EQ(r.errors, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  ASSERT_EQ(r.scenario.initial_conditions.size(), 1u);
+  const auto& position = r.scenario.initial_conditions[0].position;
+  ASSERT_TRUE(position.has_value());
+  // The pelvis centre of mass is 57 mm above the H-point along the pelvis's z, pitched -20 deg:
+  // R_y(-20 deg) (0, 0, 0.057) = (-0.057 sin 20 deg, 0, 0.057 cos 20 deg).
+  const double pitch = 20.0 * std::numbers::pi / 180.0;
+  EXPECT_NEAR((*position)[0], 0.100 - 0.057 * std::sin(pitch), 1e-12);
+  EXPECT_NEAR((*position)[1], 0.0, 1e-12);
+  EXPECT_NEAR((*position)[2], 0.200 + 0.057 * std::cos(pitch), 1e-12);
+}
+
+TEST(CheckHPoint, NeedsABodyWithOneAndNoPosition) {
+  const Result r = CheckText(Scene(kTwoSegments + R"(
+  import std.humans.male50 as occupant
+  initial b { h_point = (0, 0, 0) mm }
+  initial occupant { h_point = (0, 0, 0) mm  position = (0, 0, 0) mm })"));
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0206@10:15")));
+  EXPECT_THAT(r.codes, Contains(HasSubstr("E0207@11:22")));
+}
+
+TEST(CheckCriteria, AScenesOwnLimitComesWithItsStandard) {
+  const Result r = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  output {
+    criteria = hic15(occupant.head, limit = 1000, standard = "GTR 9"),
+      head_3ms(occupant.head, limit = 72 g, standard = "Euro NCAP"),
+      nkm(occupant.neck_upper)
+  })"));
+  ASSERT_EQ(r.errors, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  ASSERT_EQ(r.scenario.criteria.size(), 3u);
+  EXPECT_EQ(r.scenario.criteria[0].limit, 1000.0);
+  EXPECT_EQ(r.scenario.criteria[0].standard, "GTR 9");
+  EXPECT_NEAR(*r.scenario.criteria[1].limit, 72 * 9.80665, 1e-9);
+  EXPECT_FALSE(r.scenario.criteria[2].limit.has_value());
+  const Result bad = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  output {
+    criteria = hic15(occupant.head, limit = 1000), hic36(occupant.head, limit = 5 N,
+      standard = "x"), nij(occupant.neck_upper, standard = "y")
+  })"));
+  EXPECT_THAT(bad.codes, Contains(HasSubstr("E0210@6:16")));
+  EXPECT_THAT(bad.codes, Contains(HasSubstr("E0302@6:81")));
+  EXPECT_THAT(bad.codes, Contains(HasSubstr("E0210@7:24")));
+}
+
 }  // namespace
 }  // namespace sled::compiler

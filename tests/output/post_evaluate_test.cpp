@@ -120,6 +120,49 @@ TEST(EvaluateCriteria, FemurCompressionFollowsTheChildAxis) {
   EXPECT_NEAR(Find(values, "neck_tension").value, 0.0, 5);  // never pulled
 }
 
+TEST(EvaluateCriteria, NkmAddsTheShearAndMomentTermsOfTheirQuadrant) {
+  // The joint-force group read as both force and moment: a shear of 422.5 N along +x (half of
+  // Fint = 845 N) and My = -44.05 N*m, a flexion of half of Mint = 88.1 N*m, both half-sines
+  // peaking together at 20 ms, so Nkm peaks at 0.5 + 0.5 = 1.0 in the flexion-anterior quadrant.
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kNkm, "nkm", 1);
+  model.criterion_moment_output.back() = 1;
+  TimeSeries series = PulseSeries(model);
+  for (std::size_t k = 0; k < series.rows(); ++k) {
+    double* row = &series.values[k * series.columns];
+    const double t = row[0];
+    const double shape =
+        t >= 0.01 && t <= 0.03 ? std::sin(std::numbers::pi * (t - 0.01) / 0.02) : 0;
+    row[4] = 422.5 * shape;
+    row[5] = -44.05 * shape;
+    row[6] = 0.0;
+  }
+  const std::vector<CriterionValue> values = EvaluateCriteria(model, series);
+  const CriterionValue& nkm = Find(values, "nkm");
+  ASSERT_TRUE(nkm.computed) << nkm.reason;
+  EXPECT_NEAR(nkm.value, 1.0, 0.005);  // CFC 600 barely touches a 20 ms half-sine
+  EXPECT_NEAR(nkm.window_start, 0.02, 2e-4);
+  EXPECT_EQ(nkm.filter_class, 600);
+  EXPECT_EQ(nkm.limit, 1.0);
+  EXPECT_EQ(nkm.limit_source, "Schmitt et al. (2001)");
+  EXPECT_NEAR(Find(values, "nkm", "NFA").value, nkm.value, 1e-12);
+  // Posterior shear in extension only from the filter's ringing around the pulse.
+  const CriterionValue& nep = Find(values, "nkm", "NEP");
+  EXPECT_LT(nep.computed ? nep.value : 0.0, 0.01);
+}
+
+TEST(EvaluateCriteria, ASceneLimitReplacesTheDefaultWithItsStandard) {
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kHic15, "hic15", 0);
+  model.criterion_limit = {150.0};
+  model.criterion_standard = {"a test standard"};
+  const std::vector<CriterionValue> values = EvaluateCriteria(model, PulseSeries(model));
+  const CriterionValue& hic = Find(values, "hic15");
+  EXPECT_EQ(hic.limit, 150.0);
+  EXPECT_EQ(hic.limit_source, "a test standard");
+  EXPECT_FALSE(hic.pass);  // 173.4 is above 150
+}
+
 TEST(EvaluateCriteria, TooLowASampleRateIsReportedNotComputed) {
   Model model = PostModel(1e-3);  // 1 kHz: enough for CFC 60 only
   AddCriterion(model, Model::CriterionKind::kHic36, "hic36", 0);

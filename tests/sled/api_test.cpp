@@ -125,8 +125,11 @@ TEST(Compile, OverridesSetParameters) {
 TEST(Compile, LoweringNotesAreRegisteredDiagnostics) {
   const Compilation compiled = Compile(Source::Text(R"(scenario "s" {
   time { end = 10 ms  output_every = 1 ms }
-  settle { duration = 100 ms }
   body b { segment s { mass = 1 kg  inertia = (1, 1, 1) kg*m^2 } }
+  constraint wheel : rolling(b.s -> ground) {
+    at b.s = (0, 0, -0.1) m
+    at ground = (0, 0, 0) m
+  }
 }
 )"),
                                        InTree());
@@ -134,7 +137,8 @@ TEST(Compile, LoweringNotesAreRegisteredDiagnostics) {
   ASSERT_EQ(compiled.diagnostics().size(), 1u);
   EXPECT_EQ(compiled.diagnostics()[0].code(), "N0402");
   EXPECT_EQ(compiled.diagnostics()[0].severity, lang::Severity::kNote);
-  EXPECT_THAT(compiled.Notes(), ::testing::ElementsAre(HasSubstr("note[N0402]: equilibrium")));
+  EXPECT_THAT(compiled.Notes(),
+              ::testing::ElementsAre(HasSubstr("note[N0402]: rolling constraint")));
 }
 
 TEST(Compile, ABuiltTreeCompilesWithDiagnosticsInTheCppFile) {
