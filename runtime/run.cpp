@@ -93,6 +93,16 @@ Failure SettleFailure(const Model& model, const SettleSummary& settle) {
 
 }  // namespace
 
+IntegratorOptions IntegratorOptionsOf(const Model& model) {
+  IntegratorOptions options;
+  options.relative_tolerance = model.relative_tolerance;
+  options.absolute_tolerance = model.absolute_tolerance;
+  options.min_step = model.min_step;
+  options.max_step = model.max_step;
+  options.initial_step = model.initial_step;
+  return options;
+}
+
 std::size_t OutputRowCount(const Model& model) {
   const double step =
       model.output_every > 0 ? model.output_every : model.end_time - model.start_time;
@@ -137,13 +147,7 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
   data.energy = EnergyBalance{};
   std::vector<double> y(system.size());
   system.Store(y);
-  IntegratorOptions integrator_options;
-  integrator_options.relative_tolerance = model.relative_tolerance;
-  integrator_options.absolute_tolerance = model.absolute_tolerance;
-  integrator_options.min_step = model.min_step;
-  integrator_options.max_step = model.max_step;
-  integrator_options.initial_step = model.initial_step;
-  integrator->Reset(system, data.time, y, integrator_options);
+  integrator->Reset(system, data.time, y, IntegratorOptionsOf(model));
 
   auto fail = [&](const Failure& why, double t) {
     summary.failed = true;

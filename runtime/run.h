@@ -88,6 +88,9 @@ struct RunOptions {
   const std::atomic<bool>* stop = nullptr;
 };
 
+// The integrator options a Model's run settings give (the run's and its settling's).
+IntegratorOptions IntegratorOptionsOf(const Model& model);
+
 // The rows a complete run writes: the start, then one per output step up to the end.
 std::size_t OutputRowCount(const Model& model);
 

@@ -8,6 +8,7 @@
 
 #include "runtime/integrate/make_integrator.h"
 #include "runtime/joint.h"
+#include "runtime/run.h"
 #include "runtime/system.h"
 #include "runtime/vehicle.h"
 
@@ -123,13 +124,7 @@ SettleSummary Settle(const Model& model, Data& data) {
   MultibodySystem system(held, settling);
   std::vector<double> y(system.size());
   system.Store(y);
-  IntegratorOptions options;
-  options.relative_tolerance = model.relative_tolerance;
-  options.absolute_tolerance = model.absolute_tolerance;
-  options.min_step = model.min_step;
-  options.max_step = model.max_step;
-  options.initial_step = model.initial_step;
-  integrator->Reset(system, t0, y, options);
+  integrator->Reset(system, t0, y, IntegratorOptionsOf(model));
 
   std::vector<double> forces;
   std::vector<double> previous;
