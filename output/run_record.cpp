@@ -14,7 +14,7 @@ static_assert(std::is_trivially_copyable_v<EnergySummary>);
 static_assert(sizeof(SettleSummary) == 144 || sizeof(std::string) != 32,
               "SettleSummary changed: list the new field in Serialize");
 static_assert(sizeof(std::string) != 32 ||
-                  (sizeof(RunSummary) == 544 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
+                  (sizeof(RunSummary) == 608 && sizeof(Failure) == 112 && sizeof(TimeSeries) == 56),
               "RunSummary, Failure or TimeSeries changed: list the new field in Serialize");
 
 void Strings(Archive& archive, std::vector<std::string>& texts) {

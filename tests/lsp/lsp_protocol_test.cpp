@@ -182,7 +182,7 @@ TEST_F(LspProtocolTest, DefinitionGoesIntoTheStandardLibraryAndReferencesFindEve
   client_.AwaitDiagnostics(uri_);
   const Json pelvis = Request("textDocument/definition", At(7, 20))["result"];
   EXPECT_THAT(pelvis["uri"].get<std::string>(), HasSubstr("stdlib/humans/male50.sled"));
-  EXPECT_EQ(pelvis["range"]["start"]["line"], 75);  // `segment pelvis {` is line 76
+  EXPECT_EQ(pelvis["range"]["start"]["line"], 78);  // `segment pelvis {` is line 79
 
   const Json references = client_.Request("textDocument/references",
                                           {{"textDocument", {{"uri", uri_}}},
