@@ -123,11 +123,25 @@ bool RunProcesses(const std::vector<ProcessJob>& jobs, int workers,
     Clock::time_point start;
   };
   std::map<pid_t, Running> running;
+  std::vector<std::pair<std::size_t, ProcessOutcome>> ended;  // not yet given to on_done
   std::size_t next = 0;
   bool signalled_children = false;
   std::fflush(stdout);
   std::fflush(stderr);
-  while (next < jobs.size() || !running.empty()) {
+  // Takes an ended child's status (a process not started here is left alone).
+  auto reap = [&](pid_t pid, int status) {
+    const auto it = running.find(pid);
+    if (it == running.end()) return;
+    ProcessOutcome outcome;
+    outcome.wall_seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
+    if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+    ended.emplace_back(it->second.job, outcome);
+    running.erase(it);
+  };
+  while (next < jobs.size() || !running.empty() || !ended.empty()) {
+    // Free slots are filled first and the ended jobs' bookkeeping done after, while the new
+    // children already run: a worker never waits for the parent's writing.
     while (g_interrupt == 0 && next < jobs.size() &&
            static_cast<int>(running.size()) < std::max(1, workers)) {
       if (on_start) on_start(next);
@@ -139,34 +153,35 @@ bool RunProcesses(const std::vector<ProcessJob>& jobs, int workers,
         // No process to be had: run nothing more, report this job as not started.
         ProcessOutcome outcome;
         outcome.exit_code = 127;
-        if (on_done) on_done(next, outcome);
+        ended.emplace_back(next, outcome);
         ++next;
         continue;
       }
       running[pid] = {next, Clock::now()};
       ++next;
     }
+    for (const auto& [job, outcome] : ended) {
+      if (on_done) on_done(job, outcome);
+    }
+    ended.clear();
     if (g_interrupt != 0 && !signalled_children) {
       for (const auto& [pid, job] : running) kill(pid, g_interrupt);
       signalled_children = true;
       next = jobs.size();
     }
-    if (running.empty()) break;
+    if (running.empty()) {
+      if (next < jobs.size()) continue;
+      break;
+    }
     int status = 0;
     const pid_t pid = waitpid(-1, &status, 0);
     if (pid < 0) {
       if (errno == EINTR) continue;
       break;  // no children left to wait for
     }
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    ProcessOutcome outcome;
-    outcome.wall_seconds = std::chrono::duration<double>(Clock::now() - it->second.start).count();
-    if (WIFEXITED(status)) outcome.exit_code = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
-    const std::size_t job = it->second.job;
-    running.erase(it);
-    if (on_done) on_done(job, outcome);
+    reap(pid, status);
+    // Others that ended meanwhile: their slots are filled together.
+    for (pid_t more = 0; (more = waitpid(-1, &status, WNOHANG)) > 0;) reap(more, status);
   }
   return g_interrupt == 0;
 }

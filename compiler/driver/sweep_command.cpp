@@ -12,6 +12,7 @@
 #include "compiler/driver/process_pool.h"
 #include "compiler/driver/sweep_collect.h"
 #include "compiler/driver/sweep_folder.h"
+#include "compiler/driver/sweep_point_check.h"
 #include "compiler/driver/sweep_runner.h"
 #include "compiler/driver/sweep_slurm.h"
 #include "compiler/sweep/design.h"
@@ -178,8 +179,10 @@ std::string ParseOptions(const std::vector<std::string>& args, SweepOptions& o) 
 }
 
 // The scene checked once with the fixed overrides, the design built and the scene checked at
-// every point; the manifest of the sweep, or nullopt after printing why.
-std::optional<SweepManifest> PlanSweep(const SweepOptions& o, bool color) {
+// every point over `workers` processes; the manifest of the sweep, or nullopt after printing why
+// (with *interrupted set when a signal stopped the check).
+std::optional<SweepManifest> PlanSweep(const SweepOptions& o, int workers, bool color,
+                                       bool* interrupted) {
   lang::SourceManager sources;
   lang::DiagnosticCollector collector;
   const auto file = lang::LoadFileOrReport(sources, o.target, collector);
@@ -237,40 +240,37 @@ std::optional<SweepManifest> PlanSweep(const SweepOptions& o, bool color) {
                                 o.passthrough.end());
 
   // Every point, checked as its run will check it, before any run starts.
-  int failing = 0;
   for (std::size_t run = 0; run < design->points.size(); ++run) {
-    lang::SourceManager point_sources;
-    lang::DiagnosticCollector point_collector;
-    const auto point_file = lang::LoadFileOrReport(point_sources, o.target, point_collector);
-    compiler::CheckOptions point_options = check_options;
-    point_options.diagnostics = &point_collector;
-    point_options.lints = false;
-    const auto values = design->Overrides(run);
-    point_options.overrides.insert(point_options.overrides.end(), values.begin(), values.end());
-    if (point_file) compiler::ParseAndCheck(point_sources, *point_file, point_options);
     SweepRun entry;
     entry.folder = RunFolderName(run, design->points.size());
     entry.numbers = design->points[run];
-    for (const auto& [name, value] : values) entry.values.push_back(value);
-    if (point_collector.has_errors()) {
-      if (failing == 0) {
-        std::string where;
-        for (const auto& [name, value] : values) {
-          where += fmt::format("{}{} = {}", where.empty() ? "" : ", ", name, value);
-        }
-        std::cerr << fmt::format("sled: the scene does not check at run {} of the design ({}):\n",
-                                 run, where);
-        PrintDiagnostics(point_sources, point_collector, o.compact, color);
-      }
-      ++failing;
-    }
+    for (const auto& [name, value] : design->Overrides(run)) entry.values.push_back(value);
     manifest.runs.push_back(std::move(entry));
   }
-  if (failing > 0) {
+  const PointCheckResult points =
+      CheckDesignPoints(o.target, check_options, *design, workers, o.compact, color);
+  if (points.interrupted) {
+    std::cerr << "sled: interrupted while checking the design's points; nothing ran\n";
+    *interrupted = true;
+    return std::nullopt;
+  }
+  if (points.failing > 0) {
+    std::string where;
+    for (const auto& [name, value] : design->Overrides(points.first)) {
+      where += fmt::format("{}{} = {}", where.empty() ? "" : ", ", name, value);
+    }
+    std::cerr << fmt::format("sled: the scene does not check at run {} of the design ({}):\n",
+                             points.first, where);
+    std::cerr << points.diagnostics;
     std::cerr << fmt::format(
         "sled: {} of {} runs of the design do not check; narrow the design to values the scene "
         "accepts\n",
-        failing, design->points.size());
+        points.failing, design->points.size());
+    return std::nullopt;
+  }
+  if (points.incomplete) {
+    std::cerr << "sled: a worker checking the design's points ended without its answer; "
+                 "nothing ran (run the command again, or with --jobs 1)\n";
     return std::nullopt;
   }
   return manifest;
@@ -340,21 +340,23 @@ bool PrepareFolder(const std::string& directory, const SweepManifest& manifest, 
   return true;
 }
 
+int Workers(const SweepOptions& o) { return o.jobs > 0 ? o.jobs : AvailableCores(); }
+
 int RunAndCollect(const std::string& directory, const SweepManifest& manifest,
                   const SweepOptions& o) {
   RunnerOptions runner;
-  runner.jobs = o.jobs > 0 ? o.jobs : AvailableCores();
+  runner.jobs = Workers(o);
   runner.slice = o.slice;
   runner.slices = o.slices;
   runner.retry_failed = o.retry_failed;
   std::cerr << fmt::format("sled: {} runs of `{}` on {} worker{}\n", manifest.runs.size(),
                            manifest.scene, runner.jobs, runner.jobs == 1 ? "" : "s");
+  SweepCollector collector(directory, manifest);
+  // A slice (a Slurm task) leaves the table to the job that collects.
+  if (o.slices == 0) runner.on_run_done = [&](std::size_t run) { collector.Add(run); };
   const RunnerResult result = RunPending(directory, manifest, runner);
-  if (o.slices > 0) {
-    // A slice (a Slurm task) leaves the table to the job that collects.
-    return result.interrupted ? kExitInterrupted : kExitOk;
-  }
-  const int collected = CollectSweep(directory);
+  if (o.slices > 0) return result.interrupted ? kExitInterrupted : kExitOk;
+  const int collected = collector.Write();
   if (result.interrupted) {
     std::cerr << fmt::format(
         "sled: interrupted; the runs that finished are kept: run the same command again, or "
@@ -399,8 +401,9 @@ int SweepCommand(const std::vector<std::string>& args, bool color) {
   if (o.subcommand == "collect") return CollectSweep(o.target);
   if (o.subcommand == "resume") return Resume(o);
 
-  const auto manifest = PlanSweep(o, color);
-  if (!manifest) return kExitInputErrors;
+  bool interrupted = false;
+  const auto manifest = PlanSweep(o, Workers(o), color, &interrupted);
+  if (!manifest) return interrupted ? kExitInterrupted : kExitInputErrors;
   if (o.check_only) {
     PrintDesign(*manifest);
     std::cerr << fmt::format("sled: the design has {} runs; the scene checks at every one\n",

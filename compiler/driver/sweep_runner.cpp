@@ -120,6 +120,7 @@ RunnerResult RunPending(const std::string& directory, const SweepManifest& manif
     const RunStatus status = StatusOf(outcome, jobs[job].log_path);
     std::string error;
     if (!WriteRunStatus(folder, status, &error)) std::cerr << "sled: " << error << '\n';
+    if (options.on_run_done) options.on_run_done(i);
     ++finished;
     if (!options.quiet) {
       std::cerr << fmt::format("sled: [{}/{}] {} {} ({}) in {:.2f} s{}\n", finished, total,

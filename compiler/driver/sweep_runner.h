@@ -2,6 +2,7 @@
 // process, at most `jobs` at a time; records how each ended in its status.json.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "compiler/driver/sweep_folder.h"
@@ -14,6 +15,8 @@ struct RunnerOptions {
   int slices = 0;
   bool retry_failed = false;  // run again those that ended other than done
   bool quiet = false;         // no line per run
+  // Called as each run ends, once its status.json is written (while other runs go on).
+  std::function<void(std::size_t run)> on_run_done;
 };
 
 struct RunnerResult {

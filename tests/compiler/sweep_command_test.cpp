@@ -175,6 +175,13 @@ TEST_F(SweepCommand, BadDesignsAreErrorsBeforeAnyRun) {
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_THAT(result.err, HasSubstr("does not check at run 0"));
   EXPECT_FALSE(fs::exists(out));
+  // Checked over two workers, the points are counted and the first that fails is the one shown.
+  result = Sweep(
+      out, {"--vary", "tolerance=1e-6,-1e-6,-2e-6,1e-5", "--jobs", "2", "--diagnostics=compact"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("does not check at run 1 of the design (tolerance = -1e-06)"));
+  EXPECT_THAT(result.err, HasSubstr("2 of 4 runs of the design do not check"));
+  EXPECT_FALSE(fs::exists(out));
   result = Sled({"sweep", Scene().string()});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_THAT(result.err, HasSubstr("needs a design"));
