@@ -234,7 +234,8 @@ std::optional<SweepManifest> PlanSweep(const SweepOptions& o, int workers, bool 
                                   {"--stdlib", fs::absolute(o.stdlib).string()});
   }
   for (const auto& [name, value] : o.overrides) {
-    manifest.run_arguments.insert(manifest.run_arguments.end(), {"--set", name + "=" + value});
+    manifest.run_arguments.insert(manifest.run_arguments.end(),
+                                  {"--set", fmt::format("{}={}", name, value)});
   }
   manifest.run_arguments.insert(manifest.run_arguments.end(), o.passthrough.begin(),
                                 o.passthrough.end());

@@ -23,7 +23,7 @@ std::string FirstErrorLine(const std::string& log_path) {
   while (start < text->size()) {
     std::size_t end = text->find('\n', start);
     if (end == std::string::npos) end = text->size();
-    const std::string line = text->substr(start, end - start);
+    std::string line = text->substr(start, end - start);
     if (line.find("error") != std::string::npos || line.find("failed") != std::string::npos) {
       return line;
     }
