@@ -11,13 +11,15 @@
 #    (scripts/slurm_cluster.sh), one array task per run, against the local sweep with as many
 #    jobs as the node has cores; prints the overhead per run.
 # Measure on a quiet machine (`uptime`): other work on the cores shows up as a lower speed-up.
-# SWEEP_BENCH_SLURM=0 leaves out part 2.
+# SWEEP_BENCH_SLURM=0 leaves out part 2. SWEEP_BENCH_DIR=/dev/shm writes the sweeps there (default
+# /tmp): on a RAM file system the runs' outputs cost no disk time, which leaves the processes'
+# own speed-up (docs/sweeps.md).
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 sled="$(cd "${root}" && realpath "${1:-build}")/compiler/driver/sled"
 repeats="${2:-3}"
-work="$(mktemp -d /tmp/sled-sweep-bench.XXXXXX)"
+work="$(mktemp -d "${SWEEP_BENCH_DIR:-/tmp}/sled-sweep-bench.XXXXXX")"
 chmod 755 "${work}"
 trap 'rm -rf "${work}"' EXIT
 design=(--vary "speed=40..70 km/h step 2")
