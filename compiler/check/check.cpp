@@ -499,6 +499,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();
+  CheckHeldInitialConditions();
   CheckLoadsInThePlane();
   CheckOutputs();
   CheckDuplicates();

@@ -1,5 +1,4 @@
-// Run settings (time, integrator, restart, settling, symmetry, gravity), initial conditions and
-// output requests.
+// Run settings (time, integrator, restart, settling, symmetry, gravity) and output requests.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -7,7 +6,6 @@
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
-#include "compiler/check/initial_pose.h"
 #include "runtime/integrate/ode.h"
 
 namespace sled::compiler::internal {
@@ -188,89 +186,6 @@ void Checker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_block) {
   }
 }
 
-void Checker::CheckInitialConditions() {
-  for (const Pending& pending : initials_) {
-    const ast::Statement& statement = *pending.statement;
-    Scope& scope = *pending.scope;
-    const BoundBlock bound = Bind(BlockKind::kInitial, statement.block.get(), statement.range);
-    if (!statement.target) {
-      Report(DiagnosticKind::kMalformedStatement, statement.range,
-             "`initial` names a body, segment, joint or vehicle: `initial occupant { ... }`",
-             "no target", "name what the initial state is for after `initial`");
-      continue;
-    }
-    Entity* entity = Resolve(
-        scope, *statement.target,
-        {EntityKind::kBody, EntityKind::kSegment, EntityKind::kJoint, EntityKind::kVehicle});
-    if (!entity) continue;
-    InitialCondition initial;
-    initial.range = statement.range;
-    initial.index = entity->index;
-    const bool joint = entity->kind == EntityKind::kJoint;
-    initial.kind = entity->kind == EntityKind::kBody      ? InitialCondition::Kind::kBody
-                   : entity->kind == EntityKind::kSegment ? InitialCondition::Kind::kSegment
-                   : joint                                ? InitialCondition::Kind::kJoint
-                                                          : InitialCondition::Kind::kVehicle;
-    for (const auto& [name, statements] : bound.attributes) {
-      const bool for_joint = name == "angles";
-      if (for_joint != joint) {
-        Report(DiagnosticKind::kMisplacedStatement, statements[0]->keyword_range,
-               joint ? fmt::format("a joint's initial state is its `angles`, not `{}`", name)
-                     : "`angles` sets a joint; this `initial` names a body, segment or vehicle",
-               "not for this target",
-               joint ? "set the joint's `angles`"
-                     : "name a joint in the `initial` that sets `angles`");
-      }
-    }
-    initial.position = ReadVector(scope, bound, BlockKind::kInitial, "position");
-    initial.orientation = ReadVector(scope, bound, BlockKind::kInitial, "orientation");
-    initial.velocity = ReadVector(scope, bound, BlockKind::kInitial, "velocity");
-    initial.angular_velocity = ReadVector(scope, bound, BlockKind::kInitial, "angular_velocity");
-    initial.joint_angles = ReadVector(scope, bound, BlockKind::kInitial, "angles");
-    if (const ast::Statement* h_statement = One(bound, "h_point")) {
-      PlaceByHPoint(scope, bound, *h_statement, initial);
-    }
-    scenario_.initial_conditions.push_back(std::move(initial));
-  }
-}
-
-// `initial BODY { h_point = P }`: the body's reference segment placed so that the H-point its
-// body declares is at P (ground frame), in the orientation the block gives.
-void Checker::PlaceByHPoint(Scope& scope, const BoundBlock& bound,
-                            const ast::Statement& h_statement, InitialCondition& initial) {
-  const SourceRange where = h_statement.keyword_range;
-  if (initial.kind != InitialCondition::Kind::kBody) {
-    Report(DiagnosticKind::kMisplacedStatement, where, "`h_point` places a body",
-           "not for this target", "name the body after `initial`, or give `position`");
-    return;
-  }
-  const Body& body = scenario_.bodies[static_cast<std::size_t>(initial.index)];
-  if (!body.h_point) {
-    Report(DiagnosticKind::kMissingAttribute, where,
-           fmt::format("body `{}` declares no H-point", body.name), "no `h_point` in the body",
-           "give the body `h_point = (x, y, z) mm` in its reference segment's frame, or place "
-           "it by `position`");
-    return;
-  }
-  if (initial.position) {
-    Report(DiagnosticKind::kDuplicateAttribute, where,
-           "`h_point` and `position` both place the body", "given with `position`",
-           "keep one of the two");
-    return;
-  }
-  const auto target = ReadVector(scope, bound, BlockKind::kInitial, "h_point");
-  if (!target) return;
-  const Mat3 rotation = RotationFromYawPitchRoll(initial.orientation.value_or(Vec3{}));
-  Vec3 position{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    double turned = 0.0;
-    for (std::size_t j = 0; j < 3; ++j) turned += rotation[i][j] * (*body.h_point)[j];
-    position[i] = (*target)[i] - turned;
-  }
-  initial.position = position;
-}
-
-// The dimension of a criterion's value: what its `limit` is given in.
 static Dimension CriterionDimension(Criterion::Kind kind) {
   switch (kind) {
     case Criterion::Kind::kHead3ms:

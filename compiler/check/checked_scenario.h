@@ -264,6 +264,8 @@ struct InitialCondition {
   std::optional<Vec3> angular_velocity;
   std::optional<Vec3> joint_angles;  // kJoint: (precession, nutation, spin) or (flexure..)
   SourceRange range;
+  SourceRange position_range;  // of the `position` statement, when given
+  SourceRange velocity_range;  // of the `velocity` statement, when given
 };
 
 struct OutputRequest {

@@ -227,7 +227,11 @@ class Checker {
                                                         const ast::Statement& statement,
                                                         const ast::Expr& arrow);
   void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
+  // Initial conditions (compiler/check/check_initial.cpp); E0421 for what the model cannot take.
   void CheckInitialConditions();
+  void RefuseUntakenInitial(const InitialCondition& initial, const BoundBlock& bound);
+  // After every initial condition is read: held roots' positions and velocities.
+  void CheckHeldInitialConditions();
   bool ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion& criterion);
   void PlaceByHPoint(Scope& scope, const BoundBlock& bound, const ast::Statement& h_statement,
                      InitialCondition& initial);

@@ -66,7 +66,26 @@ Mat3 JointRotation(const Joint& joint, const Vec3& angles) {
       RotationAbout({1, 0, 0}, angles[2]));
 }
 
+Vec3 Cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 }  // namespace
+
+int HoldingConstraintOf(const CheckedScenario& scenario, int segment) {
+  for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
+    const Constraint& constraint = scenario.constraints[c];
+    if (constraint.kind != Constraint::Kind::kFixedPoint) continue;
+    const bool first = constraint.first.kind == FrameRef::Kind::kSegment &&
+                       constraint.first.index == segment &&
+                       constraint.second.kind != FrameRef::Kind::kSegment;
+    const bool second = constraint.second.kind == FrameRef::Kind::kSegment &&
+                        constraint.second.index == segment &&
+                        constraint.first.kind != FrameRef::Kind::kSegment;
+    if (first || second) return static_cast<int>(c);
+  }
+  return -1;
+}
 
 Mat3 RotationFromYawPitchRoll(const Vec3& ypr) {
   const double cy = std::cos(ypr[0]), sy = std::sin(ypr[0]);
@@ -90,13 +109,70 @@ Pose InitialPoses::Of(const FrameRef& frame) const {
   return Pose{};
 }
 
+namespace {
+
+// The holding constraint's point in the base and in the root, and the base.
+struct Hold {
+  FrameRef base;
+  Vec3 in_base{};
+  Vec3 in_root{};
+};
+std::optional<Hold> HoldOf(const CheckedScenario& scenario, int root) {
+  const int c = HoldingConstraintOf(scenario, root);
+  if (c < 0) return std::nullopt;
+  const Constraint& constraint = scenario.constraints[static_cast<std::size_t>(c)];
+  const bool root_first = constraint.first.kind == FrameRef::Kind::kSegment;
+  return Hold{root_first ? constraint.second : constraint.first,
+              root_first ? constraint.point_in_second : constraint.point_in_first,
+              root_first ? constraint.point_in_first : constraint.point_in_second};
+}
+
+}  // namespace
+
+std::optional<Vec3> HeldRootPosition(const CheckedScenario& scenario, const InitialPoses& poses,
+                                     int root) {
+  const std::optional<Hold> hold = HoldOf(scenario, root);
+  if (!hold) return std::nullopt;
+  const Pose base = poses.Of(hold->base);
+  const Pose& segment = poses.segments[static_cast<std::size_t>(root)];
+  return Sub(Add(base.position, Apply(base.rotation, hold->in_base)),
+             Apply(segment.rotation, hold->in_root));
+}
+
+std::optional<Vec3> HeldPoint(const CheckedScenario& scenario, const InitialPoses& poses,
+                              int root) {
+  const std::optional<Hold> hold = HoldOf(scenario, root);
+  if (!hold) return std::nullopt;
+  const Pose base = poses.Of(hold->base);
+  return Add(base.position, Apply(base.rotation, hold->in_base));
+}
+
+std::optional<Vec3> HeldRootVelocity(const CheckedScenario& scenario, const InitialPoses& poses,
+                                     int root, const Vec3& angular_velocity) {
+  const std::optional<Hold> hold = HoldOf(scenario, root);
+  if (!hold) return std::nullopt;
+  const Pose base = poses.Of(hold->base);
+  const Pose& segment = poses.segments[static_cast<std::size_t>(root)];
+  const Vec3 pivot = *HeldPoint(scenario, poses, root);
+  Vec3 pivot_velocity{};
+  if (hold->base.kind == FrameRef::Kind::kVehicle) {
+    const auto v = static_cast<std::size_t>(hold->base.index);
+    pivot_velocity = Add(poses.vehicle_velocities[v],
+                         Cross(poses.vehicle_angular_velocities[v], Sub(pivot, base.position)));
+  }
+  return Add(pivot_velocity, Cross(angular_velocity, Sub(segment.position, pivot)));
+}
+
 InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
   InitialPoses poses;
   poses.segments.resize(scenario.segments.size());
   poses.vehicles.resize(scenario.vehicles.size());
+  poses.vehicle_velocities.resize(scenario.vehicles.size());
+  poses.vehicle_angular_velocities.resize(scenario.vehicles.size());
   for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
     poses.vehicles[v].position = scenario.vehicles[v].position;
     poses.vehicles[v].rotation = RotationFromYawPitchRoll(scenario.vehicles[v].orientation);
+    poses.vehicle_velocities[v] = scenario.vehicles[v].velocity;
   }
   // Reference segments take the initial conditions of their body or of themselves.
   for (const InitialCondition& initial : scenario.initial_conditions) {
@@ -110,6 +186,9 @@ InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
       Pose& pose = poses.vehicles[static_cast<std::size_t>(initial.index)];
       if (initial.position) pose.position = *initial.position;
       if (initial.orientation) pose.rotation = RotationFromYawPitchRoll(*initial.orientation);
+      const auto v = static_cast<std::size_t>(initial.index);
+      if (initial.velocity) poses.vehicle_velocities[v] = *initial.velocity;
+      if (initial.angular_velocity) poses.vehicle_angular_velocities[v] = *initial.angular_velocity;
     }
     for (int segment : targets) {
       if (segment < 0) continue;
@@ -138,9 +217,13 @@ InitialPoses ComputeInitialPoses(const CheckedScenario& scenario) {
   std::vector<int> stack;
   for (const Body& body : scenario.bodies) {
     for (int root : body.reference_segments) {
-      if (root >= 0 && !placed[static_cast<std::size_t>(root)]) {
-        placed[static_cast<std::size_t>(root)] = true;
-        stack.push_back(root);
+      if (root < 0 || placed[static_cast<std::size_t>(root)]) continue;
+      placed[static_cast<std::size_t>(root)] = true;
+      stack.push_back(root);
+      // A root held at a point of the ground or a vehicle is where that point puts it, turned
+      // as its initial orientation says (the runtime's joint to its base).
+      if (const std::optional<Vec3> held = HeldRootPosition(scenario, poses, root)) {
+        poses.segments[static_cast<std::size_t>(root)].position = *held;
       }
     }
   }

@@ -1,9 +1,11 @@
-// The pose of every frame at the start of the run, from the joint tree with joint angles at
-// zero, the initial conditions and the vehicles' positions: what the lints need to find buried
-// ellipsoids. (The runtime computes its own, exact initial state.)
+// The pose of every frame at the start of the run, from the joint tree with its initial joint
+// angles, the initial conditions, the vehicles' positions and the fixed-point constraints that
+// hold roots at a point of the ground or a vehicle: what the lints need to find buried
+// ellipsoids, and what the lowering places the scene by.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "compiler/check/checked_scenario.h"
@@ -21,8 +23,15 @@ struct Pose {
 struct InitialPoses {
   std::vector<Pose> segments;
   std::vector<Pose> vehicles;
+  // Each vehicle's velocity and angular velocity at the start, in the ground frame.
+  std::vector<Vec3> vehicle_velocities;
+  std::vector<Vec3> vehicle_angular_velocities;
   Pose Of(const FrameRef& frame) const;
 };
+
+// The fixed-point constraint that holds root segment `segment` at a point of the ground or a
+// vehicle (its joint to that base; the lowering solves it in the tree), or -1.
+int HoldingConstraintOf(const CheckedScenario& scenario, int segment);
 
 // Yaw about z, then pitch about y, then roll about x (the ATB order).
 Mat3 RotationFromYawPitchRoll(const Vec3& yaw_pitch_roll);
@@ -41,6 +50,18 @@ inline runtime::Mat3 RotationMatrix(const Vec3& yaw_pitch_roll) {
 }
 
 InitialPoses ComputeInitialPoses(const CheckedScenario& scenario);
+
+// Where a root held by a fixed-point constraint (HoldingConstraintOf) is at the start: its
+// centre of mass as the held point and its orientation in `poses` put it; none for other
+// segments.
+std::optional<Vec3> HeldRootPosition(const CheckedScenario& scenario, const InitialPoses& poses,
+                                     int root);
+// The held point itself, in the ground frame at the start.
+std::optional<Vec3> HeldPoint(const CheckedScenario& scenario, const InitialPoses& poses, int root);
+// The velocity of that centre of mass when the root turns at `angular_velocity` (ground frame)
+// about the held point, which moves with its vehicle.
+std::optional<Vec3> HeldRootVelocity(const CheckedScenario& scenario, const InitialPoses& poses,
+                                     int root, const Vec3& angular_velocity);
 
 // How far the contact's first ellipsoid reaches into its second surface at the start [m], by the
 // runtime's own contact geometry (runtime/contact/contact_geometry.h): its deflection where the

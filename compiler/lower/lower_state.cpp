@@ -85,6 +85,12 @@ void NoteOffPlane(Lowering& lowering, const SourceRange& range, double off_plane
                                what));
 }
 
+// The angular velocity of a held root's base at the start (ground frame): its vehicle's.
+runtime::Vec3 BaseAngularVelocity(const runtime::Model& model, const runtime::FrameRef& base) {
+  if (base.kind != runtime::FrameRef::Kind::kVehicle) return runtime::Vec3::Zero();
+  return model.vehicle_angular_velocity[static_cast<std::size_t>(base.index)];
+}
+
 }  // namespace
 
 void LowerInitialState(Lowering& lowering) {
@@ -104,14 +110,8 @@ void LowerInitialState(Lowering& lowering) {
         target = initial.index;
         break;
       case InitialCondition::Kind::kJoint: {
-        const Joint& joint = lowering.joint(initial.index);
-        if (!initial.joint_angles) break;
-        if (joint.type == JointType::kNull) {
-          lowering.AddNote(
-              lang::DiagnosticKind::kLeftOutOfModel, initial.range,
-              fmt::format("`{}` is a null joint: it has no angles; left out", joint.name));
-          break;
-        }
+        // A null joint's angles are refused by the checker (E0421).
+        if (!initial.joint_angles || lowering.joint(initial.index).type == JointType::kNull) break;
         angles[static_cast<std::size_t>(initial.index)] = initial.joint_angles;
         break;
       }
@@ -168,6 +168,8 @@ void LowerInitialState(Lowering& lowering) {
       model.v0[va + 1] = v[2];
       model.v0[va + 2] = w[1];
       w_world[s] = runtime::Vec3(0.0, w[1], 0.0);
+      NoteOffPlane(lowering, start.position.range, std::abs(p[1]),
+                   fmt::format("initial position of `{}`", model.segment_name[s]));
       NoteOffPlane(lowering, start.orientation.range, turn.off_axis,
                    fmt::format("initial orientation of `{}`", model.segment_name[s]));
       NoteOffPlane(lowering, start.velocity.range, std::abs(v[1]),
@@ -189,9 +191,11 @@ void LowerInitialState(Lowering& lowering) {
       const runtime::Vec3& axis = model.joint_axis[s];
       const AxisAngle turn = AngleAbout(Eigen::Quaterniond(r_wb.transpose() * r_ws), axis);
       model.q0[qa] = turn.angle;
-      const runtime::Vec3 w = ToEigen(start.angular_velocity.value.value_or(Vec3{}));
-      model.v0[va] = (r_wb * axis).dot(w);
-      w_world[s] = model.v0[va] * (r_wb * axis);
+      const runtime::Vec3 w_base = BaseAngularVelocity(model, base);
+      const runtime::Vec3 w =
+          start.angular_velocity.value ? ToEigen(*start.angular_velocity.value) : w_base;
+      model.v0[va] = (r_wb * axis).dot(w - w_base);
+      w_world[s] = w_base + model.v0[va] * (r_wb * axis);
       NoteOffPlane(lowering, start.orientation.range, turn.off_axis,
                    fmt::format("initial orientation of `{}`", model.segment_name[s]));
       NoteOffPlane(lowering, start.angular_velocity.range, (w - w_world[s]).norm(),
@@ -211,8 +215,11 @@ void LowerInitialState(Lowering& lowering) {
       const Eigen::Quaterniond relative(r_wb.transpose() * r_ws);
       PutQuaternion(model.q0, qa,
                     relative.w() < 0 ? Eigen::Quaterniond(-relative.coeffs()) : relative);
-      w_world[s] = ToEigen(start.angular_velocity.value.value_or(Vec3{}));
-      const runtime::Vec3 w_s = r_ws.transpose() * w_world[s];
+      // The joint's rate is relative to the base: a root that is given no angular velocity
+      // turns with its vehicle.
+      const runtime::Vec3 w_base = BaseAngularVelocity(model, base);
+      w_world[s] = start.angular_velocity.value ? ToEigen(*start.angular_velocity.value) : w_base;
+      const runtime::Vec3 w_s = r_ws.transpose() * (w_world[s] - w_base);
       for (std::size_t k = 0; k < 3; ++k) model.v0[va + k] = w_s[k];
       continue;
     }
@@ -245,18 +252,9 @@ void LowerInitialState(Lowering& lowering) {
         break;
     }
 
+    // The checker refuses a position, orientation or velocity here (E0421): the joint decides
+    // them.
     const std::string& name = model.segment_name[s];
-    auto left_out = [&](const Given& given, const char* what, const char* instead) {
-      if (!given.value) return;
-      lowering.AddNote(lang::DiagnosticKind::kLeftOutOfModel, given.range,
-                       fmt::format("the initial {} of `{}` is left out: it hangs from joint "
-                                   "`{}`, so {}",
-                                   what, name, joint.name, instead));
-    };
-    left_out(start.position, "position", "the joint's `angles` place it");
-    left_out(start.orientation, "orientation", "the joint's `angles` turn it");
-    left_out(start.velocity, "velocity", "it moves with its reference segment");
-
     // The joint's velocity columns: the segment's angular velocity relative to its parent, in
     // the segment frame, per unit rate of each free axis.
     const std::uint8_t locked = model.joint_locked[s];

@@ -204,14 +204,15 @@ void PlanMirrorSymmetry(Lowering& lowering) {
   }
   for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
     const Constraint& constraint = scenario.constraints[c];
-    const bool holds_a_root =
-        constraint.kind == Constraint::Kind::kFixedPoint &&
-        ((constraint.first.kind == FrameRef::Kind::kSegment &&
-          constraint.second.kind != FrameRef::Kind::kSegment &&
-          BaseConstraintOf(lowering, constraint.first.index) == static_cast<int>(c)) ||
-         (constraint.second.kind == FrameRef::Kind::kSegment &&
-          constraint.first.kind != FrameRef::Kind::kSegment &&
-          BaseConstraintOf(lowering, constraint.second.index) == static_cast<int>(c)));
+    const bool holds_a_root = constraint.kind == Constraint::Kind::kFixedPoint &&
+                              ((constraint.first.kind == FrameRef::Kind::kSegment &&
+                                constraint.second.kind != FrameRef::Kind::kSegment &&
+                                HoldingConstraintOf(lowering.scenario(), constraint.first.index) ==
+                                    static_cast<int>(c)) ||
+                               (constraint.second.kind == FrameRef::Kind::kSegment &&
+                                constraint.first.kind != FrameRef::Kind::kSegment &&
+                                HoldingConstraintOf(lowering.scenario(), constraint.second.index) ==
+                                    static_cast<int>(c)));
     if (!holds_a_root) {
       return refuse(
           fmt::format("constraint `{}` closes a loop (loops are solved with the full "

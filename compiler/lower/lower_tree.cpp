@@ -87,24 +87,6 @@ void OrderSegments(Lowering& lowering) {
 
 }  // namespace
 
-// The fixed-point constraint that holds segment `old` at a point of the ground or a vehicle,
-// or -1.
-int BaseConstraintOf(const Lowering& lowering, int old) {
-  const auto& constraints = lowering.scenario().constraints;
-  for (std::size_t c = 0; c < constraints.size(); ++c) {
-    const Constraint& constraint = constraints[c];
-    if (constraint.kind != Constraint::Kind::kFixedPoint) continue;
-    const bool first = constraint.first.kind == FrameRef::Kind::kSegment &&
-                       constraint.first.index == old &&
-                       constraint.second.kind != FrameRef::Kind::kSegment;
-    const bool second = constraint.second.kind == FrameRef::Kind::kSegment &&
-                        constraint.second.index == old &&
-                        constraint.first.kind != FrameRef::Kind::kSegment;
-    if (first || second) return static_cast<int>(c);
-  }
-  return -1;
-}
-
 void LowerTree(Lowering& lowering) {
   lowering.constraint_is_base_joint.assign(lowering.scenario().constraints.size(), false);
   PlanMirrorSymmetry(lowering);
@@ -129,7 +111,7 @@ void LowerTree(Lowering& lowering) {
       // A root floats (a free joint to the ground) unless a fixed-point constraint holds it at
       // a point of the ground or a vehicle: then that constraint is its ball joint to that base,
       // solved in the tree rather than as a loop.
-      const int held = BaseConstraintOf(lowering, old);
+      const int held = HoldingConstraintOf(lowering.scenario(), old);
       lowering.base_constraint.push_back(held);
       model.segment_parent.push_back(-1);
       if (held < 0) {

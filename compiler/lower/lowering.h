@@ -107,9 +107,6 @@ class Lowering {
 
 // Segments in tree order, their inertia, the joints above them and their coordinates.
 void LowerTree(Lowering& lowering);
-// The fixed-point constraint that holds checked segment `old` at a point of the ground or a
-// vehicle (it becomes the segment's joint to that base), or -1.
-int BaseConstraintOf(const Lowering& lowering, int old);
 // Planar symmetry: the joint above Model segment `s` loses the degrees of freedom that leave
 // the xz plane (called by LowerTree before the joint's coordinates are counted).
 void RestrictToPlane(Lowering& lowering, std::size_t s);

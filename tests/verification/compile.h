@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "sled/compile.h"
 #include "sled/simulate.h"
 
@@ -68,6 +70,20 @@ inline SceneRun RunText(const std::string& text) {
   run.series = std::move(result.series);
   run.summary = std::move(result.summary);
   return run;
+}
+
+// The value of the channel named `name` (with its unit: `b.s.position.x [m]`) at `row`.
+inline double ChannelAt(const runtime::TimeSeries& series, const std::string& name,
+                        std::size_t row) {
+  for (std::size_t c = 0; c < series.names.size(); ++c) {
+    if (series.names[c] == name) return series.values[row * series.columns + 1 + c];
+  }
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+inline double TimeAt(const runtime::TimeSeries& series, std::size_t row) {
+  return series.values[row * series.columns];
 }
 
 }  // namespace sled::verification

@@ -50,18 +50,6 @@ Seen FromTurningFrame(const Turn& turn, const Vec3& origin, const Vec3& frame_ve
   return seen;
 }
 
-double Column(const runtime::TimeSeries& series, const std::string& name, std::size_t row) {
-  for (std::size_t c = 0; c < series.names.size(); ++c) {
-    if (series.names[c] == name) return series.values[row * series.columns + 1 + c];
-  }
-  ADD_FAILURE() << "no column " << name;
-  return 0;
-}
-
-double Time(const runtime::TimeSeries& series, std::size_t row) {
-  return series.values[row * series.columns];
-}
-
 constexpr double kSpinUp = 3.0;     // rad/s^2 of the turntable, from rest
 constexpr double kSpinBody = -2.0;  // rad/s
 
@@ -112,7 +100,7 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
   const char* const xyz[] = {"x", "y", "z"};
   double worst = 0;
   for (std::size_t row = 0; row < s.rows(); ++row) {
-    const double t = Time(s, row);
+    const double t = TimeAt(s, row);
     const Turn turntable{kSpinUp * t * t / 2, kSpinUp * t, kSpinUp};
     const Turn top{kSpinBody * t, kSpinBody, 0};
     const Seen from_table =
@@ -122,7 +110,7 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
       const std::string c = xyz[i];
       const std::string table = "ball.b.relative_to.turntable.";
       auto check = [&](const std::string& name, double expected) {
-        const double got = Column(s, name, row);
+        const double got = ChannelAt(s, name, row);
         worst = std::max(worst, std::fabs(got - expected));
         EXPECT_NEAR(got, expected, 1e-7) << name << " at t = " << t;
       };
@@ -150,10 +138,10 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
     }
     // Yaw of the ball in the table's axes: minus the table's angle, wrapped to (-pi, pi].
     const double yaw = std::remainder(-turntable.angle, 2 * M_PI);
-    EXPECT_NEAR(
-        std::remainder(Column(s, "ball.b.relative_to.turntable.orientation.yaw [rad]", row) - yaw,
-                       2 * M_PI),
-        0.0, 1e-7)
+    EXPECT_NEAR(std::remainder(
+                    ChannelAt(s, "ball.b.relative_to.turntable.orientation.yaw [rad]", row) - yaw,
+                    2 * M_PI),
+                0.0, 1e-7)
         << t;
   }
   EXPECT_LT(worst, 1e-7);
