@@ -38,6 +38,13 @@ constexpr LocationWord kLocationWords[] = {
     {"buckle", "BCKL"},
     {"seat", "SEAT"},
     {"door", "DOOR"},
+    {"bumper", "BUMP"},
+    {"hood", "HOOD"},
+    {"bonnet", "HOOD"},
+    {"fender", "FEND"},
+    {"a_pillar", "APIL"},
+    {"pole", "POLE"},
+    {"barrier", "FBAR"},
     {"neck", "NECK"},
     {"head", "HEAD"},
     {"thorax", "CHST"},
@@ -83,11 +90,14 @@ std::vector<std::string> Words(const std::string& label) {
   return words;
 }
 
-// The location of a dotted label: the last word that names one (in `with` outputs, the
-// surface the segment touches), and the side from any word.
-Location LocationOf(const std::string& label) {
+// The location of a dotted label: the last word that names one, and the side from any word.
+// The first `skip` words are not read, unless they are all there is (a surface's module alias
+// is no location: `buck.knee_bolster` is a knee bolster, a plane `bumper` a bumper).
+Location LocationOf(const std::string& label, std::size_t skip = 0) {
   Location location;
-  const std::vector<std::string> words = Words(label);
+  std::vector<std::string> words = Words(label);
+  skip = std::min(skip, words.size() - 1);
+  words.erase(words.begin(), words.begin() + static_cast<std::ptrdiff_t>(skip));
   bool found = false;
   for (auto word = words.rbegin(); word != words.rend() && !found; ++word) {
     for (const LocationWord& entry : kLocationWords) {
@@ -169,26 +179,32 @@ Quantity QuantityOf(Model::OutputKind kind, std::size_t mechanism) {
       return {"PR", "Pa", false};
     case Model::OutputKind::kAirbagForce:
       return {"FO", "N", true};
-    // No ISO-MME dimension of their own: `00` (other), with the SI unit.
     case Model::OutputKind::kAirbagVolume:
-      return {"00", "m^3", false};
+      return {"VU", "m*m*m", false};
     case Model::OutputKind::kAirbagGasMass:
-      return {"00", "kg", false};
+      return {"MA", "kg", false};
     case Model::OutputKind::kAirbagTemperature:
-      return {"00", "K", false};
+      return {"TE", "K", false};
     case Model::OutputKind::kAirbagVentFlow:
-      return {"00", "kg/s", false};
+      return {"MF", "kg/s", false};
   }
   return {"00", "", false};
 }
 
-// The direction letter of a channel from its component (the last word of its name).
+// The direction letter of a channel from its component (the last word of its name), in SAE
+// J211's axes: x forward, y right, z down. sled's y and z point left and up, so the data of a y or
+// z component are negated (a half turn about x, which negates rotations about y and z too).
 char DirectionOf(const std::string& component) {
   if (component == "x" || component == "roll" || component == "spin") return 'X';
-  if (component == "y" || component == "pitch" || component == "nutation") return '2';
-  if (component == "z" || component == "yaw" || component == "precession") return '3';
+  if (component == "y" || component == "pitch" || component == "nutation") return 'Y';
+  if (component == "z" || component == "yaw" || component == "precession") return 'Z';
   return '0';
 }
+double SignOf(char direction) { return direction == 'Y' || direction == 'Z' ? -1.0 : 1.0; }
+
+// The raw channels' filter class: sampled from the model at the output step, never filtered
+// ("prefiltered above CFC 1000" in ISO/TS 13499's list, as labs read simulated data).
+constexpr char kRawClass = 'P';
 
 // A channel name without its unit: `occupant.head.acceleration.x`.
 std::string WithoutUnit(const std::string& name) {
@@ -212,31 +228,40 @@ class CodeBook {
 };
 
 std::string Code(char position, const Location& location, std::string_view fine2,
-                 std::string_view dimension, char direction, char filter) {
-  return fmt::format("1{}{}{}{}00{}{}{}", position, location.main, location.fine, fine2, dimension,
-                     direction, filter);
+                 std::string_view dummy, std::string_view dimension, char direction, char filter) {
+  return fmt::format("1{}{}{}{}{}{}{}{}", position, location.main, location.fine, fine2, dummy,
+                     dimension, direction, filter);
 }
 
+// Fine location 3, the dummy type: sled's Model does not know which dummy a body stands for,
+// so 00 (no dummy type), which labs' tools match as any.
+constexpr std::string_view kDummy = "00";
+
+// Criterion values as labs' tools look them up (ISO/TS 13499 RED B 1.6.2's calculation codes,
+// as pyisomme's Euro NCAP and UN reports read them): HIC from the head's resultant acceleration,
+// the 3 ms value as a cumulative (3C) or single-peak (3S) clip, Nij in position (IP) with its
+// quadrants in fine location 2 (Nkm's likewise), peak neck and femur forces along z.
 struct CriterionCode {
   std::string_view name;
   std::string_view location;
   std::string_view fine1;
   std::string_view fine2;
   std::string_view dimension;
+  char direction;
 };
 constexpr CriterionCode kCriterionCodes[] = {
-    {"hic15", "HICR", "00", "15", "00"},
-    {"hic36", "HICR", "00", "36", "00"},
-    {"head_3ms", "HEAD", "00", "XC", "AC"},
-    {"chest_3ms", "CHST", "00", "XC", "AC"},
-    {"gsi_head", "HEAD", "SI", "00", "00"},
-    {"gsi_chest", "CHSI", "00", "00", "00"},
-    {"nij", "NIJC", "00", "00", "00"},
-    {"neck_tension", "NECK", "UP", "TE", "FO"},
-    {"neck_compression", "NECK", "UP", "CO", "FO"},
-    {"femur_load", "FEMR", "00", "00", "FO"},
-    {"viscous_criterion", "VCCR", "00", "00", "00"},
-    {"nkm", "NKMC", "00", "00", "00"},  // a location of our own: not in the RED B list we have
+    {"hic15", "HICR", "00", "15", "00", 'R'},
+    {"hic36", "HICR", "00", "36", "00", 'R'},
+    {"head_3ms", "HEAD", "00", "3C", "AC", 'R'},
+    {"chest_3ms", "CHST", "00", "3C", "AC", 'R'},
+    {"gsi_head", "HEAD", "SI", "00", "00", 'R'},
+    {"gsi_chest", "CHSI", "00", "00", "00", 'R'},
+    {"nij", "NIJC", "IP", "00", "00", 'Y'},
+    {"neck_tension", "NECK", "UP", "TN", "FO", 'Z'},
+    {"neck_compression", "NECK", "UP", "CO", "FO", 'Z'},
+    {"femur_load", "FEMR", "00", "00", "FO", 'Z'},
+    {"viscous_criterion", "VCCR", "00", "00", "VE", 'X'},
+    {"nkm", "NKMC", "00", "00", "00", 'Y'},
 };
 
 }  // namespace
@@ -275,13 +300,33 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
     const Quantity quantity = QuantityOf(kind, mechanism);
     const int cfc = k < model.output_filter_class.size() ? model.output_filter_class[k] : 0;
     char position = positions.Of(label);
+    const std::string_view dummy = kDummy;
     Location location = LocationOf(label);
+    const bool contact = kind == Model::OutputKind::kContactForce ||
+                         kind == Model::OutputKind::kContactPoint ||
+                         kind == Model::OutputKind::kContactDeflection;
+    const ContactTable& pairs = model.contacts;
+    if (contact && index < pairs.group_first.size() && pairs.group_count[index] > 0) {
+      // The force on the surface the segment touches (the group's first pair's), where that
+      // surface is (a bumper's force on a leg is no tibia load cell), or nowhere (0000) when its
+      // name, past its first word, gives no location; the side still from the label.
+      const auto pair = static_cast<std::size_t>(
+          pairs.group_pairs[static_cast<std::size_t>(pairs.group_first[index])]);
+      const auto second = static_cast<std::size_t>(pairs.pair_second[pair]);
+      location.main = LocationOf(pairs.pair_kind[pair] == ContactTable::PairKind::kPlaneEllipsoid
+                                     ? pairs.plane_name[second]
+                                     : pairs.ellipsoid_name[second],
+                                 1)
+                          .main;
+      if (location.fine == "UP" || location.fine == "LO") location.fine = "00";
+    }
     if (kind == Model::OutputKind::kBeltForce) {
       // The body the belt first wraps gives the position.
       const BeltTable& belts = model.belts;
       for (std::int32_t i = 0; i < belts.point_count[index] && position == '0'; ++i) {
         const FrameRef& frame =
-            belts.point_frame[static_cast<std::size_t>(belts.first_point[index] + i)];
+            belts.point_frame[static_cast<std::size_t>(belts.first_point[index]) +
+                              static_cast<std::size_t>(i)];
         if (frame.kind == FrameRef::Kind::kSegment) {
           position = positions.Of(model.segment_name[static_cast<std::size_t>(frame.index)]);
         }
@@ -307,14 +352,43 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
         }
       }
       IsoMmeChannel channel;
-      channel.code =
-          book.Take(Code(position, channel_location, fine2, quantity.dimension, direction, '0'));
+      channel.code = book.Take(
+          Code(position, channel_location, fine2, dummy, quantity.dimension, direction, kRawClass));
       channel.name = name;
       channel.unit = quantity.unit;
       channel.dimension = quantity.dimension;
       channel.direction = direction;
+      channel.sign = SignOf(direction);
       channel.world_frame = quantity.world_frame;
       codes.raw.push_back(channel);
+    }
+    // A three-axis acceleration's resultant, raw and filtered (the components filtered first,
+    // as J211 orders it): the channel labs read HIC and the 3 ms value from (11HEAD0000H3ACRA).
+    if (kind == Model::OutputKind::kAcceleration && count == 3 && first[k] + 2 < raw.names.size()) {
+      IsoMmeChannel resultant = codes.raw[first[k]];
+      resultant.code =
+          book.Take(Code(position, location, "00", dummy, quantity.dimension, 'R', kRawClass));
+      const std::string x = WithoutUnit(raw.names[first[k]]);
+      resultant.name = x.substr(0, x.rfind('.')) + ".resultant";
+      resultant.direction = 'R';
+      resultant.sign = 1.0;
+      resultant.components = {first[k], first[k] + 1, first[k] + 2};
+      codes.raw_resultants.push_back(resultant);
+      std::vector<std::size_t> filtered_columns;
+      for (std::size_t c = 0; c < 3; ++c) {
+        const auto at =
+            std::find(filtered.names.begin(), filtered.names.end(), raw.names[first[k] + c]);
+        if (at != filtered.names.end()) {
+          filtered_columns.push_back(static_cast<std::size_t>(at - filtered.names.begin()));
+        }
+      }
+      if (filtered_columns.size() == 3) {
+        IsoMmeChannel smooth = resultant;
+        smooth.code = book.Take(
+            Code(position, location, "00", dummy, quantity.dimension, 'R', FilterClassLetter(cfc)));
+        smooth.components = filtered_columns;
+        codes.filtered_resultants.push_back(smooth);
+      }
     }
   }
   // A filtered channel: its raw channel's code with the class letter.
@@ -326,7 +400,7 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
       channel = codes.raw[column];
       channel.code[15] = FilterClassLetter(column_class[column]);
     } else {  // not a raw channel's name: the filter keeps names, so never; an undefined code
-      channel.code = "1000000000000000";
+      channel.code = "100000000000000P";
       channel.name = WithoutUnit(name);
     }
     channel.code = book.Take(channel.code);
@@ -334,27 +408,30 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
   }
   for (const post::CriterionValue& value : criteria) {
     Location location;
-    std::string_view fine2 = "00", dimension = "00";
+    std::string fine2 = "00";
+    std::string_view dimension = "00";
+    char direction = 'R';
     for (const CriterionCode& entry : kCriterionCodes) {
       if (entry.name != value.name) continue;
       location = {std::string(entry.location), std::string(entry.fine1)};
       fine2 = entry.fine2;
       dimension = entry.dimension;
+      direction = entry.direction;
     }
     if (location.main == "FEMR") location.fine = LocationOf(value.target).fine;
-    if (value.variant == "continuous") fine2 = "XS";
-    // Nij's quadrant terms: NTE, NTF, NCE, NCF in fine location 1; Nkm's NEA, NFA, NEP, NFP.
+    if (value.variant == "continuous") fine2 = "3S";
+    // Nij's quadrant terms NTE, NTF, NCE, NCF, and Nkm's NEA, NFA, NEP, NFP, in fine location 2.
     if ((value.name == "nij" || value.name == "nkm") && value.variant.size() == 3) {
-      location.fine = value.variant.substr(1);
+      fine2 = value.variant.substr(1);
     }
     IsoMmeChannel channel;
-    channel.code =
-        book.Take(Code(positions.Of(value.target), location, fine2, dimension, 'R', 'X'));
+    channel.code = book.Take(
+        Code(positions.Of(value.target), location, fine2, kDummy, dimension, direction, 'X'));
     channel.name = fmt::format("{}({}){}", value.name, value.target,
                                value.variant.empty() ? "" : " " + value.variant);
     channel.unit = value.unit.empty() ? "1" : value.unit;  // an index has unit one
     channel.dimension = std::string(dimension);
-    channel.direction = 'R';
+    channel.direction = direction;
     codes.criteria.push_back(channel);
   }
   return codes;

@@ -5,18 +5,24 @@
 //   2     position: the body's place among the scene's bodies (1 for the first, ...), 0 for
 //         channels of no body
 //   3-6   main location from the words of the output's name (head HEAD, neck NECK, thorax CHST,
-//         pelvis PELV, seat_pan SEPN, knee_bolster KNBO, ...); belts SEBE, belt anchors BAFI;
-//         criteria HICR, NIJC, ...
+//         pelvis PELV, seat_pan SEPN, knee_bolster KNBO, bumper BUMP, ...); a contact's from
+//         the surface the segment touches; belts SEBE, belt anchors BAFI; criteria HICR, NIJC, ...
 //   7-8   fine location 1: UP/LO (upper/lower neck), LE/RI (a name ending in _l/_r or holding
-//         left/right), 00
-//   9-10  fine location 2: 00, a belt span or anchor ordinal, the HIC window (15, 36), XC/XS
-//         (3 ms cumulative / continuous); an ordinal 01..99 when the code is already taken
-//   11-12 fine location 3 (dummy type): 00, sled's bodies are no certified dummy
-//   13-14 physical dimension: AC, VE, DS, AA, AV, AN, FO, MO, 00
-//   15    direction: X for x; 2 and 3 for y and z (sled's axes point left and up, opposite to
-//         SAE J211's right and down, which ISO-MME writes as 2 and 3); 0 for a magnitude or a
-//         joint angle; R for a criterion
-//   16    filter class: 0 raw, A/B/C/D for CFC 1000/600/180/60, X for a computed criterion
+//         left/right), IP (Nij in position), 00
+//   9-10  fine location 2: 00, a belt span or anchor ordinal, the HIC window (15, 36), 3C/3S
+//         (3 ms clip, cumulative / single peak), Nij's quadrant (TE, TF, CE, CF), TN/CO (neck
+//         tension / compression); an ordinal 01..99 when the code is already taken
+//   11-12 fine location 3 (dummy type): 00 (the Model does not say which dummy a body stands
+//         for; labs' tools match 00 as any)
+//   13-14 physical dimension: AC, VE, DS, AA, AV, AN, FO, MO, PR, VU, MA, TE, MF, 00
+//   15    direction: X, Y, Z in SAE J211's axes (x forward, y right, z down: sled's y and z,
+//         which point left and up, are negated in the data), R for a resultant, 0 for a
+//         magnitude or a joint angle
+//   16    filter class: P raw (sampled from the model, never filtered), A/B/C/D for CFC
+//         1000/600/180/60, X for a computed criterion
+//
+// Every three-axis acceleration also gets its resultant (direction R), raw and filtered: the
+// channel labs read HIC and 3 ms values from (11HEAD000000ACRA).
 #pragma once
 
 #include <string>
@@ -35,6 +41,10 @@ struct IsoMmeChannel {
   std::string dimension;
   char direction = '0';
   bool world_frame = false;  // else the segment's (or joint's, or anchor's) frame
+  // The data in SAE J211's axes: -1 for a y or z component (sled's y and z point left and up).
+  double sign = 1.0;
+  // A resultant: the columns whose root sum of squares it is (else empty).
+  std::vector<std::size_t> components;
 };
 
 // The ISO-MME filter class letter of a CFC: A (1000), B (600), C (180), D (60), 0 (none).
@@ -44,6 +54,9 @@ struct IsoMmeCodes {
   std::vector<IsoMmeChannel> raw;       // one per channel of ChannelNames(model)
   std::vector<IsoMmeChannel> filtered;  // one per filtered channel, by its name
   std::vector<IsoMmeChannel> criteria;  // one per criterion value
+  // Resultants of three-axis accelerations, of raw columns and of filtered columns.
+  std::vector<IsoMmeChannel> raw_resultants;
+  std::vector<IsoMmeChannel> filtered_resultants;
 };
 
 // Codes for every channel and criterion value, all different.

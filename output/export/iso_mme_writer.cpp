@@ -55,11 +55,18 @@ std::string ChannelHeader(const IsoMmeChannel& channel, int cfc, double first_ti
   return out;
 }
 
-// A time-history channel: column `column` of `series` (0 = the first after time).
+// A time-history channel: column `column` of `series` (0 = the first after time) in SAE J211's
+// axes (channel.sign), or the resultant of channel.components.
 std::string SeriesChannel(const IsoMmeChannel& channel, int cfc, const TimeSeries& series,
                           std::size_t column, double interval) {
   const std::size_t rows = series.rows();
-  auto value = [&](std::size_t row) { return series.values[row * series.columns + 1 + column]; };
+  auto value = [&](std::size_t row) {
+    const double* at = series.values.data() + row * series.columns + 1;
+    if (channel.components.empty()) return channel.sign * at[column];
+    double sum = 0.0;
+    for (const std::size_t c : channel.components) sum += at[c] * at[c];
+    return std::sqrt(sum);
+  };
   std::size_t high = 0, low = 0;
   for (std::size_t row = 1; row < rows; ++row) {
     if (value(row) > value(high)) high = row;
@@ -122,19 +129,29 @@ bool WriteIsoMme(const std::string& directory, const std::string& test, const Mo
   const IsoMmeCodes codes = MapIsoMmeCodes(model, raw, filtered, criteria);
   const double interval = post::SamplePeriod(model);
 
-  std::string mme = Field("Data format", "ISO-MME");
-  mme += Field("Version", "1.6");
-  mme += Field("Test number", test);
-  mme += Field("Title", model.title);
-  mme += Field("Test date", Today());
-  mme += Field("Test type", "Simulation");
-  mme += Field("Laboratory name", "sled");
+  // The test's header with ISO/TS 13499 (RED A 1.6) field names, as labs' tools read them.
+  const std::string today = Today();
+  std::string mme = Field("Data format edition number", "1.6");
+  mme += Field("Laboratory name", "sled (simulation)");
+  mme += Field("Laboratory test ref. number", test);
+  mme += Field("Customer name", "NOVALUE");
+  mme += Field("Customer test ref. number", "NOVALUE");
+  mme += Field("Title", model.title.empty() ? std::string("NOVALUE") : model.title);
+  mme += Field("Medium No./number of media", "1/1");
+  mme += Field("Timestamp", today);
+  mme += Field("Type of the test", "Simulation");
+  mme += Field("Subtype of the test", "NOVALUE");
+  mme += Field("Regulation", "NOVALUE");
+  mme += Field("Date of the test", today);
   mme += Field("Number of test objects", "1");
   mme += Field("Name of test object 1", "vehicle 1 (the scene)");
-  mme += Field("Comments", "computed by sled; channel codes as sled's docs/outputs.md maps them");
+  mme += Field("Comments",
+               "computed by sled; SAE J211 axes (x forward, y right, z down); channel codes as "
+               "sled's docs/outputs.md maps them");
   if (!WriteFile(root / (test + ".mme"), mme, error)) return false;
 
-  const std::size_t total = codes.raw.size() + codes.filtered.size() + codes.criteria.size();
+  const std::size_t total = codes.raw.size() + codes.filtered.size() + codes.criteria.size() +
+                            codes.raw_resultants.size() + codes.filtered_resultants.size();
   std::string index = Field("Instrumentation standard", "SAEJ211");
   index += Field("Number of channels", std::to_string(total));
   std::size_t number = 0;
@@ -149,13 +166,26 @@ bool WriteIsoMme(const std::string& directory, const std::string& test, const Mo
       return false;
     }
   }
-  for (std::size_t c = 0; c < codes.filtered.size(); ++c) {
-    const IsoMmeChannel& channel = codes.filtered[c];
+  auto class_of = [](const IsoMmeChannel& channel) {
     int cfc = 0;
     for (const int candidate : {1000, 600, 180, 60}) {
       if (FilterClassLetter(candidate) == channel.code[15]) cfc = candidate;
     }
-    if (!write_channel(channel, SeriesChannel(channel, cfc, filtered, c, interval))) return false;
+    return cfc;
+  };
+  for (std::size_t c = 0; c < codes.filtered.size(); ++c) {
+    const IsoMmeChannel& channel = codes.filtered[c];
+    if (!write_channel(channel, SeriesChannel(channel, class_of(channel), filtered, c, interval))) {
+      return false;
+    }
+  }
+  for (const IsoMmeChannel& channel : codes.raw_resultants) {
+    if (!write_channel(channel, SeriesChannel(channel, 0, raw, 0, interval))) return false;
+  }
+  for (const IsoMmeChannel& channel : codes.filtered_resultants) {
+    if (!write_channel(channel, SeriesChannel(channel, class_of(channel), filtered, 0, interval))) {
+      return false;
+    }
   }
   for (std::size_t c = 0; c < codes.criteria.size(); ++c) {
     if (!write_channel(codes.criteria[c],

@@ -1,8 +1,10 @@
 // `sled run --format iso-mme` on the flagship scene (cut to 30 ms) writes an ISO-MME data set; a
 // reader written here, apart from the writer, reads it back and checks it against
-// timeseries.csv, timeseries_filtered.csv and summary.json: the index, the 16-character codes
-// (the documented mapping for known channels), units, sample counts, the sampling interval and
-// every value.
+// timeseries.csv, timeseries_filtered.csv and summary.json: the .mme file's ISO/TS 13499 fields,
+// the index, the 16-character codes (the documented mapping for the channels labs look up
+// first), units, sample counts, the sampling interval and every value, in SAE J211's axes (y and
+// z negated), and the resultants of the accelerations. A bumper's force on a leg is coded as the
+// bumper's, not as a tibia load cell.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -64,11 +66,12 @@ IsoFile ReadIsoFile(const fs::path& path) {
 
 // The unit ISO-MME writes for a CSV column's unit.
 std::string IsoUnit(const std::string& csv_name) {
-  const std::string unit =
+  std::string unit =
       csv_name.substr(csv_name.find('[') + 1, csv_name.find(']') - csv_name.find('[') - 1);
   if (unit == "m/s^2") return "m/(s*s)";
   if (unit == "rad/s^2") return "rad/(s*s)";
   if (unit == "N*m") return "Nm";
+  if (unit == "m^3") return "m*m*m";
   return unit;
 }
 
@@ -93,10 +96,16 @@ TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
   // The test name is the file's stem, with the space replaced.
   const fs::path set = out / "iso-mme";
   const IsoFile mme = ReadIsoFile(set / "frontal_sled.mme");
-  EXPECT_EQ(mme.Get("Data format"), "ISO-MME");
-  EXPECT_EQ(mme.Get("Version"), "1.6");
-  EXPECT_EQ(mme.Get("Test number"), "frontal_sled");
-  EXPECT_TRUE(std::regex_match(mme.Get("Test date"), std::regex("\\d{4}-\\d{2}-\\d{2}")));
+  // The header's ISO/TS 13499 (RED A 1.6) field names, as labs' tools read them.
+  EXPECT_EQ(mme.Get("Data format edition number"), "1.6");
+  EXPECT_EQ(mme.Get("Laboratory test ref. number"), "frontal_sled");
+  EXPECT_EQ(mme.Get("Type of the test"), "Simulation");
+  EXPECT_TRUE(std::regex_match(mme.Get("Date of the test"), std::regex("\\d{4}-\\d{2}-\\d{2}")));
+  EXPECT_EQ(mme.Get("Title"), "frontal sled, belted driver, 56 km/h");
+  EXPECT_EQ(mme.Get("Number of test objects"), "1");
+  for (const char* own : {"Data format", "Version", "Test number", "Test date", "Test type"}) {
+    EXPECT_EQ(mme.Get(own), "<missing>") << own;
+  }
 
   const CsvTable raw = ReadCsv(out / "timeseries.csv");
   const CsvTable filtered = ReadCsv(out / "timeseries_filtered.csv");
@@ -111,21 +120,26 @@ TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
 
   const IsoFile index = ReadIsoFile(set / "Channel" / "frontal_sled.chn");
   const std::size_t channels = std::stoul(index.Get("Number of channels"));
-  EXPECT_EQ(channels, (raw.names.size() - 1) + (filtered.names.size() - 1) + criteria);
+  // Every acceleration request has three components, raw and filtered, and a resultant of each.
+  std::size_t accelerations = 0;
+  for (const std::string& name : raw.names)
+    accelerations += name.find(".acceleration.x [") != std::string::npos;
+  EXPECT_EQ(channels,
+            (raw.names.size() - 1) + (filtered.names.size() - 1) + 2 * accelerations + criteria);
 
   std::set<std::string> codes;
   std::map<std::string, std::string> code_of;  // by "name/class"
-  std::size_t raw_seen = 0, filtered_seen = 0, criteria_seen = 0;
+  std::size_t raw_seen = 0, filtered_seen = 0, criteria_seen = 0, resultants_seen = 0;
   for (std::size_t n = 1; n <= channels; ++n) {
     const std::string number = fmt::format("{:03}", n);
     const std::string entry = index.Get("Name of channel " + number);
     const IsoFile channel = ReadIsoFile(set / "Channel" / ("frontal_sled." + number));
     const std::string code = channel.Get("Channel code");
-    SCOPED_TRACE(code + " " + entry);
+    SCOPED_TRACE(fmt::format("{} {}", code, entry));
     ASSERT_TRUE(std::regex_match(code, std::regex("[0-9A-Z]{16}")));
     EXPECT_TRUE(codes.insert(code).second) << "a repeated code";
     const std::string name = channel.Get("Name of the channel");
-    EXPECT_EQ(entry, code + " / " + name);
+    EXPECT_EQ(entry, fmt::format("{} / {}", code, name));
     EXPECT_EQ(channel.Get("Data source"), "calculation");
     EXPECT_EQ(channel.Get("Reference channel"), "implicit");
     const char filter = code[15];
@@ -139,8 +153,31 @@ TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
       }
       continue;
     }
-    const bool is_raw = filter == '0';
+    const bool is_raw = filter == 'P';
     const CsvTable& table = is_raw ? raw : filtered;
+    if (name.ends_with(".resultant")) {  // the root sum of squares of the x, y, z columns
+      ++resultants_seen;
+      code_of[name + (is_raw ? "/raw" : "/filtered")] = code;
+      EXPECT_EQ(code[14], 'R');
+      const std::string stem = name.substr(0, name.size() - std::string("resultant").size());
+      std::vector<std::size_t> xyz;
+      for (const char* axis : {"x", "y", "z"}) {
+        for (std::size_t c = 1; c < table.names.size(); ++c) {
+          if (WithoutUnit(table.names[c]) == stem + axis) xyz.push_back(c);
+        }
+      }
+      ASSERT_EQ(xyz.size(), 3u) << stem;
+      ASSERT_EQ(channel.data.size(), table.rows.size());
+      for (std::size_t row = 0; row < table.rows.size(); ++row) {
+        const std::vector<double>& r = table.rows[row];
+        const double expected =
+            std::sqrt(r[xyz[0]] * r[xyz[0]] + r[xyz[1]] * r[xyz[1]] + r[xyz[2]] * r[xyz[2]]);
+        ASSERT_NEAR(std::strtod(channel.data[row].c_str(), nullptr), expected,
+                    1e-12 * std::max(1.0, expected))
+            << "row " << row;
+      }
+      continue;
+    }
     std::size_t column = table.names.size();
     for (std::size_t c = 1; c < table.names.size(); ++c) {
       if (WithoutUnit(table.names[c]) == name) column = c;
@@ -158,29 +195,74 @@ TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
                                                                       : "60");
     ASSERT_EQ(std::stoul(channel.Get("Number of samples")), table.rows.size());
     ASSERT_EQ(channel.data.size(), table.rows.size());
+    // SAE J211's axes: a y or z component is sled's negated (its y and z point left and up).
+    const char direction = code[14];
+    EXPECT_TRUE(std::string("XYZR0").find(direction) != std::string::npos) << direction;
+    const double sign = direction == 'Y' || direction == 'Z' ? -1.0 : 1.0;
     for (std::size_t row = 0; row < table.rows.size(); ++row) {
       // Both files hold the shortest text of the same double.
-      ASSERT_EQ(std::strtod(channel.data[row].c_str(), nullptr), table.rows[row][column])
+      ASSERT_EQ(std::strtod(channel.data[row].c_str(), nullptr), sign * table.rows[row][column])
           << "row " << row;
     }
   }
   EXPECT_EQ(raw_seen, raw.names.size() - 1);
   EXPECT_EQ(filtered_seen, filtered.names.size() - 1);
   EXPECT_EQ(criteria_seen, criteria);
+  EXPECT_EQ(resultants_seen, 2 * accelerations);
 
   // The documented mapping (docs/outputs.md) for channels a crash engineer looks for first.
-  EXPECT_EQ(code_of["occupant.head.acceleration.x/raw"], "11HEAD000000ACX0");
+  // (pyisomme's Euro NCAP and UN R137 reports look them up as `?pHEAD??00??ACRA`,
+  // `?pHICR0015??00RX`, `?pHEAD003C??ACRX`, `?pNECKUP00??FOZ?`.)
+  EXPECT_EQ(code_of["occupant.head.acceleration.x/raw"], "11HEAD000000ACXP");
   EXPECT_EQ(code_of["occupant.head.acceleration.x/filtered"], "11HEAD000000ACXA");
-  EXPECT_EQ(code_of["occupant.thorax.acceleration.z/filtered"], "11CHST000000AC3A");
-  EXPECT_EQ(code_of["occupant.neck_upper.joint_force.z/filtered"], "11NECKUP0000FO3A");
-  EXPECT_EQ(code_of["occupant.neck_upper.joint_torque.y/filtered"], "11NECKUP0000MO2B");
+  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/raw"], "11HEAD000000ACRP");
+  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/filtered"], "11HEAD000000ACRA");
+  EXPECT_EQ(code_of["occupant.thorax.acceleration.z/filtered"], "11CHST000000ACZA");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_force.z/filtered"], "11NECKUP0000FOZA");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_torque.y/filtered"], "11NECKUP0000MOYB");
   EXPECT_EQ(code_of["occupant.upper_leg_l.buck.knee_bolster.contact_force.normal/raw"],
-            "11KNBOLE0000FO00");
-  EXPECT_EQ(code_of["three_point.lap.belt_force.span1/raw"], "11SEBE000100FO00");
+            "11KNBOLE0000FO0P");
+  EXPECT_EQ(code_of["three_point.lap.belt_force.span1/raw"], "11SEBE000100FO0P");
   EXPECT_EQ(code_of["hic15(occupant.head)"], "11HICR00150000RX");
-  EXPECT_EQ(code_of["nij(occupant.neck_upper)"], "11NIJC00000000RX");
-  EXPECT_EQ(code_of["head_3ms(occupant.head) cumulative"], "11HEAD00XC00ACRX");
-  EXPECT_EQ(code_of["head_3ms(occupant.head) continuous"], "11HEAD00XS00ACRX");
+  EXPECT_EQ(code_of["nij(occupant.neck_upper)"], "11NIJCIP000000YX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) cumulative"], "11HEAD003C00ACRX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) continuous"], "11HEAD003S00ACRX");
+  for (const auto& [name, code] : code_of) {
+    EXPECT_EQ(code.find_first_of("123", 14), std::string::npos) << name << " " << code;
+  }
+}
+
+// A pedestrian's leg struck by a bumper: the contact force is the bumper's (BUMP), on the left
+// (the leg's side), never a tibia load cell (TIBI), whatever segment it acts on.
+TEST_F(IsoMmeExport, ABumpersForceOnALegIsCodedAsTheBumpers) {
+  WriteText(temp() / "bumper.sled", R"(scenario "bumper" {
+  gravity = (0, 0, 0) m/s^2
+  time { end = 5 ms  output_every = 0.1 ms }
+  vehicle car { velocity = (-10, 0, 0) m/s }
+  body walker {
+    segment lower_leg_l {
+      mass = 3 kg
+      inertia = (0.04, 0.04, 0.004) kg*m^2
+      ellipsoid { semi_axes = (50, 50, 200) mm }
+    }
+  }
+  plane bumper on car { corners = (0, -1, -1) m, (0, -1, 1) m, (0, 1, -1) m }
+  contact walker.lower_leg_l with bumper { force = 100 kN/m }
+  initial car { position = (0.06, 0, 0) m }
+  output { contact_force walker.lower_leg_l with bumper }
+})");
+  const fs::path out = temp() / "out";
+  const SledResult result =
+      Sled({"run", (temp() / "bumper.sled").string(), "-o", out.string(), "--format", "iso-mme"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const IsoFile index = ReadIsoFile(out / "iso-mme" / "Channel" / "bumper.chn");
+  std::set<std::string> codes;
+  for (const auto& [field, value] : index.fields) {
+    if (field.rfind("Name of channel", 0) == 0) codes.insert(value.substr(0, 16));
+  }
+  EXPECT_TRUE(codes.count("11BUMPLE0000FOXP")) << ::testing::PrintToString(codes);
+  EXPECT_TRUE(codes.count("11BUMPLE0000FO0P")) << ::testing::PrintToString(codes);
+  for (const std::string& code : codes) EXPECT_EQ(code.find("TIBI"), std::string::npos) << code;
 }
 
 }  // namespace

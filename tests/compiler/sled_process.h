@@ -91,8 +91,8 @@ struct SledResult {
   std::string err;
 };
 
-// Fixture for tests of the `sled` program: Sled({...}) runs it in the repository root with both
-// streams captured into the test's own folder, temp() is that folder.
+// Fixture for tests of the `sled` program: Sled({...}) runs it in the repository root (or in
+// `directory`) with both streams captured into the test's own folder, temp() is that folder.
 class SledProcessTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -102,10 +102,10 @@ class SledProcessTest : public ::testing::Test {
     ASSERT_FALSE(temp_.path().empty()) << "cannot create a temporary folder";
   }
 
-  SledResult Sled(const std::vector<std::string>& args) {
+  SledResult Sled(const std::vector<std::string>& args, const fs::path& directory = kSourceRoot) {
     const fs::path out = temp_.path() / "stdout.txt";
     const fs::path err = temp_.path() / "stderr.txt";
-    std::string command = "cd " + Quote(kSourceRoot.string()) + " && " + Quote(sled_.string());
+    std::string command = "cd " + Quote(directory.string()) + " && " + Quote(sled_.string());
     for (const std::string& arg : args) command += " " + Quote(arg);
     command += " >" + Quote(out.string()) + " 2>" + Quote(err.string()) + " </dev/null";
     SledResult result;
