@@ -1,5 +1,6 @@
 // The concrete syntax tree the PEGTL control builds while parsing: one node per selected rule,
-// with byte offsets into the buffer. parser.cpp turns it into the AST and then drops it.
+// with byte offsets into the buffer. syntax_to_ast.cpp turns it into the AST; the parser then
+// drops it.
 #pragma once
 
 #include <cstdint>
