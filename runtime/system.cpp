@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -9,6 +10,7 @@
 #include "runtime/constraints.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_impulse.h"
+#include "runtime/contact/contact_reach.h"
 #include "runtime/dynamics.h"
 #include "runtime/energy.h"
 #include "runtime/forces.h"
@@ -35,7 +37,11 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
     }
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
-    if (model.contacts.pair_impulse[k]) events_.push_back({EventKind::kContactImpulse, k});
+    // First touch and separation: the force law starts (and ends) with a kink that no step
+    // should straddle; the impulse option's event marks the touch already.
+    events_.push_back(
+        {model.contacts.pair_impulse[k] ? EventKind::kContactImpulse : EventKind::kContactTouch,
+         k});
     if (data.contacts.hysteresis[k]) events_.push_back({EventKind::kContactTurn, k});
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
@@ -192,6 +198,14 @@ void MultibodySystem::ProjectState(double t, std::span<double> y) {
   }
 }
 
+double MultibodySystem::StepLimit(double t, std::span<const double> y) {
+  if (model_.contacts.npair() == 0 || !Evaluate(t, y)) {
+    return std::numeric_limits<double>::infinity();  // (a failed evaluation fails the step)
+  }
+  WatchContactReach(model_, data_);
+  return ContactStepLimit(model_, data_);
+}
+
 void MultibodySystem::CommitStep(double t, std::span<const double> y) {
   if (!watches_tables_) return;
   Load(t, y);
@@ -243,7 +257,8 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
   Evaluate(t, y);
   if (!belt_events_.empty()) UpdateBeltRates(model_, data_);
   for (std::size_t k = 0; k < events_.size(); ++k) {
-    if (events_[k].kind == EventKind::kContactImpulse) {
+    if (events_[k].kind == EventKind::kContactImpulse ||
+        events_[k].kind == EventKind::kContactTouch) {
       g[k] = data_.contacts.gap[events_[k].segment];  // > 0 while the surfaces are apart
       continue;
     }
@@ -297,6 +312,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
         break;
       }
       case EventKind::kContactImpulse:
+      case EventKind::kContactTouch:
       case EventKind::kContactTurn:
       case EventKind::kBelt:
       case EventKind::kAirbagFull:
@@ -374,6 +390,7 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     }
     return EventEffect::kModeChanged;
   }
+  if (events_[k].kind == EventKind::kContactTouch) return EventEffect::kModeChanged;
   if (events_[k].kind == EventKind::kContactTurn) {
     if (direction < 0 && Evaluate(t, y)) {
       TurnContactHistory(model_, data_, events_[k].segment);
@@ -453,6 +470,7 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
       break;
     }
     case EventKind::kContactImpulse:
+    case EventKind::kContactTouch:
     case EventKind::kContactTurn:
     case EventKind::kBelt:
     case EventKind::kAirbagFull:

@@ -32,6 +32,10 @@ class MultibodySystem : public OdeSystem {
   // After an accepted step: only watches the tables of contacts and belts for arguments past
   // their rows (runtime/table_range.h), a report; every history changes at events.
   void CommitStep(double t, std::span<const double> y) override;
+  // No step longer than an approaching contact pair allows (runtime/contact/contact_reach.h).
+  // Called at every step start from a state just evaluated, it also watches each pair's
+  // deflection against what its force law describes.
+  double StepLimit(double t, std::span<const double> y) override;
   std::string FailureReason() const override;
 
   std::size_t EventCount() const override { return events_.size(); }
@@ -53,6 +57,8 @@ class MultibodySystem : public OdeSystem {
   // kAirbagFull (an airbag's envelope becomes full, or stops being full) and kAirbagInflow (its
   // inflator starts or stops at `time`) switch the bag's mode where its gas equations change,
   // so no step straddles the jump in their rates.
+  // kContactTouch: a pair without the impulse option touches or separates (its gap passes
+  // zero), where the force law has a kink; it only stops the step there.
   // kContactTurn: a hysteretic contact pair's deflection turns while it loads (its largest
   // deflection, and with it the unloading curve, is set there). kBelt: a belt's junction sticks
   // or slips, a wrap re-anchors, a span's strain turns (runtime/restraint/belt_events.h).
@@ -61,6 +67,7 @@ class MultibodySystem : public OdeSystem {
     kTwistStop,
     kLock,
     kContactImpulse,
+    kContactTouch,
     kContactTurn,
     kBelt,
     kAirbagFull,

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "runtime/contact/contact_forces.h"
+#include "runtime/contact/contact_reach.h"
 #include "runtime/data.h"
 #include "runtime/forces.h"
 #include "runtime/joint.h"
@@ -138,14 +139,7 @@ std::vector<TableExtrapolation> TableExtrapolations(const Model& model, const Da
   };
   const ContactTable& contacts = model.contacts;
   for (std::size_t k = 0; k < contacts.npair(); ++k) {
-    const auto second = static_cast<std::size_t>(contacts.pair_second[k]);
-    const std::string& other = contacts.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid
-                                   ? contacts.plane_name[second]
-                                   : contacts.ellipsoid_name[second];
-    add(data.table_watch.contact[k], contacts.pair_function[k],
-        fmt::format("contact `{}` with `{}`",
-                    contacts.ellipsoid_name[static_cast<std::size_t>(contacts.pair_first[k])],
-                    other),
+    add(data.table_watch.contact[k], contacts.pair_function[k], ContactPairName(contacts, k),
         "deflection [m]");
   }
   for (std::size_t b = 0; b < model.belts.size(); ++b) {

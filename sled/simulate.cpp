@@ -9,6 +9,7 @@
 #include "output/post/channel_filters.h"
 #include "output/post/global_error.h"
 #include "output/post/injury_criteria.h"
+#include "runtime/contact/contact_reach.h"
 
 namespace sled {
 namespace {
@@ -85,6 +86,9 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   result.extrapolations = runtime::TableExtrapolations(model, data);
   for (const runtime::TableExtrapolation& e : result.extrapolations) {
     result.warnings.push_back("warning: " + e.Describe());
+  }
+  for (std::string& warning : runtime::ContactReachWarnings(model, data)) {
+    result.warnings.push_back(std::move(warning));
   }
   for (std::string& warning : filtered.warnings) result.warnings.push_back(std::move(warning));
   if (options.error_estimate && result.summary.complete()) {

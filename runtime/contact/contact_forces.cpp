@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/contact/contact_reach.h"
 #include "runtime/dynamics.h"
 #include "runtime/energy.h"
 #include "runtime/force_deflection.h"
@@ -17,14 +18,6 @@ namespace {
 // speed [m/s], so the equations stay Lipschitz for the integrators (as the joints' Coulomb
 // torque). A static tangential load below full friction creeps at v0 atanh(load / (mu N)).
 constexpr double kFrictionSpeed = 1e-2;
-
-FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side) {
-  if (side == 0) return table.ellipsoid_frame[static_cast<std::size_t>(table.pair_first[k])];
-  const auto second = static_cast<std::size_t>(table.pair_second[k]);
-  return table.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid
-             ? table.plane_frame[second]
-             : table.ellipsoid_frame[second];
-}
 
 EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std::int32_t e) {
   const auto i = static_cast<std::size_t>(e);
@@ -90,6 +83,14 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
 }
 
 }  // namespace
+
+FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side) {
+  if (side == 0) return table.ellipsoid_frame[static_cast<std::size_t>(table.pair_first[k])];
+  const auto second = static_cast<std::size_t>(table.pair_second[k]);
+  return table.pair_kind[k] == ContactTable::PairKind::kPlaneEllipsoid
+             ? table.plane_frame[second]
+             : table.ellipsoid_frame[second];
+}
 
 void PlaceContactSurfaces(const Model& model, Data& data) {
   const ContactTable& table = model.contacts;
@@ -193,6 +194,7 @@ void SetUpContacts(const Model& model, Data& data) {
   ComputeKinematics(model, data);
   PlaceContactSurfaces(model, data);
   ContactState& state = data.contacts;
+  StartContactReach(model, data);
   for (std::size_t k = 0; k < table.npair(); ++k) {
     if (!table.pair_impulse[k] && !state.hysteresis[k]) continue;
     const ContactGeometry g = BoundedGeometry(model, data, k);

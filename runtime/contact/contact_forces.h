@@ -36,6 +36,9 @@ void PlaceContactSurfaces(const Model& model, Data& data);
 // pair's warm start.
 ContactGeometry PairGeometry(const Model& model, Data& data, std::size_t k);
 
+// The frame carrying pair k's first (side 0: the ellipsoid) or second (side 1) surface.
+FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side);
+
 // World velocity of the material point at `point` of the frame carrying pair k's first (side 0)
 // or second (side 1) surface.
 Vec3 SurfacePointVelocity(const Model& model, const Data& data, std::size_t k, int side,

@@ -162,6 +162,15 @@ Vec3 ForcePoint(const EllipsoidShape& shape, const Vec3& direction) {
 
 }  // namespace
 
+std::pair<double, double> ParallelogramCoordinates(const PlaneShape& plane, const Vec3& point) {
+  const Vec3 d = point - plane.origin;
+  const double uu = plane.edge_u.squaredNorm(), uv = plane.edge_u.dot(plane.edge_v);
+  const double vv = plane.edge_v.squaredNorm();
+  const double du = d.dot(plane.edge_u), dv = d.dot(plane.edge_v);
+  const double det = uu * vv - uv * uv;
+  return {(du * vv - dv * uv) / det, (dv * uu - du * uv) / det};
+}
+
 ContactGeometry PlaneEllipsoid(const PlaneShape& plane, const EllipsoidShape& ellipsoid) {
   ContactGeometry out;
   out.normal = plane.normal;
@@ -175,14 +184,7 @@ ContactGeometry PlaneEllipsoid(const PlaneShape& plane, const EllipsoidShape& el
   const Vec3 force_point = ForcePoint(ellipsoid, -plane.normal);
   const double along = plane.normal.dot(ellipsoid.center - force_point);
   const Vec3 q = ellipsoid.center + (height / along) * (force_point - ellipsoid.center);
-  // Its parallelogram coordinates.
-  const Vec3 d = q - plane.origin;
-  const double uu = plane.edge_u.squaredNorm(), uv = plane.edge_u.dot(plane.edge_v);
-  const double vv = plane.edge_v.squaredNorm();
-  const double du = d.dot(plane.edge_u), dv = d.dot(plane.edge_v);
-  const double det = uu * vv - uv * uv;
-  const double s = (du * vv - dv * uv) / det;
-  const double t = (dv * uu - du * uv) / det;
+  const auto [s, t] = ParallelogramCoordinates(plane, q);
   out.point = plane.origin + std::clamp(s, 0.0, 1.0) * plane.edge_u +
               std::clamp(t, 0.0, 1.0) * plane.edge_v;
   // Only an ellipsoid with a part in front of the plane is pushed (the plane is one-sided).

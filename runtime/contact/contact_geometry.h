@@ -4,6 +4,8 @@
 // gives the definitions.
 #pragma once
 
+#include <utility>
+
 #include "runtime/model_types.h"
 
 namespace sled::runtime {
@@ -49,6 +51,10 @@ struct ContactGeometry {
   Vec3 deepest_first = Vec3::Zero();
   Vec3 deepest_second = Vec3::Zero();
 };
+
+// The coordinates (s, t) of `point` (on the plane) in its parallelogram: point = origin +
+// s edge_u + t edge_v; both in [0, 1] over the parallelogram.
+std::pair<double, double> ParallelogramCoordinates(const PlaneShape& plane, const Vec3& point);
 
 // An ellipsoid against a finite plane. Deflection: how far the ellipsoid's deepest point lies
 // behind the plane. Point: where the line from the centre to the deepest point crosses the

@@ -22,6 +22,8 @@ void SizeContactState(const Model& model, ContactState& state) {
     state.hysteresis[k] = HasHysteresis(model.functions, table.pair_function[k]) ? 1 : 0;
   }
   state.engaged.assign(n, 1);  // SetUpContacts says which start apart
+  state.behind.assign(n, 0);   // and which start behind their plane
+  state.overrun.assign(n, ContactLawOverrun{});
   state.ellipsoid_center.assign(table.nellipsoid(), Vec3::Zero());
   state.ellipsoid_rotation.assign(table.nellipsoid(), Mat3::Identity());
   state.plane_origin.assign(table.nplane(), Vec3::Zero());

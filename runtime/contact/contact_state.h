@@ -15,6 +15,16 @@ namespace sled::runtime {
 
 struct Model;
 
+// Where pair k went past what its force law describes (runtime/contact/contact_reach.h): a
+// deflection beyond the ellipsoid's smallest semi-axis, or an ellipsoid that went from in front
+// of a plane to wholly behind it (where the force is zero) over its parallelogram.
+struct ContactLawOverrun {
+  double deep_time = -1.0;    // when the deflection first passed the smallest semi-axis; -1: never
+  double deepest = 0.0;       // the largest deflection past it
+  double semi_axis = 0.0;     // the smallest semi-axis it passed
+  double behind_time = -1.0;  // when it first ended wholly behind the plane; -1: never
+};
+
 struct ContactState {
   // --- Per pair, from the last force evaluation (world frame).
   std::vector<double> deflection;    // > 0 in contact, 0 apart
@@ -40,6 +50,11 @@ struct ContactState {
   // the surfaces start in contact) until the event of their separation. The force law waits for
   // it, so the step that reaches the surface is free flight and the impact is located exactly.
   std::vector<std::uint8_t> engaged;
+
+  // --- Per pair, watched after each accepted step (WatchContactReach): whether the ellipsoid
+  // was wholly behind its plane there, and where the force law was overrun.
+  std::vector<std::uint8_t> behind;
+  std::vector<ContactLawOverrun> overrun;
 
   // --- Per surface, recomputed each evaluation: world pose and motion of its frame.
   std::vector<Vec3> ellipsoid_center;    // world
@@ -67,6 +82,8 @@ struct ContactState {
     a.Field(rate);
     a.Field(history);
     a.Field(engaged);
+    a.Field(behind);
+    a.Field(overrun);
   }
 };
 

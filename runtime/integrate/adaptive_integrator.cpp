@@ -67,6 +67,7 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(dense_f0_);
   archive.Field(dense_f1_);
   archive.Field(restart_step_);
+  archive.Field(step_limit_);
   archive.Field(stats_);
   controller_.Serialize(archive);
   events_.Serialize(archive);
@@ -106,6 +107,7 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
   h_ = 0.0;
   y_.assign(y0.begin(), y0.end());
   restart_step_ = 0.0;
+  step_limit_ = std::numeric_limits<double>::infinity();
   f0_.assign(n, 0.0);
   y1_.assign(n, 0.0);
   f1_.assign(n, 0.0);
@@ -290,6 +292,7 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
     result->component = FirstNotFinite(f0_, {});
     return false;
   }
+  step_limit_ = system_->StepLimit(t_, y_);
   controller_.Restart();
   RestartHistory();
   if (events_.active()) {
@@ -349,7 +352,8 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
   for (;;) {
     if (restart_pending_ && !Restart(fixed, &result)) return result;
 
-    const double natural = fixed ? fixed_step : std::min(h_, MaxStep());
+    const double natural =
+        fixed ? fixed_step : std::min({h_, MaxStep(), std::max(step_limit_, MinStep())});
     double h = natural;
     bool last = false;
     if (t_ + kLandingStretch * h >= t_stop) {
@@ -417,6 +421,9 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     // step's own error (1e-4 to 1e-12 of the tolerance on the numerics suite and the flagship);
     // a derivative that far from consistent changes the next step by far less than its error,
     // and re-evaluating it cost one evaluation per step on every scene with a ball joint.
+    // The next step's limit, from the state the step reached (where the system was just
+    // evaluated: the FSAL stage or the end derivative).
+    step_limit_ = system_->StepLimit(t1, y1_);
     std::copy(y1_.begin(), y1_.end(), y_project_.begin());
     system_->Project(t1, y1_);
     for (std::size_t i = 0; i < y1_.size(); ++i) y_project_[i] = y1_[i] - y_project_[i];

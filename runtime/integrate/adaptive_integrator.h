@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -163,7 +164,10 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::vector<double> dense_y1_;
   std::vector<double> end_state_;
   std::vector<double> dense_y0_, dense_f0_, dense_f1_;
-  double restart_step_ = 0.0;      // RestartAt's first step (0: none)
+  double restart_step_ = 0.0;  // RestartAt's first step (0: none)
+  // The system's StepLimit at the current step start (infinity: none).
+  double step_limit_ = std::numeric_limits<double>::infinity();
+
   std::vector<double> y_event_;    // state at a located event
   std::vector<double> y_project_;  // copy to see whether Project changed the state
   LargestComponent largest_;       // of the error estimates of the attempt under way

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <string_view>
@@ -60,6 +61,15 @@ class OdeSystem {
   // After an accepted step: renormalise quaternions and the like. Must not change the solution
   // more than the tolerance; it exists so drift does not accumulate.
   virtual void Project(double t, std::span<double> y) { (void)t, (void)y; }
+
+  // The longest step the system allows from (t, y), where Derivative was just evaluated: a
+  // bound for what the error test cannot see coming, such as a contact that begins inside a step
+  // of free flight (the pair's gap closes at its closing speed). The integrators take no step
+  // longer than this (ask it at every step start); the default sets no bound.
+  virtual double StepLimit(double t, std::span<const double> y) {
+    (void)t, (void)y;
+    return std::numeric_limits<double>::infinity();
+  }
 
   // What the system carries from one accepted step to the next outside the state (a history
   // that only changes between steps). The integrator calls it with the step's end state when
