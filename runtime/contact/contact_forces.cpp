@@ -19,17 +19,6 @@ namespace {
 // torque). A static tangential load below full friction creeps at v0 atanh(load / (mu N)).
 constexpr double kFrictionSpeed = 1e-2;
 
-EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std::int32_t e) {
-  const auto i = static_cast<std::size_t>(e);
-  EllipsoidShape shape;
-  shape.center = state.ellipsoid_center[i];
-  shape.rotation = state.ellipsoid_rotation[i];
-  shape.semi_axes = table.ellipsoid_semi_axes[i];
-  shape.degree = table.ellipsoid_degree[i];
-  shape.radius = table.ellipsoid_radius[i];
-  return shape;
-}
-
 // Mirror symmetry: a contact between a segment that stands for its right twin and one that does
 // not (in the plane) stands for the twin's contact too, which the Model leaves out; the segment
 // in the plane feels both pushes, the second the mirror image (about y = mirror_plane_y) of the
@@ -45,12 +34,6 @@ void AddTwinContactForce(const Model& model, Data& data, const FrameRef& first,
   const Vec3 force = first_in_plane ? force_on_first : Vec3(-force_on_first);
   const Vec3 image(point.x(), 2.0 * model.mirror_plane_y - point.y(), point.z());
   AddPointForce(data, static_cast<std::size_t>(in_plane.index), image, MirrorWorldVector(force));
-}
-
-PlaneShape PlaneOf(const ContactState& state, std::int32_t p) {
-  const auto i = static_cast<std::size_t>(p);
-  return {state.plane_origin[i], state.plane_edge_u[i], state.plane_edge_v[i],
-          state.plane_normal[i]};
 }
 
 // Pair k's geometry when the bounding spheres may meet; otherwise `touching` false and a gap
@@ -83,6 +66,23 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
 }
 
 }  // namespace
+
+EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std::int32_t e) {
+  const auto i = static_cast<std::size_t>(e);
+  EllipsoidShape shape;
+  shape.center = state.ellipsoid_center[i];
+  shape.rotation = state.ellipsoid_rotation[i];
+  shape.semi_axes = table.ellipsoid_semi_axes[i];
+  shape.degree = table.ellipsoid_degree[i];
+  shape.radius = table.ellipsoid_radius[i];
+  return shape;
+}
+
+PlaneShape PlaneOf(const ContactState& state, std::int32_t p) {
+  const auto i = static_cast<std::size_t>(p);
+  return {state.plane_origin[i], state.plane_edge_u[i], state.plane_edge_v[i],
+          state.plane_normal[i]};
+}
 
 FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side) {
   if (side == 0) return table.ellipsoid_frame[static_cast<std::size_t>(table.pair_first[k])];

@@ -36,6 +36,10 @@ void PlaceContactSurfaces(const Model& model, Data& data);
 // pair's warm start.
 ContactGeometry PairGeometry(const Model& model, Data& data, std::size_t k);
 
+// Ellipsoid e and plane p as data's last PlaceContactSurfaces placed them.
+EllipsoidShape ShapeOf(const ContactTable& table, const ContactState& state, std::int32_t e);
+PlaneShape PlaneOf(const ContactState& state, std::int32_t p);
+
 // The frame carrying pair k's first (side 0: the ellipsoid) or second (side 1) surface.
 FrameRef SurfaceFrame(const ContactTable& table, std::size_t k, int side);
 

@@ -49,16 +49,8 @@ double CenterHeight(const ContactTable& table, const ContactState& state, std::s
 bool WhollyBehind(const ContactTable& table, const ContactState& state, std::size_t k) {
   const double height = CenterHeight(table, state, k);
   if (!(height < 0)) return false;
-  const auto e = static_cast<std::size_t>(table.pair_first[k]);
-  const auto p = static_cast<std::size_t>(table.pair_second[k]);
-  EllipsoidShape shape;
-  shape.center = state.ellipsoid_center[e];
-  shape.rotation = state.ellipsoid_rotation[e];
-  shape.semi_axes = table.ellipsoid_semi_axes[e];
-  shape.degree = table.ellipsoid_degree[e];
-  shape.radius = table.ellipsoid_radius[e];
-  const PlaneShape plane{state.plane_origin[p], state.plane_edge_u[p], state.plane_edge_v[p],
-                         state.plane_normal[p]};
+  const EllipsoidShape shape = ShapeOf(table, state, table.pair_first[k]);
+  const PlaneShape plane = PlaneOf(state, table.pair_second[k]);
   double front = 0.0;  // how far the ellipsoid reaches towards the plane's front
   SupportPoint(shape, plane.normal, &front);
   if (height + front >= 0) return false;
