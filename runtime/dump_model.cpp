@@ -386,9 +386,9 @@ std::string DumpModel(const Model& m) {
   }
   for (std::size_t c = 0; c < m.ncriterion(); ++c) {
     const bool own_limit = c < m.criterion_limit.size() && !std::isnan(m.criterion_limit[c]);
-    line(fmt::format("criterion {} {} {} output {} moment_output {}{}{}", c,
+    line(fmt::format("criterion {} {} {} output {} second_output {}{}{}", c,
                      Get(m.criterion_name, c), Get(m.criterion_target, c),
-                     Get(m.criterion_output, c), Get(m.criterion_moment_output, c),
+                     Get(m.criterion_output, c), Get(m.criterion_second_output, c),
                      Get(m.criterion_filter_iso, c) != 0 ? " iso_6487" : "",
                      own_limit ? fmt::format(" limit {} standard \"{}\"", m.criterion_limit[c],
                                              m.criterion_standard[c])

@@ -292,14 +292,19 @@ struct Model {
     kNeckCompression,
     kFemurLoad,
     kNkm,
+    kNic,
+    kTti,
+    kTibiaIndex,
   };
   std::vector<CriterionKind> criterion_kind;
   std::vector<std::string> criterion_name;    // as the language spells it: hic15
   std::vector<std::string> criterion_target;  // the segment or joint: occupant.head
   // The output group it reads: the acceleration of the segment's centre of mass, or the joint
-  // force; Nij and Nkm also read the joint torque (else -1).
+  // force; and a second group (else -1): the joint torque for Nij, Nkm and the Tibia Index, the
+  // acceleration of T1 for NIC and of the lower spine for TTI. Accelerations are in each
+  // segment's own axes, joint loads in the child's.
   std::vector<std::int32_t> criterion_output;
-  std::vector<std::int32_t> criterion_moment_output;
+  std::vector<std::int32_t> criterion_second_output;
   std::vector<std::uint8_t> criterion_filter_iso;  // 1: ISO 6487 coefficients
   // A limit the scene gives a criterion (`limit = ...`, with the standard it comes from), in
   // the criterion's unit; NaN: the default limit of its standard (output/post/injury_criteria).

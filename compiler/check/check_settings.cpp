@@ -197,6 +197,11 @@ static Dimension CriterionDimension(Criterion::Kind kind) {
       return dim::kForce;
     case Criterion::Kind::kViscousCriterion:
       return dim::kVelocity;
+    case Criterion::Kind::kTti:
+      return dim::kAcceleration;
+    case Criterion::Kind::kNic:
+      return dim::kVelocity * dim::kVelocity;
+    case Criterion::Kind::kTibiaIndex:
     case Criterion::Kind::kHic15:
     case Criterion::Kind::kHic36:
     case Criterion::Kind::kGaddHead:
@@ -208,11 +213,15 @@ static Dimension CriterionDimension(Criterion::Kind kind) {
   return dim::kDimensionless;
 }
 
-// A criterion's own limit: `hic15(pedestrian.head, limit = 1000, standard = "GTR 9")`, in the
-// criterion's dimension, always with the standard it comes from. False after reporting.
-bool Checker::ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion& criterion) {
+// A criterion's arguments after its target: the second input of NIC and TTI
+// (`nic(occupant.head, t1 = occupant.neck_lower)`), and its own limit
+// (`hic15(pedestrian.head, limit = 1000, standard = "GTR 9")`), in the criterion's dimension,
+// always with the standard it comes from. False after reporting.
+bool Checker::ReadCriterionArguments(Scope& scope, const ast::Expr& call, const CriterionSpec& spec,
+                                     Criterion& criterion) {
   const ast::Expr* limit = nullptr;
   const ast::Expr* standard = nullptr;
+  const ast::Expr* second = nullptr;
   bool ok = true;
   for (std::size_t i = 1; i < call.arguments.size(); ++i) {
     const ast::Argument& argument = call.arguments[i];
@@ -220,13 +229,33 @@ bool Checker::ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion&
       limit = argument.value.get();
     } else if (argument.name == "standard" && !standard) {
       standard = argument.value.get();
+    } else if (!spec.second_name.empty() && argument.name == spec.second_name && !second) {
+      second = argument.value.get();
     } else {
       Report(DiagnosticKind::kUnknownArgument,
              argument.name.empty() ? argument.value->range : argument.name_range,
-             "a criterion takes its target, then `limit` and `standard`", "unexpected argument",
+             spec.second_name.empty()
+                 ? std::string("a criterion takes its target, then `limit` and `standard`")
+                 : fmt::format("`{}` takes its target, then `{}`, `limit` and `standard`",
+                               spec.name, spec.second_name),
+             "unexpected argument",
              "write `hic15(pedestrian.head, limit = 1000, standard = \"GTR 9\")`");
       ok = false;
     }
+  }
+  if (!spec.second_name.empty()) {
+    if (!second) {
+      Report(DiagnosticKind::kMissingArgument, call.range,
+             fmt::format("`{}` needs its {} `{}` as well as its target", spec.name,
+                         spec.second_kind, spec.second_name),
+             fmt::format("no `{}`", spec.second_name),
+             spec.name == "nic" ? "write `nic(occupant.head, t1 = occupant.neck_lower)`"
+                                : "write `tti(occupant.thorax, spine = occupant.abdomen)`");
+      return false;
+    }
+    Entity* input = Resolve(scope, *second, {*EntityKindFromName(spec.second_kind)});
+    if (!input) return false;
+    criterion.second = input->index;
   }
   if (!limit && !standard) return ok;
   if (!limit || !standard) {
@@ -457,7 +486,7 @@ void Checker::CheckOutputs() {
         (kind == EntityKind::kSegment ? criterion.segment : criterion.joint) = target->index;
         criterion.iso_filter = iso_filter;
         criterion.range = value.range;
-        if (!ReadCriterionLimit(scope, value, criterion)) continue;
+        if (!ReadCriterionArguments(scope, value, *spec, criterion)) continue;
         scenario_.criteria.push_back(criterion);
       }
     }

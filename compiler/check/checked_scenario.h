@@ -321,10 +321,16 @@ struct Criterion {
     kFemurLoad,
     kViscousCriterion,
     kNkm,
+    kNic,
+    kTti,
+    kTibiaIndex,
   };
   Kind kind = Kind::kHic15;
   int segment = -1;  // head, chest criteria
-  int joint = -1;    // neck and femur criteria
+  int joint = -1;    // neck, femur and tibia criteria
+  // The second input of NIC (the joint at T1, a joint index) and TTI (the lower spine, a
+  // segment index): CriterionSpec::second_kind says which.
+  int second = -1;
   // The scene's own limit (SI, in the criterion's dimension) and the standard it comes from;
   // none: the default limit of the criterion's standard.
   std::optional<double> limit;

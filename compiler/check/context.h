@@ -232,7 +232,8 @@ class Checker {
   void RefuseUntakenInitial(const InitialCondition& initial, const BoundBlock& bound);
   // After every initial condition is read: held roots' positions and velocities.
   void CheckHeldInitialConditions();
-  bool ReadCriterionLimit(Scope& scope, const ast::Expr& call, Criterion& criterion);
+  bool ReadCriterionArguments(Scope& scope, const ast::Expr& call, const CriterionSpec& spec,
+                              Criterion& criterion);
   void PlaceByHPoint(Scope& scope, const BoundBlock& bound, const ast::Statement& h_statement,
                      InitialCondition& initial);
   void CheckOutputs();

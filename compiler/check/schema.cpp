@@ -469,6 +469,11 @@ const std::vector<CriterionSpec>& AllCriterionSpecs() {
       {"femur_load", "joint", "peak axial femur load"},
       {"viscous_criterion", "segment", "Viscous Criterion of the chest"},
       {"nkm", "joint", "neck injury criterion of rear impacts, from the upper neck joint"},
+      {"nic", "segment", "Neck Injury Criterion of rear impacts (the head, and T1 at a joint)",
+       "t1", "joint"},
+      {"tti", "segment", "Thoracic Trauma Index of side impacts (a rib, and the lower spine)",
+       "spine", "segment"},
+      {"tibia_index", "joint", "Tibia Index from a tibia's load cell"},
   };
   return kCriteria;
 }

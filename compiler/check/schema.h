@@ -115,6 +115,9 @@ struct CriterionSpec {
   std::string_view name;
   std::string_view target_kind;  // segment or joint
   std::string_view doc;
+  // A second, required input given by name: `nic(occupant.head, t1 = occupant.neck_lower)`.
+  std::string_view second_name = {};
+  std::string_view second_kind = {};  // segment or joint
 };
 const std::vector<CriterionSpec>& AllCriterionSpecs();
 const CriterionSpec* FindCriterion(std::string_view name);

@@ -77,6 +77,12 @@ runtime::Model::CriterionKind ModelKind(Criterion::Kind kind) {
       return K::kNeckCompression;
     case Criterion::Kind::kNkm:
       return K::kNkm;
+    case Criterion::Kind::kNic:
+      return K::kNic;
+    case Criterion::Kind::kTti:
+      return K::kTti;
+    case Criterion::Kind::kTibiaIndex:
+      return K::kTibiaIndex;
     case Criterion::Kind::kFemurLoad:
     case Criterion::Kind::kViscousCriterion:  // not lowered (LowerCriteria notes it)
       return K::kFemurLoad;
@@ -84,17 +90,19 @@ runtime::Model::CriterionKind ModelKind(Criterion::Kind kind) {
   return K::kFemurLoad;
 }
 
-// The output group of `kind` for Model segment `index` at the segment's origin (its centre of
-// mass), adding one named `label` when the scene has none.
+// The output group of `kind` for Model segment `index` at `point` of the segment (its centre of
+// mass by default), adding one named `label` when the scene has none. Accelerations are in the
+// segment's own axes, as an accelerometer fixed to it reads them (docs/language.md §17).
 std::int32_t FindOrAddOutput(Lowering& lowering, Model::OutputKind kind, std::int32_t index,
-                             bool mirrored, const std::string& label) {
+                             bool mirrored, const std::string& label,
+                             const runtime::Vec3& point = runtime::Vec3::Zero()) {
   Model& model = lowering.model();
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
     const bool same_side =
         model.output_mirrored.empty() || (model.output_mirrored[k] != 0) == mirrored;
     const bool absolute = model.output_relative.empty() || model.output_relative[k] == 0;
     if (model.output_kind[k] == kind && model.output_index[k] == index && same_side && absolute &&
-        model.output_point[k].isZero()) {
+        model.output_point[k] == point) {
       return static_cast<std::int32_t>(k);
     }
   }
@@ -103,7 +111,7 @@ std::int32_t FindOrAddOutput(Lowering& lowering, Model::OutputKind kind, std::in
   for (std::size_t k = 0; k < model.output_kind.size(); ++k) {
     taken = taken || (model.output_kind[k] == kind && model.output_label[k] == label);
   }
-  lowering.AddOutput({kind, taken ? label + ".cg" : label, index, runtime::Vec3::Zero(), mirrored,
+  lowering.AddOutput({kind, taken ? label + ".cg" : label, index, point, mirrored,
                       static_cast<std::int16_t>(DefaultFilterClass(kind)), false, std::nullopt,
                       false, 0});
   return static_cast<std::int32_t>(model.output_kind.size() - 1);
@@ -130,7 +138,7 @@ void LowerCriteria(Lowering& lowering) {
     const std::string_view name =
         AllCriterionSpecs().at(static_cast<std::size_t>(criterion.kind)).name;
     std::int32_t output = -1;
-    std::int32_t moment_output = -1;
+    std::int32_t second_output = -1;
     std::string target;
     if (criterion.segment >= 0) {
       const Segment& segment = lowering.segment(criterion.segment);
@@ -146,6 +154,21 @@ void LowerCriteria(Lowering& lowering) {
       }
       const auto [index, mirrored] = ModelSegment(lowering, criterion.segment);
       output = FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, index, mirrored, target);
+      if (criterion.kind == Criterion::Kind::kNic) {
+        // T1: the parent of the joint at the base of the neck, at the joint's point.
+        const Joint& t1 = lowering.joint(criterion.second);
+        const auto [t1_index, t1_mirrored] = ModelSegment(lowering, t1.parent);
+        const runtime::Vec3 point = t1_mirrored ? runtime::MirrorFrameVector(
+                                                      ToEigen(t1.location_in_parent))
+                                                : ToEigen(t1.location_in_parent);
+        second_output = FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, t1_index,
+                                        t1_mirrored, t1.name + ".t1", point);
+      } else if (criterion.kind == Criterion::Kind::kTti) {
+        const auto [spine_index, spine_mirrored] = ModelSegment(lowering, criterion.second);
+        second_output =
+            FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, spine_index,
+                            spine_mirrored, lowering.segment(criterion.second).name);
+      }
     } else {
       const Joint& joint = lowering.joint(criterion.joint);
       target = joint.name;
@@ -158,8 +181,9 @@ void LowerCriteria(Lowering& lowering) {
       }
       const auto [index, mirrored] = ModelSegment(lowering, joint.child);
       output = FindOrAddOutput(lowering, Model::OutputKind::kJointForce, index, mirrored, target);
-      if (criterion.kind == Criterion::Kind::kNij || criterion.kind == Criterion::Kind::kNkm) {
-        moment_output =
+      if (criterion.kind == Criterion::Kind::kNij || criterion.kind == Criterion::Kind::kNkm ||
+          criterion.kind == Criterion::Kind::kTibiaIndex) {
+        second_output =
             FindOrAddOutput(lowering, Model::OutputKind::kJointTorque, index, mirrored, target);
       }
     }
@@ -167,11 +191,12 @@ void LowerCriteria(Lowering& lowering) {
     model.criterion_name.emplace_back(name);
     model.criterion_target.push_back(target);
     model.criterion_output.push_back(output);
-    model.criterion_moment_output.push_back(moment_output);
+    model.criterion_second_output.push_back(second_output);
     model.criterion_filter_iso.push_back(criterion.iso_filter ? 1 : 0);
-    // The scene's own limit, in the unit the criterion reports (g for the 3 ms criteria).
-    const bool in_g =
-        criterion.kind == Criterion::Kind::kHead3ms || criterion.kind == Criterion::Kind::kChest3ms;
+    // The scene's own limit, in the unit the criterion reports (g for the 3 ms criteria and TTI).
+    const bool in_g = criterion.kind == Criterion::Kind::kHead3ms ||
+                      criterion.kind == Criterion::Kind::kChest3ms ||
+                      criterion.kind == Criterion::Kind::kTti;
     model.criterion_limit.push_back(criterion.limit
                                         ? *criterion.limit / (in_g ? kStandardGravity : 1.0)
                                         : std::numeric_limits<double>::quiet_NaN());

@@ -1,5 +1,6 @@
 #include "output/post/injury_criteria.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -11,6 +12,9 @@
 #include "output/post/neck_injury_criterion.h"
 #include "output/post/peak_load.h"
 #include "output/post/severity_index.h"
+#include "output/post/thoracic_trauma_index.h"
+#include "output/post/tibia_index.h"
+#include "output/post/whiplash_criterion.h"
 
 namespace sled::runtime::post {
 namespace {
@@ -32,10 +36,18 @@ int InputClass(Kind kind) {
     case Kind::kChest3ms:
     case Kind::kGaddChest:
       return 180;
+    // FMVSS 214 filters the SID's rib and spine accelerations with NHTSA's FIR100 (49 CFR 572.44),
+    // whose first stage is this class; sled stops there (docs/load_cases.md), which keeps more of
+    // the peak than FIR100 does.
+    case Kind::kTti:
+      return 180;
     case Kind::kNij:
     case Kind::kNkm:
     case Kind::kFemurLoad:
+    case Kind::kTibiaIndex:
       return 600;
+    case Kind::kNic:
+      return 60;  // UN GTR 7: head and T1 longitudinal accelerations at CFC 60
   }
   return 1000;
 }
@@ -69,6 +81,12 @@ Limit LimitOf(Kind kind) {
       return {10008.0, "FMVSS 208"};
     case Kind::kNkm:
       return {1.0, "Schmitt et al. (2001)"};
+    case Kind::kNic:
+      return {15.0, "Bostrom et al. (1996)"};
+    case Kind::kTti:
+      return {85.0, "FMVSS 214 (SID, four-door)"};
+    case Kind::kTibiaIndex:
+      return {1.3, "UN R94"};
   }
   return {0.0, ""};
 }
@@ -152,6 +170,11 @@ class Evaluator {
       case Kind::kNkm:
         EvaluateNeck(c, kind == Kind::kNkm, base, xyz, out);
         break;
+      case Kind::kNic:
+      case Kind::kTti:
+      case Kind::kTibiaIndex:
+        EvaluatePair(c, kind, base, xyz, out);
+        break;
     }
   }
 
@@ -206,7 +229,7 @@ class Evaluator {
                     std::vector<CriterionValue>& out) {
     std::array<std::vector<double>, 3> moment;
     CriterionValue value = base;
-    if (!FilterGroup(model_.criterion_moment_output[c], base.filter_class, moment, value)) {
+    if (!FilterGroup(model_.criterion_second_output[c], base.filter_class, moment, value)) {
       out.push_back(value);
       return;
     }
@@ -232,6 +255,35 @@ class Evaluator {
         continue;
       }
       out.push_back(Done(term, peak.value, "", peak.time, peak.time));
+    }
+  }
+
+  // The criteria of two output groups that are not Nij's form: NIC (head and T1 accelerations
+  // along x), TTI (rib and lower spine accelerations along y) and the Tibia Index (the joint's
+  // axial force and bending moments).
+  void EvaluatePair(std::size_t c, Kind kind, const CriterionValue& base,
+                    const std::array<std::vector<double>, 3>& first,
+                    std::vector<CriterionValue>& out) {
+    std::array<std::vector<double>, 3> second;
+    CriterionValue value = base;
+    if (!FilterGroup(model_.criterion_second_output[c], base.filter_class, second, value)) {
+      out.push_back(value);
+      return;
+    }
+    if (kind == Kind::kNic) {
+      const NicResult nic = NeckInjuryCriterionOfRearImpact(second[0], first[0], period_, start_);
+      out.push_back(Done(value, nic.value, "m^2/s^2", nic.time, nic.time));
+    } else if (kind == Kind::kTti) {
+      std::vector<double> rib(first[1]), spine(second[1]);
+      for (double& a : rib) a /= kStandardGravity;
+      for (double& a : spine) a /= kStandardGravity;
+      const TtiResult tti = ThoracicTraumaIndex(rib, spine, period_, start_);
+      out.push_back(Done(value, tti.value, "g", std::min(tti.rib_time, tti.spine_time),
+                         std::max(tti.rib_time, tti.spine_time)));
+    } else {
+      const TibiaResult ti =
+          TibiaIndex(second[0], second[1], first[2], period_, start_, kHybridIII50thMaleTibia);
+      out.push_back(Done(value, ti.value, "", ti.time, ti.time));
     }
   }
 

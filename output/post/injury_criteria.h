@@ -4,7 +4,9 @@
 //
 // Inputs by criterion: the head criteria read the acceleration of the segment's centre of mass
 // at CFC 1000, the chest criteria at CFC 180; neck tension and compression the joint force at
-// CFC 1000; Nij the joint force and torque at CFC 600; femur load the joint force at CFC 600.
+// CFC 1000; Nij, Nkm and the Tibia Index the joint force and torque at CFC 600; femur load the
+// joint force at CFC 600; NIC the head's and T1's accelerations along their own x at CFC 60;
+// TTI the rib's and lower spine's along their own y at CFC 180.
 // Joint loads are read as a load cell in the child segment would: the axial force along the
 // child's z axis (compression when it pushes the child away from the joint, tension when it
 // pulls), shear along x (forward) and flexion as the moment about -y (y to the occupant's left),

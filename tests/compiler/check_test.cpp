@@ -580,5 +580,29 @@ TEST(CheckCriteria, AScenesOwnLimitComesWithItsStandard) {
   EXPECT_THAT(bad.codes, Contains(HasSubstr("E0210@7:24")));
 }
 
+TEST(CheckCriteria, NicAndTtiNeedTheirSecondInput) {
+  const Result r = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  output {
+    criteria = nic(occupant.head, t1 = occupant.neck_lower, limit = 20 m^2/s^2,
+      standard = "x"), tti(occupant.thorax, spine = occupant.abdomen, limit = 90 g,
+      standard = "FMVSS 214, two-door")
+  })"));
+  ASSERT_EQ(r.errors, 0) << fmt::format("{}", fmt::join(r.messages, "\n"));
+  ASSERT_EQ(r.scenario.criteria.size(), 2u);
+  EXPECT_EQ(r.scenario.criteria[0].limit, 20.0);
+  EXPECT_GE(r.scenario.criteria[0].second, 0);
+  EXPECT_NEAR(*r.scenario.criteria[1].limit, 90 * 9.80665, 1e-9);
+  const Result bad = CheckText(Scene(R"(
+  import std.humans.male50 as occupant
+  output {
+    criteria = nic(occupant.head), tti(occupant.thorax, t1 = occupant.neck_lower),
+      nic(occupant.head, t1 = occupant.abdomen), tibia_index(occupant.knee_l, spine = occupant.head)
+  })"));
+  EXPECT_THAT(bad.codes, Contains(HasSubstr("E0210@6:16")));
+  EXPECT_THAT(bad.codes, Contains(HasSubstr("E0209@6:57")));
+  EXPECT_EQ(bad.scenario.criteria.size(), 0u);
+}
+
 }  // namespace
 }  // namespace sled::compiler

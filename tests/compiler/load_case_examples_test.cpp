@@ -68,10 +68,11 @@ TEST_F(LoadCaseExamples, TheRearImpactSettlesStartsAtRestAndJudgesItsCriteria) {
     }
     EXPECT_LT(std::sqrt(sum), 0.1 * 9.80665) << segment;
   }
-  // Every criterion computed, with its limit and the standard it comes from; Nkm, the rear
-  // impact's neck criterion, among them.
+  // Every criterion computed, with its limit and the standard it comes from; Nkm and NIC, the
+  // rear impact's neck criteria, among them.
   const testing::Json& criteria = summary["criteria"];
   bool nkm = false;
+  bool nic = false;
   for (std::size_t i = 0; i < criteria.size(); ++i) {
     if (!criteria[i]["variant"].text.empty()) continue;  // a quadrant or clip variant
     SCOPED_TRACE(criteria[i]["name"].text);
@@ -79,8 +80,10 @@ TEST_F(LoadCaseExamples, TheRearImpactSettlesStartsAtRestAndJudgesItsCriteria) {
     EXPECT_EQ(criteria[i]["limit"].kind, testing::Json::Kind::kNumber);
     EXPECT_FALSE(criteria[i]["limit_source"].text.empty());
     nkm = nkm || criteria[i]["name"].text == "nkm";
+    nic = nic || criteria[i]["name"].text == "nic";
   }
   EXPECT_TRUE(nkm);
+  EXPECT_TRUE(nic);
 }
 
 }  // namespace

@@ -331,5 +331,38 @@ TEST(LowerGolden, DumpModelMatchesTheExpectedFiles) {
   }
 }
 
+// NIC and TTI read accelerometers fixed to their segments (an acceleration request's own axes):
+// the head's and T1's, at the neck_lower joint's point on the thorax, and the thorax's and the
+// abdomen's; the Tibia Index reads the knee's force and torque.
+TEST(LowerCriteria, NicTtiAndTibiaIndexReadTheirTwoGroups) {
+  const Result r = LowerText(Scene(R"(
+  import std.humans.male50 as occupant
+  output {
+    criteria = nic(occupant.head, t1 = occupant.neck_lower),
+      tti(occupant.thorax, spine = occupant.abdomen), tibia_index(occupant.knee_l)
+  })"));
+  ASSERT_EQ(r.errors, "");
+  const runtime::Model& m = r.model();
+  ASSERT_EQ(m.ncriterion(), 3u);
+  const auto group = [&](std::size_t c, bool second) {
+    return static_cast<std::size_t>(second ? m.criterion_second_output[c] : m.criterion_output[c]);
+  };
+  const auto in_own_axes = [&](std::size_t g, const char* segment) {
+    EXPECT_EQ(m.output_kind[g], runtime::Model::OutputKind::kAcceleration);
+    EXPECT_EQ(m.output_index[g], r.Segment(segment));
+    EXPECT_TRUE(m.output_relative.empty() || m.output_relative[g] == 0);
+  };
+  in_own_axes(group(0, false), "occupant.head");
+  in_own_axes(group(0, true), "occupant.thorax");
+  // male50: `joint neck_lower ... at thorax = (-40, 0, 73) mm`.
+  ExpectNear(m.output_point[group(0, true)], runtime::Vec3(-0.040, 0, 0.073), 1e-12);
+  EXPECT_TRUE(m.output_point[group(0, false)].isZero());
+  in_own_axes(group(1, false), "occupant.thorax");
+  in_own_axes(group(1, true), "occupant.abdomen");
+  EXPECT_EQ(m.output_kind[group(2, false)], runtime::Model::OutputKind::kJointForce);
+  EXPECT_EQ(m.output_kind[group(2, true)], runtime::Model::OutputKind::kJointTorque);
+  EXPECT_EQ(m.output_index[group(2, true)], r.Segment("occupant.lower_leg_l"));
+}
+
 }  // namespace
 }  // namespace sled::compiler

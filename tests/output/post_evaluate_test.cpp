@@ -41,7 +41,7 @@ void AddCriterion(Model& model, Model::CriterionKind kind, const char* name, int
   model.criterion_name.emplace_back(name);
   model.criterion_target.emplace_back(model.output_label[static_cast<std::size_t>(output)]);
   model.criterion_output.push_back(output);
-  model.criterion_moment_output.push_back(-1);
+  model.criterion_second_output.push_back(-1);
   model.criterion_filter_iso.push_back(0);
 }
 
@@ -126,7 +126,7 @@ TEST(EvaluateCriteria, NkmAddsTheShearAndMomentTermsOfTheirQuadrant) {
   // peaking together at 20 ms, so Nkm peaks at 0.5 + 0.5 = 1.0 in the flexion-anterior quadrant.
   Model model = PostModel(1e-4);
   AddCriterion(model, Model::CriterionKind::kNkm, "nkm", 1);
-  model.criterion_moment_output.back() = 1;
+  model.criterion_second_output.back() = 1;
   TimeSeries series = PulseSeries(model);
   for (std::size_t k = 0; k < series.rows(); ++k) {
     double* row = &series.values[k * series.columns];
@@ -149,6 +149,78 @@ TEST(EvaluateCriteria, NkmAddsTheShearAndMomentTermsOfTheirQuadrant) {
   // Posterior shear in extension only from the filter's ringing around the pulse.
   const CriterionValue& nep = Find(values, "nkm", "NEP");
   EXPECT_LT(nep.computed ? nep.value : 0.0, 0.01);
+}
+
+// Rows whose two groups carry `first(t)` and `second(t)` (x, y, z each) over the 60 ms record.
+template <typename First, typename Second>
+TimeSeries SeriesOf(const Model& model, First first, Second second) {
+  TimeSeries series = PulseSeries(model);
+  for (std::size_t k = 0; k < series.rows(); ++k) {
+    double* row = &series.values[k * series.columns];
+    const Vec3 a = first(row[0]), b = second(row[0]);
+    for (int i = 0; i < 3; ++i) {
+      row[1 + i] = a[i];
+      row[4 + i] = b[i];
+    }
+  }
+  return series;
+}
+
+// NIC reads the head (first group) and T1 (second) along x: T1 at a constant 20 m/s^2 ahead of
+// a still head gives NIC(t) = 0.2 * 20 + (20 t)^2, 5.44 m^2/s^2 at the end of the 60 ms record;
+// CFC 60 leaves a constant as it is.
+TEST(EvaluateCriteria, NicReadsTheHeadAndT1AlongX) {
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kNic, "nic", 0);
+  model.criterion_second_output.back() = 1;
+  const std::vector<CriterionValue> values = EvaluateCriteria(
+      model, SeriesOf(model, [](double) { return Vec3(0, 5, 0); },
+                      [](double) { return Vec3(20, 0, 0); }));
+  const CriterionValue& nic = Find(values, "nic");
+  ASSERT_TRUE(nic.computed) << nic.reason;
+  EXPECT_NEAR(nic.value, 0.2 * 20 + std::pow(20 * 0.06, 2), 5.44e-3);
+  EXPECT_EQ(nic.unit, "m^2/s^2");
+  EXPECT_EQ(nic.filter_class, 60);
+  EXPECT_EQ(nic.limit, 15.0);
+  EXPECT_EQ(nic.limit_source, "Bostrom et al. (1996)");
+}
+
+// TTI: the rib (first group) and the lower spine (second) along y, half-sines of 60 ms that CFC
+// 180 barely touches: (|-50 g| + 30 g) / 2 = 40 g.
+TEST(EvaluateCriteria, TtiAveragesTheRibAndSpinePeaksAlongY) {
+  Model model = PostModel(1e-4);
+  AddCriterion(model, Model::CriterionKind::kTti, "tti", 0);
+  model.criterion_second_output.back() = 1;
+  const auto shape = [](double t) { return std::sin(std::numbers::pi * t / 0.06); };
+  const std::vector<CriterionValue> values = EvaluateCriteria(
+      model, SeriesOf(model, [&](double t) { return Vec3(9 * kG, -50 * kG * shape(t), 0); },
+                      [&](double t) { return Vec3(0, 30 * kG * shape(t), 7 * kG); }));
+  const CriterionValue& tti = Find(values, "tti");
+  ASSERT_TRUE(tti.computed) << tti.reason;
+  EXPECT_NEAR(tti.value, 40.0, 0.04);
+  EXPECT_EQ(tti.unit, "g");
+  EXPECT_EQ(tti.filter_class, 180);
+  EXPECT_EQ(tti.limit, 85.0);
+}
+
+// The Tibia Index: the joint's axial force (first group, z) and its bending moments (second, x
+// and y) peaking together: 90 N*m / 225 N*m + 6 kN / 35.9 kN.
+TEST(EvaluateCriteria, TibiaIndexAddsTheMomentAndForceTerms) {
+  Model model = PostModel(1e-4);
+  model.output_filter_class = {0, 0};
+  AddCriterion(model, Model::CriterionKind::kTibiaIndex, "tibia_index", 1);
+  model.criterion_second_output.back() = 0;
+  const auto shape = [](double t) { return std::sin(std::numbers::pi * t / 0.06); };
+  const std::vector<CriterionValue> values = EvaluateCriteria(
+      model, SeriesOf(model, [&](double t) { return Vec3(54 * shape(t), -72 * shape(t), 9); },
+                      [&](double t) { return Vec3(300, 0, -6000 * shape(t)); }));
+  const CriterionValue& ti = Find(values, "tibia_index");
+  ASSERT_TRUE(ti.computed) << ti.reason;
+  EXPECT_NEAR(ti.value, 90.0 / 225.0 + 6000.0 / 35900.0, 1e-3);
+  EXPECT_NEAR(ti.window_start, 0.03, 2e-4);
+  EXPECT_EQ(ti.filter_class, 600);
+  EXPECT_EQ(ti.limit, 1.3);
+  EXPECT_EQ(ti.limit_source, "UN R94");
 }
 
 TEST(EvaluateCriteria, ASceneLimitReplacesTheDefaultWithItsStandard) {
