@@ -158,16 +158,15 @@ void LowerCriteria(Lowering& lowering) {
         // T1: the parent of the joint at the base of the neck, at the joint's point.
         const Joint& t1 = lowering.joint(criterion.second);
         const auto [t1_index, t1_mirrored] = ModelSegment(lowering, t1.parent);
-        const runtime::Vec3 point = t1_mirrored ? runtime::MirrorFrameVector(
-                                                      ToEigen(t1.location_in_parent))
-                                                : ToEigen(t1.location_in_parent);
+        const runtime::Vec3 point = t1_mirrored
+                                        ? runtime::MirrorFrameVector(ToEigen(t1.location_in_parent))
+                                        : ToEigen(t1.location_in_parent);
         second_output = FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, t1_index,
                                         t1_mirrored, t1.name + ".t1", point);
       } else if (criterion.kind == Criterion::Kind::kTti) {
         const auto [spine_index, spine_mirrored] = ModelSegment(lowering, criterion.second);
-        second_output =
-            FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, spine_index,
-                            spine_mirrored, lowering.segment(criterion.second).name);
+        second_output = FindOrAddOutput(lowering, Model::OutputKind::kAcceleration, spine_index,
+                                        spine_mirrored, lowering.segment(criterion.second).name);
       }
     } else {
       const Joint& joint = lowering.joint(criterion.joint);

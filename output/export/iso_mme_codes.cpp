@@ -262,8 +262,8 @@ constexpr CriterionCode kCriterionCodes[] = {
     {"femur_load", "FEMR", "00", "00", "FO", 'Z'},
     {"viscous_criterion", "VCCR", "00", "00", "VE", 'X'},
     {"nkm", "NKMC", "00", "00", "00", 'Y'},
-    {"nic", "NICR", "00", "00", "00", 'X'},  // a location of our own, as for nkm
-    {"tti", "TTIN", "00", "00", "00", 'Y'},  // crash-conventions §2.8
+    {"nic", "NICR", "00", "00", "00", 'X'},          // a location of our own, as for nkm
+    {"tti", "TTIN", "00", "00", "00", 'Y'},          // crash-conventions §2.8
     {"tibia_index", "TIIN", "00", "00", "00", 'R'},  // as pyisomme's calculate_tibia_index names it
 };
 

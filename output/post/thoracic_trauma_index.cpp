@@ -8,8 +8,7 @@
 namespace sled::runtime::post {
 namespace {
 
-PeakResult PeakMagnitude(std::span<const double> signal, double sample_period,
-                         double start_time) {
+PeakResult PeakMagnitude(std::span<const double> signal, double sample_period, double start_time) {
   std::vector<double> magnitude(signal.begin(), signal.end());
   for (double& value : magnitude) value = std::abs(value);
   return PositivePeak(magnitude, sample_period, start_time);

@@ -8,10 +8,10 @@
 namespace sled::runtime::post {
 
 struct TtiResult {
-  double value = 0.0;      // [g]
-  double rib_peak = 0.0;   // G_R [g]
-  double spine_peak = 0.0; // G_LS [g]
-  double rib_time = 0.0;   // [s]
+  double value = 0.0;       // [g]
+  double rib_peak = 0.0;    // G_R [g]
+  double spine_peak = 0.0;  // G_LS [g]
+  double rib_time = 0.0;    // [s]
   double spine_time = 0.0;
 };
 

@@ -6,8 +6,8 @@
 namespace sled::runtime::post {
 
 TibiaResult TibiaIndex(std::span<const double> moment_x, std::span<const double> moment_y,
-                       std::span<const double> axial_force, double sample_period,
-                       double start_time, const TibiaConstants& constants) {
+                       std::span<const double> axial_force, double sample_period, double start_time,
+                       const TibiaConstants& constants) {
   const std::size_t n = std::min({moment_x.size(), moment_y.size(), axial_force.size()});
   TibiaResult best{0.0, start_time};
   for (std::size_t k = 0; k < n; ++k) {

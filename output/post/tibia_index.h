@@ -21,7 +21,7 @@ struct TibiaResult {
 };
 
 TibiaResult TibiaIndex(std::span<const double> moment_x, std::span<const double> moment_y,
-                       std::span<const double> axial_force, double sample_period,
-                       double start_time, const TibiaConstants& constants);
+                       std::span<const double> axial_force, double sample_period, double start_time,
+                       const TibiaConstants& constants);
 
 }  // namespace sled::runtime::post

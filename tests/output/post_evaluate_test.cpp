@@ -174,8 +174,9 @@ TEST(EvaluateCriteria, NicReadsTheHeadAndT1AlongX) {
   AddCriterion(model, Model::CriterionKind::kNic, "nic", 0);
   model.criterion_second_output.back() = 1;
   const std::vector<CriterionValue> values = EvaluateCriteria(
-      model, SeriesOf(model, [](double) { return Vec3(0, 5, 0); },
-                      [](double) { return Vec3(20, 0, 0); }));
+      model,
+      SeriesOf(
+          model, [](double) { return Vec3(0, 5, 0); }, [](double) { return Vec3(20, 0, 0); }));
   const CriterionValue& nic = Find(values, "nic");
   ASSERT_TRUE(nic.computed) << nic.reason;
   EXPECT_NEAR(nic.value, 0.2 * 20 + std::pow(20 * 0.06, 2), 5.44e-3);
@@ -193,8 +194,9 @@ TEST(EvaluateCriteria, TtiAveragesTheRibAndSpinePeaksAlongY) {
   model.criterion_second_output.back() = 1;
   const auto shape = [](double t) { return std::sin(std::numbers::pi * t / 0.06); };
   const std::vector<CriterionValue> values = EvaluateCriteria(
-      model, SeriesOf(model, [&](double t) { return Vec3(9 * kG, -50 * kG * shape(t), 0); },
-                      [&](double t) { return Vec3(0, 30 * kG * shape(t), 7 * kG); }));
+      model, SeriesOf(
+                 model, [&](double t) { return Vec3(9 * kG, -50 * kG * shape(t), 0); },
+                 [&](double t) { return Vec3(0, 30 * kG * shape(t), 7 * kG); }));
   const CriterionValue& tti = Find(values, "tti");
   ASSERT_TRUE(tti.computed) << tti.reason;
   EXPECT_NEAR(tti.value, 40.0, 0.04);
@@ -212,8 +214,9 @@ TEST(EvaluateCriteria, TibiaIndexAddsTheMomentAndForceTerms) {
   model.criterion_second_output.back() = 0;
   const auto shape = [](double t) { return std::sin(std::numbers::pi * t / 0.06); };
   const std::vector<CriterionValue> values = EvaluateCriteria(
-      model, SeriesOf(model, [&](double t) { return Vec3(54 * shape(t), -72 * shape(t), 9); },
-                      [&](double t) { return Vec3(300, 0, -6000 * shape(t)); }));
+      model, SeriesOf(
+                 model, [&](double t) { return Vec3(54 * shape(t), -72 * shape(t), 9); },
+                 [&](double t) { return Vec3(300, 0, -6000 * shape(t)); }));
   const CriterionValue& ti = Find(values, "tibia_index");
   ASSERT_TRUE(ti.computed) << ti.reason;
   EXPECT_NEAR(ti.value, 90.0 / 225.0 + 6000.0 / 35900.0, 1e-3);

@@ -41,8 +41,7 @@ TEST(NeckInjuryCriterionOfRearImpact, SinusoidalRelativeAccelerationInClosedForm
     const double v = a / w * (1 - std::cos(w * t));
     expected = std::max(expected, 0.2 * a * std::sin(w * t) + v * v);
   }
-  EXPECT_NEAR(NeckInjuryCriterionOfRearImpact(t1, head, kDt, 0.0).value, expected,
-              1e-6 * expected);
+  EXPECT_NEAR(NeckInjuryCriterionOfRearImpact(t1, head, kDt, 0.0).value, expected, 1e-6 * expected);
 }
 
 // |M_R| = m constant while F_z ramps to F: TI = m / M_c + F / F_c at the end; the sign of the
