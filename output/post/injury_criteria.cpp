@@ -35,7 +35,6 @@ int InputClass(Kind kind) {
       return 1000;
     case Kind::kChest3ms:
     case Kind::kGaddChest:
-      return 180;
     // FMVSS 214 filters the SID's rib and spine accelerations with NHTSA's FIR100 (49 CFR 572.44),
     // whose first stage is this class; sled stops there (docs/load_cases.md), which keeps more of
     // the peak than FIR100 does.
