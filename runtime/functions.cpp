@@ -5,6 +5,16 @@
 
 namespace sled::runtime {
 
+namespace {
+
+// The first point of the table segment that holds x (the end segments reach past the table).
+std::size_t SegmentOf(const double* xs, std::size_t count, double x) {
+  const double* upper = std::upper_bound(xs + 1, xs + count - 1, x);
+  return static_cast<std::size_t>(upper - xs) - 1;
+}
+
+}  // namespace
+
 double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double x) {
   if (id < 0) return 0.0;
   const auto f = static_cast<std::size_t>(id);
@@ -22,9 +32,7 @@ double EvaluateFunction(const FunctionTable& functions, std::int32_t id, double 
       const double* xs = functions.points_x.data() + first;
       const double* ys = functions.points_y.data() + first;
       if (count == 1) return ys[0];
-      // The segment containing x (or the end segment beyond the table).
-      const double* upper = std::upper_bound(xs + 1, xs + count - 1, x);
-      const std::size_t i = static_cast<std::size_t>(upper - xs) - 1;
+      const std::size_t i = SegmentOf(xs, count, x);
       const double slope = (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i]);
       return ys[i] + slope * (x - xs[i]);
     }
@@ -51,8 +59,7 @@ double FunctionSlope(const FunctionTable& functions, std::int32_t id, double x) 
       const double* xs = functions.points_x.data() + first;
       const double* ys = functions.points_y.data() + first;
       if (count == 1) return 0.0;
-      const double* upper = std::upper_bound(xs + 1, xs + count - 1, x);
-      const std::size_t i = static_cast<std::size_t>(upper - xs) - 1;
+      const std::size_t i = SegmentOf(xs, count, x);
       return (ys[i + 1] - ys[i]) / (xs[i + 1] - xs[i]);
     }
   }
