@@ -162,11 +162,12 @@ TEST(LegacyConvert, G1aI3ChoosesTheVehiclesVelocityOrTheGCards) {
   };
   const std::string blank(30, ' ');
   const std::string rate = "        0.       10.        0.";
-  // I3 = 0 (blank): the sled's 528 in/s, whatever G.2 and G.3.a say; what they say is W0503.
+  // I3 = 0 (blank): the sled's 30 mph (C.2.a's VIPS), whatever G.2 and G.3.a say; what they say is
+  // W0503.
   const Converted vehicle = convert("    ", blank, blank);
   EXPECT_EQ(vehicle.errors, 0);
   EXPECT_FALSE(vehicle.Has("W0503"));
-  EXPECT_NE(InitialBlock(vehicle.text, "occupant").find("velocity = (528, 0, 0) in/s"),
+  EXPECT_NE(InitialBlock(vehicle.text, "occupant").find("velocity = (30, 0, 0) mph"),
             std::string::npos)
       << vehicle.text;
   const Converted ignored = convert("   0", "      100.        0.        0.", rate);
@@ -199,15 +200,15 @@ TEST(LegacyConvert, VehicleVelocityLiesAlongTheVehiclesXAxis) {
   };
   // Pitched -90 degrees, x points down (+z); yawed 90, along +y; the roll turns about x itself.
   const Converted pitched = convert("    0.  -90.   30.");
-  EXPECT_NE(pitched.text.find("velocity = (0, 0, 528) in/s"), std::string::npos) << pitched.text;
-  EXPECT_NE(InitialBlock(pitched.text, "occupant").find("velocity = (0, 0, 528) in/s"),
+  EXPECT_NE(pitched.text.find("velocity = (0, 0, 30) mph"), std::string::npos) << pitched.text;
+  EXPECT_NE(InitialBlock(pitched.text, "occupant").find("velocity = (0, 0, 30) mph"),
             std::string::npos);
-  EXPECT_NE(convert("   90.    0.    0.").text.find("velocity = (0, 528, 0) in/s"),
+  EXPECT_NE(convert("   90.    0.    0.").text.find("velocity = (0, 30, 0) mph"),
             std::string::npos);
   const Converted yawed = convert("   60.    0.    0.");
   const double yaw = 60 * (std::numbers::pi / 180);
-  EXPECT_NE(yawed.text.find(fmt::format("velocity = ({}, {}, 0) in/s", 528 * std::cos(yaw),
-                                        528 * std::sin(yaw))),
+  EXPECT_NE(yawed.text.find(
+                fmt::format("velocity = ({}, {}, 0) mph", 30 * std::cos(yaw), 30 * std::sin(yaw))),
             std::string::npos)
       << yawed.text;
 }

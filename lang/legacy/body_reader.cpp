@@ -1,0 +1,239 @@
+// Card group B: the body's segments (B.2), joints (B.3), joint springs (B.4), joint damping
+// (B.5) and the per-segment convergence tests (B.6), as ATB V.3's INPUT_BCARDS and INPUT_JOINTS
+// read them.
+#include "lang/legacy/body_reader.h"
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+namespace sled::lang::legacy {
+namespace {
+
+class BodyReader : public DeckFields {
+ public:
+  explicit BodyReader(DeckFields& fields) : DeckFields(fields.source(), fields.deck()) {}
+
+  void Read() {
+    const Card b1 = r_.Next("B.1", {"(2I6,8X,A20,I5)"});
+    deck_.body_line = b1.line;
+    const int segments = Count(b1, 1, 6, "NSEG, the number of segments", kMaxSegments);
+    const int joints = Count(b1, 7, 12, "NJNT, the number of joints", kMaxSegments);
+    deck_.body_title = r_.Text(b1, 21, 40);
+    const int deformable = r_.Integer(b1, 41, 45, "NFBOD, the number of deformable bodies");
+    if (deformable != 0) {
+      Refuse(b1, 41, 45, fmt::format("NFBOD is {}: deformable bodies", deformable),
+             "sled's segments are rigid; remove the deformable bodies (and their B.3.c cards)");
+    }
+    if (segments > 0 && joints != segments - 1) {
+      Invalid(b1, 7, 12, fmt::format("NJNT is {} for {} segments", joints, segments),
+              "segment J+1 hangs from joint J, so a deck has NSEG - 1 joints");
+    }
+    for (int i = 0; i < segments; ++i) ReadSegment(i + 1);
+    for (int j = 0; j < joints && j + 1 < segments; ++j) ReadJoint(j + 1, segments);
+    for (auto& joint : deck_.joints) ReadJointSprings(joint);
+    for (auto& joint : deck_.joints) ReadJointDamping(joint);
+    for (int i = 0; i < segments; ++i) {
+      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
+      for (int f = 0; f < 12; ++f) {
+        const int first = 6 * f + 1;
+        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
+        if (value != 0) {
+          Refuse(b6, first, first + 5,
+                 fmt::format("a per-segment convergence test of the integrator is {}", value),
+                 "sled's integrators take one `tolerance` for the whole scene; leave B.6 blank "
+                 "and set `integrator { tolerance = ... }` in the scenario");
+          break;
+        }
+      }
+    }
+  }
+
+ private:
+  void ReadSegment(int number) {
+    const Card card = r_.Next(fmt::format("B.2.a (segment {})", number), {"(A4,2X,10F6.0,I4)"});
+    SegmentCard segment;
+    segment.line = card.line;
+    segment.name = r_.Text(card, 1, 4);
+    if (segment.name.empty() && card.line != 0) {
+      Invalid(card, 1, 4, "the segment has no name", "give each segment a name in columns 1-4");
+    }
+    segment.weight = r_.Real(card, 7, 12, "WEIGHT, the segment's weight");
+    segment.inertia = Triple(card, 13, 6, "PHI, the principal moments of inertia");
+    segment.semi_axes = Triple(card, 31, 6, "the contact ellipsoid's semi-axes");
+    segment.center = Triple(card, 49, 6, "the contact ellipsoid's centre");
+    const int lpmi = r_.Integer(card, 67, 70, "LPMI, principal axes given");
+    if (segment.weight < 0) {
+      Invalid(card, 7, 12, fmt::format("WEIGHT is {}", segment.weight),
+              "a weight is zero (a singular segment) or positive");
+    }
+    if (lpmi == 1) {
+      const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number), {"(12X,3F6.0)"});
+      segment.has_principal_axes = true;
+      segment.principal_axes = Triple(axes, 13, 6, "yaw, pitch and roll of the principal axes");
+    } else if (lpmi != 0) {
+      Invalid(card, 67, 70, fmt::format("LPMI is {}", lpmi),
+              "LPMI is 1 when a B.2.b card follows, else 0 or blank");
+    }
+    deck_.segments.push_back(std::move(segment));
+  }
+
+  void ReadJoint(int number, int segments) {
+    const Card line1 =
+        r_.Next(fmt::format("B.3.a (joint {})", number), {"(A4,2X,2I4,6F6.0,I4,2F6.0)"});
+    const Card line2 = r_.Next(fmt::format("B.3.b (joint {})", number), {"(14X,9F6.0,6I2)"});
+    JointCard joint;
+    joint.line = line1.line;
+    joint.name = r_.Text(line1, 1, 4);
+    joint.parent = r_.Integer(line1, 7, 10, "JNT, the proximal segment");
+    const int jtype = r_.Integer(line1, 11, 14, "JTYPE, the joint type");
+    joint.at_parent = Triple(line1, 15, 6, "the joint's location in the proximal segment");
+    joint.at_child = Triple(line1, 33, 6, "the joint's location in the distal segment");
+    const int ieuler = r_.Integer(line1, 51, 54, "IEULER");
+    RefuseNonZero(line1, 55, 60, r_.Real(line1, 55, 60, "TENS_MAX"),
+                  "TENS_MAX (joint failure in tension)",
+                  "sled's joints do not fail; remove the limit");
+    RefuseNonZero(line1, 61, 66, r_.Real(line1, 61, 66, "COMP_MAX"),
+                  "COMP_MAX (joint failure in compression)",
+                  "sled's joints do not fail; remove the limit");
+    if (joint.parent < 0) {
+      Refuse(line1, 7, 10, fmt::format("JNT is {}: a flexible chain", joint.parent),
+             "flexible segment chains have no counterpart in sled; use ordinary joints");
+    } else if (joint.parent > segments || joint.parent == number + 1) {
+      r_.Report(DiagnosticKind::kDeckCountOutOfRange, line1, 7, 10,
+                fmt::format("card {}, {} (JNT, the proximal segment): segment {} does not "
+                            "exist or is the joint's own distal segment",
+                            line1.label, r_.Where(line1, 7, 10), joint.parent),
+                fmt::format("name a segment from 0 (a new reference body) to {}", segments));
+      joint.parent = 0;
+    }
+    const bool euler = jtype == 4 || (ieuler == 0 && jtype <= -4);
+    if (euler) {
+      joint.type = JointType::kEuler;
+      Unverified(line1, 11, 14,
+                 "an Euler joint: sled maps the B.4.a flexure and torsion springs and the B.4.b "
+                 "spring to its precession, nutation and spin axes in that order");
+    } else if (std::abs(jtype) >= 5) {
+      joint.type = JointType::kSlip;
+      Unverified(line1, 11, 14, "a slip joint: the slip direction is taken as sled's default axis");
+    } else if (jtype == 0) {
+      joint.type = JointType::kBall;
+    } else {
+      Refuse(line1, 11, 14, fmt::format("JTYPE {} is not documented", jtype),
+             "the reference documents JTYPE 0 (ball and socket), 4 (Euler) and |JTYPE| >= 5 "
+             "(slip); convert this joint by hand");
+    }
+    joint.axes_parent = Triple(line2, 15, 6, "YPR1, the joint axes in the proximal segment");
+    joint.axes_child = Triple(line2, 33, 6, "YPR2, the joint axes in the distal segment");
+    const Vec3 ypr3 = Triple(line2, 51, 6, "YPR3");
+    if (ypr3 != Vec3{}) {
+      Refuse(line2, 51, 68, "YPR3, a third set of joint-axis angles, is not zero",
+             "sled orients a joint's axes in its two segments only (`axes SEGMENT = ...`)");
+    }
+    for (int i = 0; i < 6; ++i) {
+      const int first = 69 + 2 * i;
+      const int order = r_.Integer(line2, first, first + 1, "IDYPR, a rotation order");
+      if (order != 0) {
+        Refuse(line2, first, first + 1,
+               fmt::format("IDYPR({}) is {}: a rotation order", i + 1, order),
+               "sled's angles are always yaw, pitch, roll (the default order 3, 2, 1); leave "
+               "IDYPR blank and convert the angles");
+        break;
+      }
+    }
+    deck_.joints.push_back(std::move(joint));
+  }
+
+  JointSpring Spring(const Card& card, int first) {
+    JointSpring spring;
+    const double c1 = r_.Real(card, first, first + 5, "the linear spring coefficient");
+    spring.quadratic = r_.Real(card, first + 6, first + 11, "the quadratic spring coefficient");
+    spring.cubic = r_.Real(card, first + 12, first + 17, "the cubic spring coefficient");
+    spring.energy_loss =
+        r_.Real(card, first + 18, first + 23, "the energy-dissipation coefficient");
+    spring.stop = r_.Real(card, first + 24, first + 35, "the joint-stop angle");
+    if (c1 < 0) {
+      // A negative first coefficient names joint function |n|; the rest of the spring is unused.
+      spring.function =
+          Ref{static_cast<int>(std::fabs(c1)), r_.Range(card, first, first + 5), card.label};
+      spring.quadratic = spring.cubic = spring.energy_loss = spring.stop = 0;
+    } else {
+      spring.linear = c1;
+    }
+    if (spring.energy_loss < 0 || spring.energy_loss > 1) {
+      Invalid(card, first + 18, first + 23,
+              fmt::format("the energy-dissipation coefficient is {}", spring.energy_loss),
+              "it is a fraction from 0 to 1");
+    }
+    if (spring.stop < 0 || spring.stop > 180) {
+      Invalid(card, first + 24, first + 35,
+              fmt::format("the joint-stop angle is {} deg", spring.stop),
+              "a stop angle is from 0 (none) to 180 degrees");
+    }
+    return spring;
+  }
+
+  void ReadJointSprings(JointCard& joint) {
+    const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
+    const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
+    joint.flexure = Spring(card, 1);
+    joint.twist = Spring(card, 37);
+    if (joint.type != JointType::kEuler && joint.twist.energy_loss != 0 &&
+        joint.twist.energy_loss != joint.flexure.energy_loss) {
+      Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
+             "sled's joints take one `energy_loss`; give both springs the same coefficient");
+    }
+    if (joint.type == JointType::kEuler) {
+      const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j), {"(2(4F6.0,F12.0))", 8});
+      joint.spin = Spring(spin, 1);
+      joint.initial_angles = Triple(spin, 37, 6, "ANG, the initial joint angles");
+    }
+  }
+
+  void ReadJointDamping(JointCard& joint) {
+    const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
+    const int cards = joint.type == JointType::kEuler ? 3 : 1;
+    for (int k = 0; k < cards; ++k) {
+      const Card card = r_.Next(fmt::format("B.5.{} (joint {})", static_cast<char>('a' + k), j),
+                                {"(5F6.0,18X,2F6.0)"});
+      const double viscous = r_.Real(card, 1, 6, "the viscous coefficient");
+      const double coulomb = r_.Real(card, 7, 12, "the Coulomb friction torque");
+      const double full = r_.Real(card, 13, 18, "the angular velocity of full Coulomb friction");
+      RefuseNonZero(card, 19, 24, r_.Real(card, 19, 24, "the maximum torque"),
+                    "the maximum friction torque", "sled's joint friction has no torque bounds");
+      RefuseNonZero(card, 25, 30, r_.Real(card, 25, 30, "the minimum torque"),
+                    "the minimum friction torque", "sled's joint friction has no torque bounds");
+      RefuseNonZero(card, 49, 54, r_.Real(card, 49, 54, "the minimum angular velocity"),
+                    "the minimum angular velocity", "sled's joint friction has no such threshold");
+      const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
+      if (coulomb != 0 && full != 0) {
+        Refuse(card, 13, 18,
+               fmt::format("the angular velocity of full Coulomb friction is {}", full),
+               "sled's Coulomb joint friction has no ramp velocity; set the Coulomb torque to "
+               "zero or convert the friction by hand");
+      }
+      if (k > 0 && (viscous != 0 || coulomb != 0 || restitution != 0)) {
+        Refuse(card, 1, 60, "per-axis damping of an Euler joint",
+               "sled's `viscous`, `coulomb` and `restitution` apply to the whole joint; leave "
+               "B.5.b and B.5.c blank");
+        continue;
+      }
+      if (k == 0) {
+        joint.viscous = viscous;
+        joint.coulomb = coulomb;
+        joint.restitution = restitution;
+      }
+      if (restitution < 0 || restitution > 1) {
+        Invalid(card, 55, 60, fmt::format("the coefficient of restitution is {}", restitution),
+                "a coefficient of restitution is from 0 to 1");
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void ReadBody(DeckFields& fields) { BodyReader(fields).Read(); }
+
+}  // namespace sled::lang::legacy

@@ -1,0 +1,109 @@
+// DeckMapper: a read Deck (deck.h) to the scenario AST, one declaration per card entity, names
+// from the deck, numbers in the deck's units and a comment naming each declaration's card. Its
+// methods are defined by card group: deck_to_ast.cpp (the run, the body, vehicles, functions,
+// initial conditions), map_restraints.cpp (surfaces, belts, springs, airbags, constraints,
+// harnesses) and map_outputs.cpp (the H cards).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "lang/ast/ast.h"
+#include "lang/diagnostics/diagnostic.h"
+#include "lang/legacy/deck.h"
+
+namespace sled::lang::legacy::mapping {
+
+class DeckMapper {
+ public:
+  // How a function is used: its argument and result units depend on it.
+  enum class Use { kContact, kBelt, kJoint };
+
+  DeckMapper(const Deck& deck, DiagnosticConsumer& diagnostics)
+      : deck_(deck),
+        diagnostics_(diagnostics),
+        L(deck.units.length),
+        F(deck.units.force),
+        T(deck.units.time) {}
+  ast::File Map();
+
+ private:
+  void Report(DiagnosticKind kind, const Ref& ref, std::string message, std::string help = {});
+  void NameEverything();
+  std::string Primary() const { return vehicles_.empty() ? "ground" : vehicles_.back(); }
+  // A segment of the body by deck number, or empty after reporting a bad number.
+  std::string Segment(const Ref& ref, std::string_view what);
+  // A joint of the body by deck number (B.3 order), or empty after reporting a bad number.
+  std::string Joint(const Ref& ref);
+  const FunctionCard* Function(const Ref& ref);
+  // The name under which a function is declared for one kind of use (its units depend on it).
+  std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use);
+  // A friction coefficient from a constant function; zero for no function.
+  std::optional<double> Friction(const Ref& ref);
+  void MapRunSettings(ast::Block& body);
+  ast::Expr Torque(const JointSpring& spring, const Ref& owner, std::string_view angle_unit);
+  bool HasSpring(const JointSpring& spring) const;
+  void AddSpring(ast::Statement& joint, const char* attribute, const JointSpring& spring);
+  void MapBody(ast::Block& scenario);
+  void MapVehicles(ast::Block& scenario);
+  void MapSurfaces(ast::Block& scenario);
+  ast::Statement EllipsoidOn(const VehicleEllipsoidCard& card, const std::string& name,
+                             const std::string& frame);
+  // The surface of an F.3.b side: frame `frame` (a body segment or a vehicle) with ellipsoid
+  // `ellipsoid` (0 or the frame's own number: the frame's own; at or above NGRND an extra D.5
+  // ellipsoid, declared on this frame the first time a card puts it there). Empty after a report.
+  std::string Surface(const Ref& frame, const Ref& ellipsoid, ast::Block& scenario);
+  void MapRestraints(ast::Block& scenario);
+  // `at FIRST = ...` and `at SECOND = ...` of a spring or constraint.
+  void AddAttachments(ast::Statement& statement, const std::string& first, const Vec3& at_first,
+                      const std::string& second, const Vec3& at_second);
+  std::string FrameName(const DeckFrame& frame) const;
+  // D.4 and F.6 (--approximate-airbags): `airbag NAME on PRIMARY { ... }`, fixed at the
+  // deployment point, with the cylinder's flow as a named inflow table.
+  void MapAirbags(ast::Block& scenario);
+  // D.6: `constraint constraint_N : fixed_point(A -> B) { at A = ...  at B = ... }`.
+  void MapConstraints(ast::Block& scenario);
+  void AddBeltAttributes(ast::Statement& belt, std::vector<ast::Expr> path, ast::Expr force,
+                         double slack, double friction);
+  // One friction coefficient for several points that each name a friction function; empty after
+  // reporting a point whose coefficient differs from the first's.
+  std::optional<double> CommonFriction(const std::vector<const Ref*>& refs, std::string_view what);
+  // F.8: `harness NAME on FRAME { friction  belt NAME { path ... } }`, the harness friction from
+  // its tie points, each belt's friction from the points it wraps.
+  void MapHarnesses(ast::Block& scenario);
+  void MapFunctions(ast::Block& scenario);
+  ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name);
+  void MapInitial(ast::Block& scenario);
+  void AddOrientation(ast::Statement& initial, std::size_t segment);
+  // One H request. KREF 0 is each card's default: H.1 and H.4 in the segment's own axes (sled's
+  // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.
+  void MapOutput(const OutputCard& card, ast::Statement& block);
+  void MapOutputs(ast::Block& scenario);
+  struct FunctionUse {
+    const FunctionCard* function;
+    Use use;
+    std::string name;
+  };
+  const Deck& deck_;
+  DiagnosticConsumer& diagnostics_;
+  const std::string L, F, T;
+  std::set<std::string> taken_{"deck_g"};
+  std::set<std::string> body_names_;
+  std::string body_;
+  std::vector<std::string> segments_, joints_, vehicles_, planes_, belts_;
+  std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
+  std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
+  std::set<int> placed_extras_;
+  std::map<std::pair<int, int>, std::string> function_names_;
+  std::vector<FunctionUse> uses_;
+  std::set<int> used_;
+  std::vector<std::pair<std::string, std::string>> contact_outputs_;
+  std::vector<std::string> belt_outputs_;
+};
+
+}  // namespace sled::lang::legacy::mapping
