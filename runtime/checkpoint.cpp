@@ -1,54 +1,20 @@
 #include "runtime/checkpoint.h"
 
-#include <sstream>
-
 #include <fmt/format.h>
 
 #include "runtime/constraints.h"
-#include "runtime/fnv1a.h"
+#include "runtime/model_fields.h"
 #include "runtime/outputs.h"
 
 namespace sled::runtime {
-namespace {
-
-// The Model's dump in two parts: what the run's physics is (without the title, the run settings,
-// compared separately, and where things were declared), and what it records (the output
-// requests and criteria: kinds, targets, points, filters), which may change between the saved
-// and the resumed run.
-struct DumpParts {
-  std::string physics;
-  std::string outputs;
-};
-DumpParts SplitDump(const Model& model) {
-  std::istringstream lines(DumpModel(model));
-  DumpParts parts;
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.starts_with("title ") || line.starts_with("run ") || line.starts_with("sizes ")) {
-      continue;
-    }
-    if (const auto source = line.find(" source "); source != std::string::npos) {
-      line.erase(source);
-    }
-    const bool output =
-        line.starts_with("output ") || line.starts_with("criterion ") || line.starts_with("shape ");
-    (output ? parts.outputs : parts.physics) += line + '\n';
-  }
-  return parts;
-}
-
-}  // namespace
-
 ModelFingerprint FingerprintOf(const Model& model) {
   ModelFingerprint fingerprint;
-  const DumpParts parts = SplitDump(model);
-  fingerprint.physics = Fnv1a(parts.physics);
-  fingerprint.outputs = parts.outputs;
-  fingerprint.settings = fmt::format(
-      "integrator {} relative_tolerance {} absolute_tolerance {} min_step {} max_step {} "
-      "initial_step {} start {} output_every {}",
-      model.integrator, model.relative_tolerance, model.absolute_tolerance, model.min_step,
-      model.max_step, model.initial_step, model.start_time, model.output_every);
+  fingerprint.physics = HashModelFields(model, FieldRole::kPhysics);
+  fingerprint.settings = DumpModelFields(model, FieldRole::kSettings);
+  if (!fingerprint.settings.empty() && fingerprint.settings.back() == '\n') {
+    fingerprint.settings.pop_back();  // one line, quoted in CheckpointMismatch's message
+  }
+  fingerprint.outputs = DumpModelFields(model, FieldRole::kRecords);
   for (const std::string& name : ChannelNames(model)) fingerprint.outputs += name + "\n";
   return fingerprint;
 }

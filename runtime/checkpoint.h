@@ -17,12 +17,13 @@
 namespace sled::runtime {
 
 // What must match for a checkpoint to continue a Model.
+// Each part is made by walking model_fields.h's list, by the fields' roles.
 struct ModelFingerprint {
-  std::uint64_t physics = 0;  // the Model without run settings, outputs and source positions
-  std::string settings;       // integrator, tolerances, step limits, start time, output step
-  // The output requests and criteria as the Model defines them (kind, target, point, filter),
-  // then the channel names, one per line: rows before a checkpoint are kept only when all of it
-  // is the same.
+  std::uint64_t physics = 0;  // the fields of role Physics (HashModelFields)
+  std::string settings;       // those of role Settings: integrator, tolerances, steps, start
+  // Those of role Records (the output requests, criteria and drawn shapes, as DumpModel prints
+  // them), then the channel names, one per line: rows before a checkpoint are kept only when
+  // all of it is the same.
   std::string outputs;
 };
 ModelFingerprint FingerprintOf(const Model& model);

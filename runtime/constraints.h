@@ -52,8 +52,10 @@ struct KluSolverDeleter {
   void operator()(KluSolver* solver) const;
 };
 
-struct ConstraintWorkspace {
-  // --- Structure, fixed when the Data is made.
+// The structure of the constraint system: its rows and the KKT matrix's sparsity pattern. It
+// depends only on the Model, so FinalizeModel builds it once (ModelStructure) and every Data
+// copies it.
+struct ConstraintPattern {
   std::int32_t nv = 0;
   std::int32_t rows = 0;                  // m: 3 per fixed point, 1 per distance, 2 per sliding
   std::vector<std::int32_t> first_row;    // per constraint
@@ -61,11 +63,16 @@ struct ConstraintWorkspace {
   std::vector<Vec3> sliding_normal;       // two per constraint (sliding only): in the second frame
   std::vector<std::int32_t> kkt_pointer;  // compressed columns of the KKT matrix (nv + m)
   std::vector<std::int32_t> kkt_index;
-  std::vector<double> kkt_value;
   std::vector<std::int32_t> mass_position;       // nv x nv, column-major: into kkt_value or -1
   std::vector<std::int32_t> jacobian_position;   // m x nv, column-major: J (row r, column j)
   std::vector<std::int32_t> transpose_position;  // m x nv, column-major: J^T (j, r)
   std::vector<std::int32_t> diagonal_position;   // m: (nv + r, nv + r)
+};
+// The pattern of `model`'s constraints (empty without constraints).
+ConstraintPattern BuildConstraintPattern(const Model& model);
+
+struct ConstraintWorkspace : ConstraintPattern {
+  std::vector<double> kkt_value;
 
   // --- Per evaluation (no allocation).
   Eigen::MatrixXd mass;               // nv x nv
@@ -116,10 +123,11 @@ struct ConstraintWorkspace {
   std::unique_ptr<KluSolver, KluSolverDeleter> solver;
 };
 
-// Sizes the workspace, analyses the KKT pattern with KLU, factors it at the initial state and
-// projects data.q and data.v onto the constraints (see setup_failed when that fails). Called by
-// MakeData; does nothing without constraints. Allocates (it is the one-time set-up).
-void SetUpConstraints(const Model& model, Data& data);
+// Sizes the workspace with `pattern` (the Model's, BuildConstraintPattern), analyses it with KLU,
+// factors it at the initial state and projects data.q and data.v onto the constraints (see
+// setup_failed when that fails). Called by MakeData; does nothing without constraints. Allocates
+// (it is the one-time set-up).
+void SetUpConstraints(const Model& model, const ConstraintPattern& pattern, Data& data);
 
 // After ComputeAccelerations: adds the constraint forces, so data.vdot, data.acceleration and
 // data.joint_wrench are those of the closed loops, and records the multipliers and forces in

@@ -1,14 +1,17 @@
 #include "runtime/data.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "runtime/constraints.h"
 #include "runtime/contact/contact_forces.h"
+#include "runtime/model_structure.h"
 #include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
 
 Data MakeData(const Model& model) {
+  const std::shared_ptr<const ModelStructure> structure = StructureOf(model);
   const std::size_t n = model.nsegment();
   Data data;
   data.model = &model;
@@ -28,13 +31,7 @@ Data MakeData(const Model& model) {
   data.parent_to_child.assign(n, Transform{});
   data.subspace.assign(n, MotionSubspace(6, 0));
   data.subspace_locked.assign(n, -1);
-  data.joint_frame_identity.assign(n, 0);
-  for (std::size_t s = 0; s < n; ++s) {
-    const bool parent_identity = model.joint_frame_in_parent[s] == Mat3::Identity();
-    const bool child_identity = model.joint_frame_in_child[s] == Mat3::Identity();
-    data.joint_frame_identity[s] =
-        static_cast<std::uint8_t>((parent_identity ? 1 : 0) | (child_identity ? 2 : 0));
-  }
+  data.joint_frame_identity = structure->joint_frame_identity;
   data.velocity.assign(n, Vec6::Zero());
   data.bias_acceleration.assign(n, Vec6::Zero());
   data.acceleration.assign(n, Vec6::Zero());
@@ -52,10 +49,23 @@ Data MakeData(const Model& model) {
   SizeTableWatch(model, data.table_watch);
   SizeContactState(model, data.contacts);
   SizeAirbagState(model, data);
-  SetUpConstraints(model, data);
+  SetUpConstraints(model, structure->constraints, data);
   SetUpBelts(model, data);
   SetUpContacts(model, data);
   return data;
+}
+
+void CheckDataOf(const Model& model, const Data& data) {
+  if (data.model != &model) {
+    throw std::logic_error(
+        "runtime: a Data used with a Model other than the one MakeData made it for");
+  }
+  if (data.q.size() != static_cast<std::size_t>(model.nq) ||
+      data.v.size() != static_cast<std::size_t>(model.nv) ||
+      data.w.size() != static_cast<std::size_t>(model.nw) ||
+      data.rotation.size() != model.nsegment()) {
+    throw std::logic_error("runtime: the Model's sizes changed after its Data was made");
+  }
 }
 
 std::size_t StateSize(const Model& model) {

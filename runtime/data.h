@@ -34,7 +34,7 @@ struct ConstraintWorkspaceDeleter {
 };
 
 struct Data {
-  const Model* model = nullptr;  // the Model this Data belongs to
+  const Model* model = nullptr;  // the Model this Data belongs to (CheckDataOf)
   double time = 0.0;
   std::vector<double> q;             // generalized positions (nq)
   std::vector<double> v;             // generalized velocities (nv)
@@ -106,7 +106,13 @@ struct Data {
   std::int64_t evaluations = 0;
 };
 
+// A Data for `model`: sized from it, with the structure FinalizeModel derived (or derived now for
+// a Model that was not finalized), at the Model's initial state.
 Data MakeData(const Model& model);
+
+// std::logic_error unless `data` was made for `model` (data.model) and the Model's sizes are
+// still those it was made with. Run, Settle and the integrators' system check it on entry.
+void CheckDataOf(const Model& model, const Data& data);
 
 // The integrated state y = [q; v; w; W] of a Model: the positions, velocities and auxiliary
 // states (an airbag's gas), then the kEnergyStates work integrals of the energy balance

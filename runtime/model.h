@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,20 +28,9 @@
 
 namespace sled::runtime {
 
-// Typed indices: a SegmentId cannot be passed where a VehicleId belongs. The Model's arrays are
-// still indexed by plain integers (a segment's joint is the joint above it, at the same index).
-template <typename Tag>
-struct Id {
-  std::int32_t value = -1;
-  constexpr bool valid() const { return value >= 0; }
-  constexpr std::size_t index() const { return static_cast<std::size_t>(value); }
-  friend constexpr bool operator==(Id, Id) = default;
-};
-using SegmentId = Id<struct SegmentTag>;
-using VehicleId = Id<struct VehicleTag>;
-using FunctionId = Id<struct FunctionTag>;
-using SpringId = Id<struct SpringTag>;
-using ConstraintId = Id<struct ConstraintTag>;
+// Indices into the Model are plain std::int32_t, as its arrays are: what each one refers to (a
+// segment, a function, -1 for none) is written once in runtime/model_fields.h, and ValidateModel
+// checks every index against it when the Model is finalized.
 
 // How a segment moves relative to its parent. kFree: a reference segment (position and
 // quaternion); kBall: a quaternion; kPin: an angle about `joint_axis`; kSlip: a displacement
@@ -315,6 +305,9 @@ struct Model {
   std::vector<SourcePosition> segment_source;
   std::vector<SourcePosition> joint_source;  // by child segment
 
+  // --- Derived by FinalizeModel (runtime/model_structure.h); not a field of the list.
+  std::shared_ptr<const struct ModelStructure> structure;
+
   std::size_t nsegment() const { return segment_name.size(); }
   std::size_t nvehicle() const { return vehicle_name.size(); }
   std::size_t nspring() const { return spring_name.size(); }
@@ -322,8 +315,20 @@ struct Model {
   std::size_t ncriterion() const { return criterion_kind.size(); }
 };
 
+// The Model's fields are listed once, in runtime/model_fields.h: the dump, the checkpoint
+// fingerprint and the validation walk that list.
+
 // A stable text form of the model for `sled check --dump-model` and golden tests.
 std::string DumpModel(const Model& model);
+
+// Every problem of the Model, one per line (the first 20), each naming the field and entry:
+// sizes against their counts, indices in range, finite numbers, masses and other magnitudes not
+// negative, the tree order and the coordinate and table ranges. Empty when the Model is valid.
+std::string ValidateModel(const Model& model);
+// Validates the Model and, when it is valid, derives its structure once (model.structure), so
+// every Data made from it only allocates. Returns ValidateModel's errors (the structure is then
+// left empty). compiler::Lower calls it; a Model built by hand should too.
+std::string FinalizeModel(Model& model);
 
 // The keyword of a joint kind as the language spells it ("free" for a floating root).
 const char* JointKindName(JointKind kind);

@@ -114,6 +114,7 @@ std::size_t OutputRowCount(const Model& model) {
 }
 
 RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOptions& options) {
+  CheckDataOf(model, data);
   const auto wall_start = std::chrono::steady_clock::now();
   RunSummary summary;
   summary.integrator = model.integrator;

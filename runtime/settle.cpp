@@ -100,6 +100,7 @@ void RestoreInitialVelocities(const Model& model, Data& data) {
 }  // namespace
 
 SettleSummary Settle(const Model& model, Data& data) {
+  CheckDataOf(model, data);
   SettleSummary summary;
   const Model::Settle& settle = model.settle;
   if (settle.duration <= 0.0) return summary;

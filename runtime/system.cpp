@@ -22,6 +22,7 @@ namespace sled::runtime {
 
 MultibodySystem::MultibodySystem(const Model& model, Data& data)
     : model_(model), data_(data), jacobian_(model) {
+  CheckDataOf(model, data);
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     const JointKind kind = model.joint_kind[s];
     if (model.joint_stop_impulse[s] && model.joint_stop[s] > 0 &&

@@ -164,6 +164,11 @@ runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager&
   lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);
   lowering.ReportNotes(*options.diagnostics);
+  // Every array checked against its count, index and value rules, and the structure every Data
+  // shares derived once; a Model that fails is a lowering bug, named field by field.
+  if (const std::string errors = runtime::FinalizeModel(model); !errors.empty()) {
+    throw std::logic_error("compiler::Lower: the lowered Model is not valid:\n" + errors);
+  }
   return model;
 }
 

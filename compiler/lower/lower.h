@@ -20,9 +20,11 @@ struct LowerOptions {
 
 // Lowers a checked scenario. The scenario must have checked without errors: a broken tree or an
 // index out of range is a programming error (std::logic_error naming the stage and the object),
-// and so is a missing LowerOptions::diagnostics. Features the runtime does not simulate yet
-// (the viscous criterion, settling) and contact pairs that can never touch are left out of the
-// Model, each with a note (N0401-N0404) at its source position.
+// and so is a missing LowerOptions::diagnostics, and so is a lowered Model that FinalizeModel
+// refuses (its message names the field). Features the runtime does not simulate yet (rolling
+// constraints; a function's unloading slope and a joint's energy loss, which only change how it
+// unloads) and contact pairs that can never touch are left out, each with a note (N0401-N0404)
+// at its source position.
 runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager& sources,
                      const LowerOptions& options);
 

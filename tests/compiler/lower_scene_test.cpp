@@ -274,8 +274,9 @@ TEST(LowerDriver, CheckDumpModelPrintsTheModel) {
   const int status = pclose(pipe);
   EXPECT_EQ(status, 0);
   // The pivot (a fixed-point constraint to the ground) is the upper bar's ball joint to its base.
-  EXPECT_THAT(out, HasSubstr("sizes segments 2 nq 5 nv 4"));
-  EXPECT_THAT(out, HasSubstr("joint 1 pendulum.hinge pin q 4+1 v 3+1"));
+  EXPECT_THAT(out, HasSubstr("sizes segment 2 joint 2 position 5 velocity 4"));
+  EXPECT_THAT(out, HasSubstr("joint 1 joint_kind pin joint_name \"pendulum.hinge\" q_address 4 "
+                             "q_count 1 v_address 3 v_count 1"));
 }
 
 // --- Golden files: tests/golden/model/*.sled -> *.model ------------------------------------------
