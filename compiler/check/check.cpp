@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 #include "lang/syntax/parser.h"
 
 namespace sled::compiler {
@@ -97,10 +97,10 @@ std::optional<EntityKind> EntityKindFromName(std::string_view name) {
   return std::nullopt;
 }
 
-Checker::Checker(lang::SourceManager& sources, const CheckOptions& options)
+CheckContext::CheckContext(lang::SourceManager& sources, const CheckOptions& options)
     : sources_(sources), options_(options), dedupe_(*options.diagnostics), diagnostics_(dedupe_) {}
 
-void Checker::DedupingConsumer::Consume(lang::Diagnostic diagnostic) {
+void CheckContext::DedupingConsumer::Consume(lang::Diagnostic diagnostic) {
   const lang::SourceRange* range = diagnostic.primary_range();
   auto key = std::make_tuple(range ? range->file.value : 0u, range ? range->begin : 0u,
                              diagnostic.message);
@@ -108,14 +108,14 @@ void Checker::DedupingConsumer::Consume(lang::Diagnostic diagnostic) {
   next_.Consume(std::move(diagnostic));
 }
 
-void Checker::Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label,
-                     std::string help) {
+void CheckContext::Report(DiagnosticKind kind, SourceRange range, std::string message,
+                          std::string label, std::string help) {
   auto diagnostic = lang::MakeDiagnostic(kind, range, std::move(message), std::move(label));
   diagnostic.help = std::move(help);
   diagnostics_.Consume(std::move(diagnostic));
 }
 
-Scope* Checker::NewScope(Scope* parent, std::string prefix, std::string directory) {
+Scope* CheckContext::NewScope(Scope* parent, std::string prefix, std::string directory) {
   auto scope = std::make_unique<Scope>();
   scope->parent = parent;
   scope->prefix = std::move(prefix);
@@ -124,8 +124,8 @@ Scope* Checker::NewScope(Scope* parent, std::string prefix, std::string director
   return scopes_.back().get();
 }
 
-void Checker::RecordReference(SourceRange use, const Entity& entity, std::string name,
-                              bool is_declaration) {
+void CheckContext::RecordReference(SourceRange use, const Entity& entity, std::string name,
+                                   bool is_declaration) {
   NameReference reference;
   reference.use = use;
   reference.declaration = entity.range;
@@ -141,7 +141,7 @@ void Checker::RecordReference(SourceRange use, const Entity& entity, std::string
   scenario_.references.push_back(std::move(reference));
 }
 
-bool Checker::Declare(Scope& scope, const std::string& name, Entity entity) {
+bool CheckContext::Declare(Scope& scope, const std::string& name, Entity entity) {
   auto [it, inserted] = scope.names.emplace(name, entity);
   if (entity.range.valid()) RecordReference(entity.range, entity, scope.prefix + name, true);
   if (!inserted) {
@@ -156,7 +156,8 @@ bool Checker::Declare(Scope& scope, const std::string& name, Entity entity) {
   return true;
 }
 
-std::vector<std::string> Checker::NamesOfKinds(Scope& scope, const std::vector<EntityKind>& kinds) {
+std::vector<std::string> CheckContext::NamesOfKinds(Scope& scope,
+                                                    const std::vector<EntityKind>& kinds) {
   auto wanted = [&](EntityKind kind) {
     return kinds.empty() || std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
   };
@@ -174,8 +175,8 @@ std::vector<std::string> Checker::NamesOfKinds(Scope& scope, const std::vector<E
   return names;
 }
 
-Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<EntityKind>& kinds,
-                         bool quiet) {
+Entity* CheckContext::Resolve(Scope& scope, const ast::Expr& path,
+                              const std::vector<EntityKind>& kinds, bool quiet) {
   const std::string kind_text =
       kinds.size() == 1 ? std::string(EntityKindName(kinds[0])) : std::string("name");
   if (path.kind != ast::ExprKind::kPath) {
@@ -249,7 +250,7 @@ Entity* Checker::Resolve(Scope& scope, const ast::Expr& path, const std::vector<
   return found;
 }
 
-std::string Checker::AttachedNames(const Entity& found, const std::vector<EntityKind>& kinds) {
+std::string CheckContext::AttachedNames(const Entity& found, const std::vector<EntityKind>& kinds) {
   auto wanted = [&](EntityKind kind) {
     return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
   };
@@ -292,7 +293,7 @@ std::string Checker::AttachedNames(const Entity& found, const std::vector<Entity
   return "";
 }
 
-void Checker::Import(Scope& scope, const ast::Statement& statement) {
+void SceneChecker::Import(Scope& scope, const ast::Statement& statement) {
   if (!statement.target || statement.target->kind != ast::ExprKind::kPath || statement.has_value ||
       statement.block) {
     Report(DiagnosticKind::kMalformedStatement, statement.range,
@@ -496,6 +497,9 @@ CheckedScenario Checker::Run(const ast::File& file) {
   }
   CheckBodyDetails();
   CheckSceneElements();
+  CheckContacts();
+  CheckRestraints();
+  CheckLoads();
   scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   CheckInitialConditions();

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -20,8 +20,9 @@ std::string_view JointTypeName(JointType type) {
 
 }  // namespace
 
-void Checker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
-                                    const std::string& instance_name, SourceRange instance_range) {
+void BodyChecker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
+                                        const std::string& instance_name,
+                                        SourceRange instance_range) {
   const int index = static_cast<int>(scenario_.bodies.size());
   Body body;
   body.name = instance_name;
@@ -45,7 +46,7 @@ void Checker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body_sta
   bodies_.push_back(pending);
 }
 
-void Checker::CheckBodyDetails() {
+void BodyChecker::CheckBodyDetails() {
   for (const Pending& pending : segments_) {
     Segment& segment = scenario_.segments[static_cast<std::size_t>(pending.index)];
     Scope& scope = *pending.scope;
@@ -275,8 +276,8 @@ void Checker::CheckBodyDetails() {
 
 // The characteristics a joint's block (or an `override` of it) gives: only what the block
 // states changes, so an override keeps the imported body's other values.
-void Checker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                       Joint& joint) {
+void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                           Joint& joint) {
   const bool euler = joint.type == JointType::kEuler;
   auto only_for = [&](AttributeKey name, bool allowed, std::string_view types) {
     const ast::Statement* attribute = One(bound, name);
@@ -359,7 +360,7 @@ void Checker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, Bl
   }
 }
 
-void Checker::CheckTopology(Body& body, int body_index) {
+void BodyChecker::CheckTopology(Body& body, int body_index) {
   (void)body_index;
   // Parent of each segment through a (non-null) joint; a segment may have only one.
   std::map<int, int> parent_joint;

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -43,7 +43,7 @@ std::optional<std::pair<double, double>> WrongSign(const Function& function, boo
 
 }  // namespace
 
-void Checker::CheckElementLaws() {
+void ElementLawChecker::CheckElementLaws() {
   std::set<std::pair<FunctionId, std::string>> reported;  // a law shared by pairs: once
   auto check = [&](FunctionId id, const std::string& element, const SourceRange& element_range,
                    std::string_view law, std::string_view argument, std::string_view unit,

@@ -25,7 +25,8 @@ std::vector<std::string> QuantityNames() {
 
 }  // namespace
 
-bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use) {
+bool CheckContext::MatchSignature(FunctionId id, Dimension argument, Dimension result,
+                                  SourceRange use) {
   if (id < 0 || static_cast<std::size_t>(id) >= scenario_.functions.size()) return false;
   if (!function_valid_.at(static_cast<std::size_t>(id))) return false;
   Function& function = scenario_.functions[static_cast<std::size_t>(id)];
@@ -84,9 +85,10 @@ bool Checker::MatchSignature(FunctionId id, Dimension argument, Dimension result
   return false;
 }
 
-std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::Statement& statement,
-                                                  const ast::Expr& expr, Dimension argument,
-                                                  Dimension result, std::string_view what) {
+std::optional<FunctionId> CheckContext::ExpectFunction(Scope& scope,
+                                                       const ast::Statement& statement,
+                                                       const ast::Expr& expr, Dimension argument,
+                                                       Dimension result, std::string_view what) {
   if (expr.kind == ast::ExprKind::kPath) {
     // A parameter used as a constant function, or a named function.
     Entity* entity = Resolve(scope, expr, {EntityKind::kFunction, EntityKind::kParameter});
@@ -163,9 +165,10 @@ std::optional<FunctionId> Checker::ExpectFunction(Scope& scope, const ast::State
   return static_cast<FunctionId>(scenario_.functions.size() - 1);
 }
 
-bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const ast::Expr& call,
-                            std::optional<std::pair<Dimension, Dimension>> expected,
-                            Function& function, int index) {
+bool CheckContext::BuildFunction(Scope& scope, const ast::Statement& statement,
+                                 const ast::Expr& call,
+                                 std::optional<std::pair<Dimension, Dimension>> expected,
+                                 Function& function, int index) {
   function.range = call.range;
   const std::string form = call.PathText();
   std::vector<const ast::Expr*> positional;
@@ -369,7 +372,7 @@ bool Checker::BuildFunction(Scope& scope, const ast::Statement& statement, const
   return false;
 }
 
-void Checker::DefineFunction(Scope& scope, const ast::Statement& statement, int index) {
+void CheckContext::DefineFunction(Scope& scope, const ast::Statement& statement, int index) {
   Function function;
   function.name = scope.prefix + statement.target->PathText();
   const ast::Expr* value = statement.values.size() == 1 ? &statement.values[0] : nullptr;

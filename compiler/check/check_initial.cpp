@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 #include "compiler/check/initial_pose.h"
 
 namespace sled::compiler::internal {
@@ -35,7 +35,7 @@ std::string MetresPerSecond(const Vec3& v) {
 
 }  // namespace
 
-void Checker::CheckInitialConditions() {
+void InitialChecker::CheckInitialConditions() {
   for (const Pending& pending : initials_) {
     const ast::Statement& statement = *pending.statement;
     Scope& scope = *pending.scope;
@@ -85,8 +85,8 @@ void Checker::CheckInitialConditions() {
   }
 }
 
-void Checker::PlaceByHPoint(Scope& scope, const BoundBlock& bound,
-                            const ast::Statement& h_statement, InitialCondition& initial) {
+void InitialChecker::PlaceByHPoint(Scope& scope, const BoundBlock& bound,
+                                   const ast::Statement& h_statement, InitialCondition& initial) {
   const SourceRange where = h_statement.keyword_range;
   if (initial.kind != InitialCondition::Kind::kBody) {
     Report(DiagnosticKind::kMisplacedStatement, where, "`h_point` places a body",
@@ -124,7 +124,8 @@ void Checker::PlaceByHPoint(Scope& scope, const BoundBlock& bound,
 // What a joint places cannot be given: a segment below a (non-null) joint takes its position,
 // orientation and velocity from the joint's angles and rates (its angular velocity can be given:
 // the rates are solved for it), and a null joint has no angles.
-void Checker::RefuseUntakenInitial(const InitialCondition& initial, const BoundBlock& bound) {
+void InitialChecker::RefuseUntakenInitial(const InitialCondition& initial,
+                                          const BoundBlock& bound) {
   if (initial.kind == InitialCondition::Kind::kJoint) {
     const Joint& joint = scenario_.joints[static_cast<std::size_t>(initial.index)];
     const ast::Statement* angles = One(bound, "angles");
@@ -164,7 +165,7 @@ void Checker::RefuseUntakenInitial(const InitialCondition& initial, const BoundB
 // A root held at a point of the ground or a vehicle by a fixed-point constraint is where that
 // point and its orientation put it, and moves as that point and its angular velocity make it: a
 // position or velocity given for it must agree.
-void Checker::CheckHeldInitialConditions() {
+void InitialChecker::CheckHeldInitialConditions() {
   const InitialPoses poses = ComputeInitialPoses(scenario_);
   auto root_of = [&](const InitialCondition& initial) {
     if (initial.kind == InitialCondition::Kind::kSegment) return initial.index;

@@ -5,7 +5,7 @@
 // resist its angle; a motor is a load.
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -28,7 +28,7 @@ std::string_view JointTypeName(JointType type) {
 
 }  // namespace
 
-void Checker::CheckLoads() {
+void LoadChecker::CheckLoads() {
   for (const Pending& pending : loads_) {
     AppliedLoad& load = scenario_.loads[static_cast<std::size_t>(pending.index)];
     Scope& scope = *pending.scope;
@@ -149,7 +149,7 @@ void Checker::CheckLoads() {
   }
 }
 
-void Checker::CheckLoadsInThePlane() {
+void LoadChecker::CheckLoadsInThePlane() {
   // Planar symmetry keeps the motion in the x-z plane: a load with a part out of it would lose
   // that part without a word.
   if (scenario_.run.symmetry != Symmetry::kPlanar) return;

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -15,8 +15,8 @@ constexpr double kLargestSemiAxis = 1e150;
 
 }  // namespace
 
-void Checker::ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                            Ellipsoid& ellipsoid) {
+void CheckContext::ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                 Ellipsoid& ellipsoid) {
   if (auto semi_axes = ReadVector(scope, bound, kind, "semi_axes")) {
     ellipsoid.semi_axes = *semi_axes;
     for (double axis : *semi_axes) {
@@ -55,9 +55,9 @@ void Checker::ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kin
   }
 }
 
-std::optional<std::array<FrameRef, 2>> Checker::ReadConnection(Scope& scope,
-                                                               const ast::Statement& statement,
-                                                               const ast::Expr& arrow) {
+std::optional<std::array<FrameRef, 2>> CheckContext::ReadConnection(Scope& scope,
+                                                                    const ast::Statement& statement,
+                                                                    const ast::Expr& arrow) {
   if (arrow.kind != ast::ExprKind::kArrow || arrow.operands.size() != 2) {
     Report(DiagnosticKind::kMalformedStatement, arrow.range,
            fmt::format("`{}` connects two frames: `A -> B`", statement.keyword), "expected A -> B",
@@ -77,11 +77,11 @@ std::optional<std::array<FrameRef, 2>> Checker::ReadConnection(Scope& scope,
   return std::array<FrameRef, 2>{*first, *second};
 }
 
-std::array<std::optional<Vec3>, 2> Checker::ReadAtPoints(Scope& scope, const BoundBlock& bound,
-                                                         std::string_view keyword,
-                                                         const std::array<FrameRef, 2>& frames,
-                                                         SourceRange owner, bool required,
-                                                         bool local_names) {
+std::array<std::optional<Vec3>, 2> CheckContext::ReadAtPoints(Scope& scope, const BoundBlock& bound,
+                                                              std::string_view keyword,
+                                                              const std::array<FrameRef, 2>& frames,
+                                                              SourceRange owner, bool required,
+                                                              bool local_names) {
   // Inside a body, segments are written by their own name: `at pelvis`, not `at occupant.pelvis`.
   auto written = [&](const FrameRef& frame) {
     std::string name = FrameName(frame);
@@ -131,7 +131,7 @@ std::array<std::optional<Vec3>, 2> Checker::ReadAtPoints(Scope& scope, const Bou
   return points;
 }
 
-void Checker::CheckContacts() {
+void RestraintChecker::CheckContacts() {
   for (const Pending& pending : contacts_) {
     const ast::Statement& statement = *pending.statement;
     Scope& scope = *pending.scope;
@@ -196,7 +196,7 @@ void Checker::CheckContacts() {
   }
 }
 
-void Checker::CheckRestraints() {
+void RestraintChecker::CheckRestraints() {
   auto read_frame = [&](const Pending& pending) -> FrameRef {
     if (const ast::Clause* on = pending.statement->FindClause("on")) {
       if (auto frame = ResolveFrame(*pending.scope, on->value)) return *frame;

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 #include "compiler/check/displacement_history.h"
 
 namespace sled::compiler::internal {
@@ -18,7 +18,7 @@ Vec3 Cross(const Vec3& a, const Vec3& b) {
 double Norm(const Vec3& a) { return std::hypot(a[0], a[1], a[2]); }
 
 // The name a declaration gives, or empty after reporting that it has none.
-std::string NameOf(Checker& checker, const ast::Statement& statement) {
+std::string NameOf(CheckContext& checker, const ast::Statement& statement) {
   if (statement.target && statement.target->kind == ast::ExprKind::kPath &&
       statement.target->path.size() == 1) {
     return statement.target->path[0];
@@ -34,7 +34,7 @@ std::string NameOf(Checker& checker, const ast::Statement& statement) {
 
 }  // namespace
 
-std::optional<FrameRef> Checker::ResolveFrame(Scope& scope, const ast::Expr& expr) {
+std::optional<FrameRef> CheckContext::ResolveFrame(Scope& scope, const ast::Expr& expr) {
   Entity* entity =
       Resolve(scope, expr, {EntityKind::kGround, EntityKind::kVehicle, EntityKind::kSegment});
   if (!entity) return std::nullopt;
@@ -48,7 +48,7 @@ std::optional<FrameRef> Checker::ResolveFrame(Scope& scope, const ast::Expr& exp
   }
 }
 
-std::string Checker::FrameName(const FrameRef& frame) const {
+std::string CheckContext::FrameName(const FrameRef& frame) const {
   switch (frame.kind) {
     case FrameRef::Kind::kVehicle:
       return scenario_.vehicles.at(static_cast<std::size_t>(frame.index)).name;
@@ -60,8 +60,8 @@ std::string Checker::FrameName(const FrameRef& frame) const {
   return "ground";
 }
 
-Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block& block,
-                                                 BlockKind kind) {
+CheckContext::BoundBlock SceneChecker::DeclareFileContents(Scope& scope, const ast::Block& block,
+                                                           BlockKind kind) {
   BoundBlock bound = Bind(kind, &block, block.range);
   if (kind == BlockKind::kScenario) scenario_bound_ = bound;
   auto declare = [&](const ast::Statement& statement, EntityKind entity_kind, int index,
@@ -206,8 +206,8 @@ Checker::BoundBlock Checker::DeclareFileContents(Scope& scope, const ast::Block&
   return bound;
 }
 
-void Checker::DeclareModuleSurfaces(Scope& instance, const ast::Block& module,
-                                    const ast::Expr* frame, Scope& frame_scope) {
+void SceneChecker::DeclareModuleSurfaces(Scope& instance, const ast::Block& module,
+                                         const ast::Expr* frame, Scope& frame_scope) {
   // The surfaces' own scope: their names live in the instance, their frame here.
   Scope* surfaces = NewScope(&instance, instance.prefix, instance.directory);
   surfaces->surface_frame = frame;
@@ -245,7 +245,7 @@ void Checker::DeclareModuleSurfaces(Scope& instance, const ast::Block& module,
   }
 }
 
-std::optional<FrameRef> Checker::SurfaceFrame(const ast::Statement& statement, Scope& scope) {
+std::optional<FrameRef> CheckContext::SurfaceFrame(const ast::Statement& statement, Scope& scope) {
   if (const ast::Clause* on = statement.FindClause("on")) return ResolveFrame(scope, on->value);
   if (scope.surface_frame) return ResolveFrame(*scope.surface_frame_scope, *scope.surface_frame);
   return FrameRef{};
@@ -260,7 +260,7 @@ struct CallArguments {
   bool ok = true;
 };
 
-CallArguments ReadArguments(Checker& checker, const ast::Expr& call,
+CallArguments ReadArguments(CheckContext& checker, const ast::Expr& call,
                             const std::vector<std::string>& allowed,
                             const std::vector<std::string>& required) {
   CallArguments result;
@@ -297,7 +297,7 @@ CallArguments ReadArguments(Checker& checker, const ast::Expr& call,
 
 }  // namespace
 
-void Checker::CheckSceneElements() {
+void SceneChecker::CheckSceneElements() {
   for (const Pending& pending : vehicles_) {
     Vehicle& vehicle = scenario_.vehicles[static_cast<std::size_t>(pending.index)];
     const BoundBlock bound =
@@ -584,10 +584,6 @@ void Checker::CheckSceneElements() {
         Bind(BlockKind::kEllipsoid, pending.statement->block.get(), pending.statement->range);
     ReadEllipsoid(*pending.scope, bound, BlockKind::kEllipsoid, ellipsoid);
   }
-
-  CheckContacts();
-  CheckRestraints();
-  CheckLoads();
 }
 
 }  // namespace sled::compiler::internal

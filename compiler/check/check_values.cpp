@@ -31,8 +31,8 @@ const AttributeSpec* SpecOfKey(BlockKind kind, AttributeKey name) {
 
 }  // namespace
 
-Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
-                                  SourceRange owner_range) {
+CheckContext::BoundBlock CheckContext::Bind(BlockKind kind, const ast::Block* block,
+                                            SourceRange owner_range) {
   BoundBlock bound;
   const std::string block_name(BlockName(kind));
   std::vector<std::string> misspellings;  // attributes the unknown keywords were probably meant as
@@ -130,17 +130,17 @@ Checker::BoundBlock Checker::Bind(BlockKind kind, const ast::Block* block,
   return bound;
 }
 
-const ast::Statement* Checker::One(const BoundBlock& bound, AttributeKey name) const {
+const ast::Statement* CheckContext::One(const BoundBlock& bound, AttributeKey name) const {
   auto it = bound.attributes.find(std::string(name.view()));
   return it == bound.attributes.end() || it->second.empty() ? nullptr : it->second.front();
 }
 
-const ast::Expr* Checker::ValueOf(const BoundBlock& bound, AttributeKey name) {
+const ast::Expr* CheckContext::ValueOf(const BoundBlock& bound, AttributeKey name) {
   const ast::Statement* statement = One(bound, name);
   return statement ? SingleValue(*statement) : nullptr;
 }
 
-const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
+const ast::Expr* CheckContext::SingleValue(const ast::Statement& statement) {
   if (statement.values.size() != 1) {
     Report(
         DiagnosticKind::kWrongValueKind,
@@ -152,7 +152,7 @@ const ast::Expr* Checker::SingleValue(const ast::Statement& statement) {
   return &statement.values[0];
 }
 
-std::optional<Value> Checker::ValueOf(Parameter& parameter) {
+std::optional<Value> CheckContext::ValueOf(Parameter& parameter) {
   if (parameter.state == Parameter::State::kPending) {
     parameter.state = Parameter::State::kEvaluating;
     const ast::Expr& definition =
@@ -170,7 +170,7 @@ std::optional<Value> Checker::ValueOf(Parameter& parameter) {
   return parameter.value;
 }
 
-bool Checker::OverrideFits(Parameter& parameter, const Value& value) {
+bool CheckContext::OverrideFits(Parameter& parameter, const Value& value) {
   // `--set speed=40` for `param speed = 56 km/h` would run at 40 m/s: the value from the
   // command line must have the dimension and the shape of the one it replaces (a bare 0 fits).
   const auto declared = Evaluate(*parameter.scope, *parameter.expr);
@@ -206,14 +206,14 @@ bool Checker::OverrideFits(Parameter& parameter, const Value& value) {
   return false;
 }
 
-void Checker::EvaluateParameters() {
+void CheckContext::EvaluateParameters() {
   // In the order of declaration, so that a long chain of `let`s, each using the one before,
   // is evaluated one link at a time, not by recursing from its last link to its first. One that
   // nothing uses is still checked: a wrong dimension in it is a mistake the checker can find.
   for (std::size_t i = 0; i < parameters_.size(); ++i) ValueOf(*parameters_[i]);
 }
 
-std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
+std::optional<Value> CheckContext::Evaluate(Scope& scope, const ast::Expr& expr) {
   // A value defined through later definitions (`let a = b + 1` before `let b = ...`) recurses
   // through them; a generated chain of thousands would overflow the stack.
   if (evaluation_depth_ >= kMaxEvaluationDepth) return ReportEvaluationTooDeep(expr);
@@ -225,7 +225,7 @@ std::optional<Value> Checker::Evaluate(Scope& scope, const ast::Expr& expr) {
 
 // Only the recursion lives here; what each kind of value needs (and every diagnostic, whose
 // strings would make each level's stack frame large) is in the functions it calls.
-std::optional<Value> Checker::EvaluateNested(Scope& scope, const ast::Expr& expr) {
+std::optional<Value> CheckContext::EvaluateNested(Scope& scope, const ast::Expr& expr) {
   switch (expr.kind) {
     case ast::ExprKind::kNumber:
       return EvaluateNumber(expr);
@@ -256,7 +256,7 @@ std::optional<Value> Checker::EvaluateNested(Scope& scope, const ast::Expr& expr
   return std::nullopt;
 }
 
-std::optional<Value> Checker::ReportEvaluationTooDeep(const ast::Expr& expr) {
+std::optional<Value> CheckContext::ReportEvaluationTooDeep(const ast::Expr& expr) {
   // Once: the rest of such a chain would report it again from each of its links.
   if (evaluation_too_deep_) return std::nullopt;
   evaluation_too_deep_ = true;
@@ -268,7 +268,7 @@ std::optional<Value> Checker::ReportEvaluationTooDeep(const ast::Expr& expr) {
   return std::nullopt;
 }
 
-std::optional<Value> Checker::ReportNotAQuantity(const ast::Expr& expr) {
+std::optional<Value> CheckContext::ReportNotAQuantity(const ast::Expr& expr) {
   Report(DiagnosticKind::kWrongValueKind, expr.range,
          fmt::format("expected a number or a vector, found {}",
                      expr.kind == ast::ExprKind::kCall     ? "a call"
@@ -279,7 +279,7 @@ std::optional<Value> Checker::ReportNotAQuantity(const ast::Expr& expr) {
   return std::nullopt;
 }
 
-std::optional<Value> Checker::EvaluateNumber(const ast::Expr& expr) {
+std::optional<Value> CheckContext::EvaluateNumber(const ast::Expr& expr) {
   // The parser marks a number it could not read as NaN, after reporting it.
   if (std::isnan(expr.number)) return std::nullopt;
   Value value{{expr.number}, dim::kDimensionless, true};
@@ -293,7 +293,7 @@ std::optional<Value> Checker::EvaluateNumber(const ast::Expr& expr) {
   return value;
 }
 
-std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr) {
+std::optional<Value> CheckContext::EvaluateVector(Scope& scope, const ast::Expr& expr) {
   if (expr.operands.size() == 1 && expr.unit) {
     // `(40 + 2) kg`: a parenthesised number with a unit.
     auto inner = Evaluate(scope, expr.operands[0]);
@@ -381,7 +381,7 @@ std::optional<Value> Checker::EvaluateVector(Scope& scope, const ast::Expr& expr
   return value;
 }
 
-std::optional<Value> Checker::EvaluatePath(Scope& scope, const ast::Expr& expr) {
+std::optional<Value> CheckContext::EvaluatePath(Scope& scope, const ast::Expr& expr) {
   Entity* entity = Resolve(scope, expr, {EntityKind::kParameter});
   if (!entity) return std::nullopt;
   Parameter& parameter = *parameters_.at(static_cast<std::size_t>(entity->index));
@@ -389,7 +389,7 @@ std::optional<Value> Checker::EvaluatePath(Scope& scope, const ast::Expr& expr) 
   return ValueOf(parameter);
 }
 
-std::optional<Value> Checker::ReportCycle(const ast::Expr& expr, Parameter& parameter) {
+std::optional<Value> CheckContext::ReportCycle(const ast::Expr& expr, Parameter& parameter) {
   Report(DiagnosticKind::kCyclicDefinition, expr.range,
          fmt::format("`{}` is defined in terms of itself", parameter.name),
          "used in its own definition", "break the cycle with a literal value");
@@ -397,8 +397,8 @@ std::optional<Value> Checker::ReportCycle(const ast::Expr& expr, Parameter& para
   return std::nullopt;
 }
 
-std::optional<Value> Checker::Combine(const ast::Expr& expr, const Value& left,
-                                      const Value& right) {
+std::optional<Value> CheckContext::Combine(const ast::Expr& expr, const Value& left,
+                                           const Value& right) {
   const bool left_vector = left.components.size() == 3;
   const bool right_vector = right.components.size() == 3;
   Value result;
@@ -494,8 +494,8 @@ bool FitsDimension(const Value& value, Dimension expected) {
 
 }  // namespace
 
-std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& expr,
-                                              Dimension dimension, std::string_view what) {
+std::optional<double> CheckContext::ExpectQuantity(Scope& scope, const ast::Expr& expr,
+                                                   Dimension dimension, std::string_view what) {
   auto value = Evaluate(scope, expr);
   if (!value) return std::nullopt;
   if (value->components.size() != 1) {
@@ -520,8 +520,8 @@ std::optional<double> Checker::ExpectQuantity(Scope& scope, const ast::Expr& exp
   return value->components[0];
 }
 
-std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, Dimension dimension,
-                                          std::string_view what) {
+std::optional<Vec3> CheckContext::ExpectVector(Scope& scope, const ast::Expr& expr,
+                                               Dimension dimension, std::string_view what) {
   auto value = Evaluate(scope, expr);
   if (!value) return std::nullopt;
   if (value->components.size() != 3) {
@@ -549,7 +549,7 @@ std::optional<Vec3> Checker::ExpectVector(Scope& scope, const ast::Expr& expr, D
   return Vec3{value->components[0], value->components[1], value->components[2]};
 }
 
-std::optional<bool> Checker::ExpectBool(const ast::Expr& expr, std::string_view what) {
+std::optional<bool> CheckContext::ExpectBool(const ast::Expr& expr, std::string_view what) {
   if (expr.kind != ast::ExprKind::kBool) {
     Report(DiagnosticKind::kWrongValueKind, expr.range,
            fmt::format("`{}` is `true` or `false`", what), "not a boolean",
@@ -559,8 +559,8 @@ std::optional<bool> Checker::ExpectBool(const ast::Expr& expr, std::string_view 
   return expr.text == "true";
 }
 
-std::optional<Vec3> Checker::ExpectDirection(Scope& scope, const ast::Expr& expr,
-                                             std::string_view what) {
+std::optional<Vec3> CheckContext::ExpectDirection(Scope& scope, const ast::Expr& expr,
+                                                  std::string_view what) {
   // Axis words: x, -x, y, -y, z, -z.
   const ast::Expr* word = &expr;
   double sign = 1.0;
@@ -588,7 +588,7 @@ std::optional<Vec3> Checker::ExpectDirection(Scope& scope, const ast::Expr& expr
   return Vec3{(*vector)[0] / length, (*vector)[1] / length, (*vector)[2] / length};
 }
 
-bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange range) {
+bool CheckContext::CheckRange(const AttributeSpec& spec, double value, SourceRange range) {
   const bool below = spec.min_exclusive ? !(value > spec.min) : !(value >= spec.min);
   const bool above = !(value <= spec.max);
   if (!below && !above) return true;
@@ -616,8 +616,8 @@ bool Checker::CheckRange(const AttributeSpec& spec, double value, SourceRange ra
   return false;
 }
 
-std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                            AttributeKey name) {
+std::optional<double> CheckContext::ReadQuantity(Scope& scope, const BoundBlock& bound,
+                                                 BlockKind kind, AttributeKey name) {
   const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
@@ -626,8 +626,8 @@ std::optional<double> Checker::ReadQuantity(Scope& scope, const BoundBlock& boun
   return value;
 }
 
-std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                        AttributeKey name) {
+std::optional<Vec3> CheckContext::ReadVector(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                             AttributeKey name) {
   const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
@@ -637,14 +637,14 @@ std::optional<Vec3> Checker::ReadVector(Scope& scope, const BoundBlock& bound, B
   return ExpectVector(scope, *expr, spec->dimension, name);
 }
 
-std::optional<bool> Checker::ReadBool(const BoundBlock& bound, AttributeKey name) {
+std::optional<bool> CheckContext::ReadBool(const BoundBlock& bound, AttributeKey name) {
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
   return ExpectBool(*expr, name);
 }
 
-std::optional<FunctionId> Checker::ReadFunction(Scope& scope, const BoundBlock& bound,
-                                                BlockKind kind, AttributeKey name) {
+std::optional<FunctionId> CheckContext::ReadFunction(Scope& scope, const BoundBlock& bound,
+                                                     BlockKind kind, AttributeKey name) {
   const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Statement* statement = One(bound, name);
   if (!statement) return std::nullopt;

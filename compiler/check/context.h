@@ -1,5 +1,6 @@
-// The checker's working state, shared by the files that check one domain each (values, bodies,
-// scene elements, outputs, lints). Internal to compiler/check.
+// The checker's shared state (CheckContext) and the entities, scopes and parameters it works
+// on. The checkers of each block kind derive from CheckContext (checkers.h). Internal to
+// compiler/check.
 #pragma once
 
 #include <map>
@@ -102,10 +103,16 @@ struct PendingPolynomial {
   bool resolved = false;
 };
 
-class Checker {
+// The checker's shared state and the services every block kind's checker uses: diagnostics,
+// scopes and names, values, functions, attribute binding and reading, frames. The checkers of
+// the block kinds (checkers.h) derive from it (virtually: they share one context), and
+// Checker combines them.
+class CheckContext {
  public:
-  Checker(lang::SourceManager& sources, const CheckOptions& options);
-  CheckedScenario Run(const ast::File& file);
+  CheckContext(lang::SourceManager& sources, const CheckOptions& options);
+  CheckContext(const CheckContext&) = delete;
+  CheckContext& operator=(const CheckContext&) = delete;
+  virtual ~CheckContext() = default;
 
   // --- diagnostics (check.cpp)
   // Every diagnostic says what was found (message), marks it (label) and gives a hint (help);
@@ -113,6 +120,7 @@ class Checker {
   void Report(DiagnosticKind kind, SourceRange range, std::string message, std::string label,
               std::string help);
 
+ protected:
   // --- scopes and names (check.cpp)
   Scope* NewScope(Scope* parent, std::string prefix, std::string directory);
   bool Declare(Scope& scope, const std::string& name, Entity entity);
@@ -129,24 +137,6 @@ class Checker {
 
   // --- values (check_values.cpp)
   std::optional<Value> Evaluate(Scope& scope, const ast::Expr& expr);
-  // Evaluate's body and the pieces it calls. The recursion goes through Evaluate, EvaluateNested,
-  // EvaluatePath and ValueOf only; the others stay out of line (GCC and Clang would inline a
-  // function called once), so that each level of a deep value costs a small stack frame, under
-  // AddressSanitizer too.
-  std::optional<Value> EvaluateNested(Scope& scope, const ast::Expr& expr);
-  std::optional<Value> EvaluatePath(Scope& scope, const ast::Expr& expr);
-  [[gnu::noinline]] std::optional<Value> EvaluateNumber(const ast::Expr& expr);
-  [[gnu::noinline]] std::optional<Value> EvaluateVector(Scope& scope, const ast::Expr& expr);
-  // A binary operation on two evaluated operands.
-  [[gnu::noinline]] std::optional<Value> Combine(const ast::Expr& expr, const Value& left,
-                                                 const Value& right);
-  [[gnu::noinline]] std::optional<Value> ReportEvaluationTooDeep(const ast::Expr& expr);
-  [[gnu::noinline]] std::optional<Value> ReportNotAQuantity(const ast::Expr& expr);
-  [[gnu::noinline]] std::optional<Value> ReportCycle(const ast::Expr& expr, Parameter& parameter);
-  // The value of a parameter, evaluating it if it has not been yet.
-  std::optional<Value> ValueOf(Parameter& parameter);
-  // Whether a `--set` value has the shape and dimension of the declared one (else reported).
-  [[gnu::noinline]] bool OverrideFits(Parameter& parameter, const Value& value);
   // Evaluates every parameter in the order of declaration, before anything uses them.
   void EvaluateParameters();
   std::optional<double> ExpectQuantity(Scope& scope, const ast::Expr& expr, Dimension dimension,
@@ -162,11 +152,6 @@ class Checker {
                                            Dimension result, std::string_view what);
   // Fills the function reserved at `index` from `function NAME = table(...) { rows }`.
   void DefineFunction(Scope& scope, const ast::Statement& statement, int index);
-  // Builds a function from constant(...), table(...) or polynomial(...) into `function`; when
-  // `expected` is given (argument, result) the signature must match. False after reporting.
-  bool BuildFunction(Scope& scope, const ast::Statement& statement, const ast::Expr& call,
-                     std::optional<std::pair<Dimension, Dimension>> expected, Function& function,
-                     int index);
   // Checks a declared function against the signature a use site expects.
   bool MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use);
   bool CheckRange(const AttributeSpec& spec, double value, SourceRange range);
@@ -196,25 +181,16 @@ class Checker {
   std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
                                          AttributeKey name);
 
-  // --- declarations (check_scene.cpp, check_bodies.cpp, check_restraints.cpp)
-  BoundBlock DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind);
-  void CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
-                             const std::string& instance_name, SourceRange instance_range);
-  void CheckBodyDetails();
-  void CheckSceneElements();
-  void CheckContacts();
-  void CheckRestraints();
-  // Applied forces and torques (compiler/check/check_loads.cpp).
-  void CheckLoads();
-  // Under `symmetry planar`, loads must act in the plane (after CheckRunSettings).
-  void CheckLoadsInThePlane();
-  // Force and torque laws of the wrong sign (compiler/check/check_element_laws.cpp): E0420.
-  void CheckElementLaws();
+  // --- declarations, which every block kind may contain (scene: check_scene.cpp; bodies:
+  // check_bodies.cpp).
+  // The declarations of a file, module or body block; returns its bound attributes.
+  virtual BoundBlock DeclareFileContents(Scope& scope, const ast::Block& block, BlockKind kind) = 0;
+  virtual void CheckBodyDeclarations(Scope& scope, const ast::Statement& body_statement,
+                                     const std::string& instance_name,
+                                     SourceRange instance_range) = 0;
+
+  // --- readers several block kinds share (check_restraints.cpp, check_scene.cpp)
   void ReadEllipsoid(Scope& scope, const BoundBlock& bound, BlockKind kind, Ellipsoid& ellipsoid);
-  // The torque characteristics, damping, stops and locking a joint's (or an override's) block
-  // states; what it does not state stays as it was.
-  void ReadJointCharacteristics(Scope& scope, const BoundBlock& bound, BlockKind kind,
-                                Joint& joint);
   // `at FRAME = (x, y, z) mm` statements of a joint, spring or constraint: one point per frame.
   // Reports a frame that is neither of the two, and (when `required`) a missing one.
   std::array<std::optional<Vec3>, 2> ReadAtPoints(Scope& scope, const BoundBlock& bound,
@@ -226,34 +202,6 @@ class Checker {
   std::optional<std::array<FrameRef, 2>> ReadConnection(Scope& scope,
                                                         const ast::Statement& statement,
                                                         const ast::Expr& arrow);
-  void CheckRunSettings(Scope& scope, const BoundBlock& scenario_block);
-  // Initial conditions (compiler/check/check_initial.cpp); E0421 for what the model cannot take.
-  void CheckInitialConditions();
-  void RefuseUntakenInitial(const InitialCondition& initial, const BoundBlock& bound);
-  // After every initial condition is read: held roots' positions and velocities.
-  void CheckHeldInitialConditions();
-  bool ReadCriterionArguments(Scope& scope, const ast::Expr& call, const CriterionSpec& spec,
-                              Criterion& criterion);
-  void PlaceByHPoint(Scope& scope, const BoundBlock& bound, const ast::Statement& h_statement,
-                     InitialCondition& initial);
-  void CheckOutputs();
-  bool ReadOutputFrame(Scope& scope, const ast::Statement& request, const OutputSpec& spec,
-                       OutputRequest& output);
-  // Contacts, output requests and criteria given twice (errors); belts and springs along the
-  // same path (warnings). compiler/check/duplicates.cpp.
-  void CheckDuplicates();
-  void ReportDuplicate(DiagnosticKind kind, SourceRange again, SourceRange first,
-                       std::string message, std::string help);
-  int ReadFilterClass(const ast::Expr& value);
-  bool ReadFilterStandard(const BoundBlock& bound);
-  void CheckTopology(Body& body, int body_index);
-  void RunLints();
-  // Loads and declares an import; returns the alias entity.
-  void Import(Scope& scope, const ast::Statement& statement);
-  // Declares the top-level planes and ellipsoids of a module into one instance's scope, fixed
-  // in `frame` (resolved in `frame_scope`; the ground when null).
-  void DeclareModuleSurfaces(Scope& instance, const ast::Block& module, const ast::Expr* frame,
-                             Scope& frame_scope);
   // The frame a plane or ellipsoid is fixed in: its own `on` clause, else its module
   // instance's frame, else the ground. Nullopt after reporting.
   std::optional<FrameRef> SurfaceFrame(const ast::Statement& statement, Scope& scope);
@@ -264,7 +212,7 @@ class Checker {
   lang::SourceManager& sources_;
   const CheckOptions& options_;
   // Bodies imported twice are checked twice; each problem is reported once.
-  class DedupingConsumer : public lang::DiagnosticConsumer {
+  class DedupingConsumer final : public lang::DiagnosticConsumer {
    public:
     explicit DedupingConsumer(lang::DiagnosticConsumer& next) : next_(next) {}
     void Consume(lang::Diagnostic diagnostic) override;
@@ -273,24 +221,19 @@ class Checker {
     lang::DiagnosticConsumer& next_;
     std::set<std::tuple<std::uint32_t, std::uint32_t, std::string>> seen_;
   };
+
+ private:
   DedupingConsumer dedupe_;
+
+ protected:
   lang::DiagnosticConsumer& diagnostics_;
   CheckedScenario scenario_;
 
   std::vector<std::unique_ptr<Scope>> scopes_;
   std::vector<std::unique_ptr<Parameter>> parameters_;
-  std::vector<std::unique_ptr<ast::File>> modules_;  // parsed imports, kept alive
-  std::map<std::string, Scope*> module_scopes_;      // by file path
-  std::vector<std::string> import_stack_;            // for cycle detection
-  std::map<FunctionId, PendingPolynomial> pending_polynomials_;
   std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
   Scope* scene_scope_ = nullptr;
-  // Evaluate's recursion: deep enough for the parser's longest expression (1,000 operations)
-  // inside a few hundred chained definitions, shallow enough for the stack under ASan.
-  static constexpr int kMaxEvaluationDepth = 2500;
-  int evaluation_depth_ = 0;
-  bool evaluation_too_deep_ = false;  // reported
-  bool checking_module_ = false;      // the checked file is a module: no lints about unused names
+  bool checking_module_ = false;  // the checked file is a module: no lints about unused names
   // `--set NAME=VALUE`, parsed; consumed by the scenario's `param` declarations.
   struct Override {
     std::string name;
@@ -324,6 +267,39 @@ class Checker {
   std::vector<Entity*> lintable_;  // functions, surfaces and parameters, for unused checks
   // (index into scenario_.references, index into parameters_): values filled in at the end.
   std::vector<std::pair<std::size_t, int>> parameter_references_;
+
+ private:
+  // --- values and functions: what only Evaluate and ExpectFunction use (check_values.cpp,
+  // check_functions.cpp).
+  // Evaluate's body and the pieces it calls. The recursion goes through Evaluate, EvaluateNested,
+  // EvaluatePath and ValueOf only; the others stay out of line (GCC and Clang would inline a
+  // function called once), so that each level of a deep value costs a small stack frame, under
+  // AddressSanitizer too.
+  std::optional<Value> EvaluateNested(Scope& scope, const ast::Expr& expr);
+  std::optional<Value> EvaluatePath(Scope& scope, const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> EvaluateNumber(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> EvaluateVector(Scope& scope, const ast::Expr& expr);
+  // A binary operation on two evaluated operands.
+  [[gnu::noinline]] std::optional<Value> Combine(const ast::Expr& expr, const Value& left,
+                                                 const Value& right);
+  [[gnu::noinline]] std::optional<Value> ReportEvaluationTooDeep(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> ReportNotAQuantity(const ast::Expr& expr);
+  [[gnu::noinline]] std::optional<Value> ReportCycle(const ast::Expr& expr, Parameter& parameter);
+  // The value of a parameter, evaluating it if it has not been yet.
+  std::optional<Value> ValueOf(Parameter& parameter);
+  // Whether a `--set` value has the shape and dimension of the declared one (else reported).
+  [[gnu::noinline]] bool OverrideFits(Parameter& parameter, const Value& value);
+  // Builds a function from constant(...), table(...) or polynomial(...) into `function`; when
+  // `expected` is given (argument, result) the signature must match. False after reporting.
+  bool BuildFunction(Scope& scope, const ast::Statement& statement, const ast::Expr& call,
+                     std::optional<std::pair<Dimension, Dimension>> expected, Function& function,
+                     int index);
+  // Evaluate's recursion: deep enough for the parser's longest expression (1,000 operations)
+  // inside a few hundred chained definitions, shallow enough for the stack under ASan.
+  static constexpr int kMaxEvaluationDepth = 2500;
+  int evaluation_depth_ = 0;
+  bool evaluation_too_deep_ = false;  // reported
+  std::map<FunctionId, PendingPolynomial> pending_polynomials_;
 };
 
 }  // namespace sled::compiler::internal

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -36,15 +36,15 @@ const Element* Earlier(std::map<Key, const Element*>& seen, Key key, const Eleme
 
 }  // namespace
 
-void Checker::ReportDuplicate(DiagnosticKind kind, SourceRange again, SourceRange first,
-                              std::string message, std::string help) {
+void DuplicateChecker::ReportDuplicate(DiagnosticKind kind, SourceRange again, SourceRange first,
+                                       std::string message, std::string help) {
   auto diagnostic = lang::MakeDiagnostic(kind, again, std::move(message), "declared again here");
   diagnostic.labels.push_back({first, "first here", false});
   diagnostic.help = std::move(help);
   diagnostics_.Consume(std::move(diagnostic));
 }
 
-void Checker::CheckDuplicates() {
+void DuplicateChecker::CheckDuplicates() {
   auto surface_name = [&](const SurfaceRef& s) {
     return s.kind == SurfaceRef::Kind::kPlane
                ? scenario_.planes[static_cast<std::size_t>(s.index)].name

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "compiler/check/context.h"
+#include "compiler/check/checkers.h"
 #include "compiler/check/initial_pose.h"
 
 namespace sled::compiler::internal {
@@ -73,7 +73,7 @@ std::string RoundDown(double value) {
 
 }  // namespace
 
-void Checker::RunLints() {
+void LintChecker::RunLints() {
   // Unused declarations of the checked file itself (library modules may offer more than a scene
   // uses, so a module checked on its own reports none).
   const lang::FileId main_file{1};
