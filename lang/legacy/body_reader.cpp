@@ -68,6 +68,8 @@ class BodyReader : public DeckFields {
       Invalid(card, 7, 12, fmt::format("WEIGHT is {}", segment.weight),
               "a weight is zero (a singular segment) or positive");
     }
+    CheckInertia(card, segment);
+    CheckSemiAxes(card, 31, segment.semi_axes, true);
     if (lpmi == 1) {
       const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number), {"(12X,3F6.0)"});
       segment.has_principal_axes = true;
@@ -77,6 +79,47 @@ class BodyReader : public DeckFields {
               "LPMI is 1 when a B.2.b card follows, else 0 or blank");
     }
     deck_.segments.push_back(std::move(segment));
+  }
+
+  // PHI: with a positive weight, three positive moments that a rigid body can have (each at
+  // most the sum of the other two); with zero weight (a singular segment) none is used.
+  void CheckInertia(const Card& card, SegmentCard& segment) {
+    const Vec3& phi = segment.inertia;
+    if (phi[0] < 0 || phi[1] < 0 || phi[2] < 0) {
+      Invalid(card, 13, 30,
+              fmt::format("a principal moment of inertia is negative ({}, {}, {})", phi[0], phi[1],
+                          phi[2]),
+              "moments of inertia are positive");
+      return;
+    }
+    if (segment.weight == 0) {
+      if (phi != Vec3{}) {
+        Ignored(card, 13, 30,
+                "PHI of a segment of zero weight: ATB makes the segment singular, without mass "
+                "or inertia",
+                "a singular segment has neither mass nor inertia; leave columns 13-30 blank");
+        segment.inertia = Vec3{};
+      }
+      return;
+    }
+    if (phi[0] == 0 || phi[1] == 0 || phi[2] == 0) {
+      Refuse(card, 13, 30,
+             fmt::format("a segment of weight {} with a zero moment of inertia", segment.weight),
+             "sled's singular segment has neither mass nor inertia; give all three moments, or "
+             "a zero weight");
+      return;
+    }
+    const double sum = phi[0] + phi[1] + phi[2];
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (phi[i] > sum - phi[i] + 1e-9 * sum) {
+        Invalid(card, 13, 30,
+                fmt::format("the principal moments ({}, {}, {}) break the triangle inequality: "
+                            "the {} moment exceeds the sum of the other two",
+                            phi[0], phi[1], phi[2], "xyz"[i]),
+                "no rigid body has these moments; check the columns and the order of the axes");
+        return;
+      }
+    }
   }
 
   void ReadJoint(int number, int segments) {
@@ -161,6 +204,14 @@ class BodyReader : public DeckFields {
     } else {
       spring.linear = c1;
     }
+    const double lowest = spring.linear != 0      ? spring.linear
+                          : spring.quadratic != 0 ? spring.quadratic
+                                                  : spring.cubic;
+    if (spring.function.number == 0 && lowest < 0) {
+      Invalid(card, first, first + 17,
+              fmt::format("the spring's lowest coefficient is negative ({})", lowest),
+              "a joint spring resists its angle: its lowest non-zero coefficient is positive");
+    }
     if (spring.energy_loss < 0 || spring.energy_loss > 1) {
       Invalid(card, first + 18, first + 23,
               fmt::format("the energy-dissipation coefficient is {}", spring.energy_loss),
@@ -218,6 +269,14 @@ class BodyReader : public DeckFields {
                "sled's `viscous`, `coulomb` and `restitution` apply to the whole joint; leave "
                "B.5.b and B.5.c blank");
         continue;
+      }
+      if (viscous < 0) {
+        Invalid(card, 1, 6, fmt::format("the viscous coefficient is {}", viscous),
+                "a viscous coefficient is zero or positive: it resists the motion");
+      }
+      if (coulomb < 0) {
+        Invalid(card, 7, 12, fmt::format("the Coulomb friction torque is {}", coulomb),
+                "a friction torque is zero or positive: it resists the motion");
       }
       if (k == 0) {
         joint.viscous = viscous;

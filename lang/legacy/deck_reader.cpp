@@ -6,6 +6,7 @@
 #include "lang/legacy/restraint_readers.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -14,6 +15,23 @@
 
 namespace sled::lang::legacy {
 namespace {
+
+// Whether the corners P1, P2, P3 span a plane: the edges P1-P2 and P1-P3 are not parallel (their
+// cross product is not negligible against their lengths).
+bool Spans(const std::array<Vec3, 3>& p) {
+  Vec3 a{}, b{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    a[i] = p[1][i] - p[0][i];
+    b[i] = p[2][i] - p[0][i];
+  }
+  const double cx = a[1] * b[2] - a[2] * b[1];
+  const double cy = a[2] * b[0] - a[0] * b[2];
+  const double cz = a[0] * b[1] - a[1] * b[0];
+  const double cross = std::sqrt(cx * cx + cy * cy + cz * cz);
+  const double lengths = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) *
+                         std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  return lengths > 0 && cross > 1e-9 * lengths;
+}
 
 constexpr int kMaxPlanes = 50;
 constexpr int kMaxBelts = 20;
@@ -107,6 +125,19 @@ class DeckReader : public DeckFields {
       Invalid(control, 9, 16, fmt::format("DT is {}", deck_.dt),
               "the output step must be positive");
     }
+    const double steps[] = {deck_.first_step, deck_.max_step, deck_.min_step};
+    static constexpr const char* kStepNames[] = {"H0", "HMAX", "HMIN"};
+    for (int i = 0; i < 3; ++i) {
+      if (steps[i] < 0) {
+        Invalid(control, 17 + 8 * i, 24 + 8 * i, fmt::format("{} is {}", kStepNames[i], steps[i]),
+                "an integration step is positive, or blank for sled's default");
+      }
+    }
+    if (deck_.min_step > 0 && deck_.max_step > 0 && deck_.min_step > deck_.max_step) {
+      Invalid(control, 25, 40,
+              fmt::format("HMIN ({}) is larger than HMAX ({})", deck_.min_step, deck_.max_step),
+              "the smallest integration step is at most the largest");
+    }
 
     const Card print = r_.Next("A.5", {"(36I2)"});
     for (int i = 0; i < 36; ++i) {
@@ -119,8 +150,16 @@ class DeckReader : public DeckFields {
                             "{} is outside 0 to 3",
                             r_.Where(print, 67, 68), windows));
     } else {
-      for (int i = 0; i < windows; ++i)
-        r_.Next(fmt::format("A.6 (window {})", i + 1), {"(A1,1X,A1,1X,A1,1X,F10.3,1X,F10.3)"});
+      for (int i = 0; i < windows; ++i) {
+        const Card window =
+            r_.Next(fmt::format("A.6 (window {})", i + 1), {"(A1,1X,A1,1X,A1,1X,F10.3,1X,F10.3)"});
+        if (window.line != 0) {
+          Approximated(window, 1, 27,
+                       "an output time window: ATB prints and writes only between TSTART and "
+                       "TEND (with the flags of window 1); sled writes every output step of the "
+                       "whole run");
+        }
+      }
     }
   }
 
@@ -272,9 +311,17 @@ class DeckReader : public DeckFields {
                              "whose MSEG is 0), their corners in {} (UNITL) in its axes",
                              deck_.units.length));
     }
+    Card last;
     for (int i = 0; i < 3; ++i) {
-      const Card corner = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1), {"(3F12.0)"});
-      plane.corners[static_cast<std::size_t>(i)] = Triple(corner, 1, 12, "a corner of the plane");
+      last = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1), {"(3F12.0)"});
+      plane.corners[static_cast<std::size_t>(i)] = Triple(last, 1, 12, "a corner of the plane");
+    }
+    if (!r_.truncated() && !Spans(plane.corners)) {
+      Invalid(last, 1, 36,
+              "P1, P2 and P3 lie on one line (or two of them are the same point), so they "
+              "span no plane",
+              "the plane is the parallelogram with edges P1-P2 and P1-P3; give three corners "
+              "that are not in line");
     }
     deck_.planes.push_back(std::move(plane));
   }
@@ -313,9 +360,17 @@ class DeckReader : public DeckFields {
     Vec3 exponents{};
     for (int i = 0; i < 3; ++i) {
       const int first = 61 + 4 * i;
-      exponents[static_cast<std::size_t>(i)] = r_.Real(card, first, first + 3, "an exponent");
-      if (exponents[static_cast<std::size_t>(i)] == 0) exponents[static_cast<std::size_t>(i)] = 2;
+      double& exponent = exponents[static_cast<std::size_t>(i)];
+      exponent = r_.Real(card, first, first + 3, "an exponent");
+      if (exponent == 0) exponent = 2;
+      if (exponent < 2) {
+        Invalid(card, first, first + 3, fmt::format("the exponent is {}", exponent),
+                "an ellipsoid's exponent is 2 (or blank), a hyper-ellipsoid's above 2");
+        exponent = 2;
+      }
     }
+    const int segments_now = static_cast<int>(deck_.segments.size());
+    CheckSemiAxes(card, 7, semi_axes, m >= 1 && m <= segments_now);
     if (exponents[0] != exponents[1] || exponents[1] != exponents[2]) {
       Refuse(card, 61, 72, "a hyper-ellipsoid with different exponents per axis",
              "sled's `degree` is one exponent for all three axes");
@@ -385,6 +440,19 @@ class DeckReader : public DeckFields {
     spring.damping = r_.Real(card, 61, 66, "B1, the damping coefficient");
     RefuseNonZero(card, 67, 72, r_.Real(card, 67, 72, "B2"), "B2 (a second damping coefficient)",
                   "sled's springs take one linear `damping`");
+    const double lowest = spring.linear != 0 ? spring.linear : spring.quadratic;
+    if (lowest < 0) {
+      Invalid(card, 49, 60, fmt::format("the spring's lowest coefficient is negative ({})", lowest),
+              "a spring pulls back when stretched: its lowest non-zero coefficient is positive");
+    }
+    if (spring.damping < 0) {
+      Invalid(card, 61, 66, fmt::format("B1 is {}", spring.damping),
+              "a damping coefficient is zero or positive: it resists the motion");
+    }
+    if (spring.free_length < 0) {
+      Invalid(card, 43, 48, fmt::format("D0 is {}", spring.free_length),
+              "a free length is zero (the initial length) or positive");
+    }
     if (spring.quadratic != 0) {
       Unverified(card, 55, 60,
                  fmt::format("A2 is taken as the coefficient of the squared elongation, in {}/{}^2",
@@ -662,6 +730,18 @@ class DeckReader : public DeckFields {
                  "columns 61-72 blank");
           break;
         }
+      }
+      const bool reference = std::find(references.begin(), references.end(),
+                                       static_cast<int>(s) + 1) != references.end();
+      if (!reference && (orientation.angles != Vec3{} || orientation.angular_velocity != Vec3{})) {
+        Refuse(card, 1, 60,
+               fmt::format("an initial orientation or angular velocity of segment {}, which "
+                           "hangs from joint {}",
+                           s + 1, s),
+               "sled sets a jointed segment's initial posture by its joint's angles, which the "
+               "converter does not compute from G.3.a; leave the card blank and give the "
+               "posture as `initial JOINT { angles = ... }` in the scenario");
+        orientation = OrientationCard{orientation.line};
       }
       deck_.initial_orientations.push_back(orientation);
     }

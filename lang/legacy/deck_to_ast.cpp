@@ -134,6 +134,7 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
   auto key = std::make_pair(function->number, static_cast<int>(use));
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
+    CheckSign(*function, ref, use);
     std::string name = NameOf(function->title, fmt::format("function_{}", function->number), taken_,
                               use == Use::kContact ? "force"
                               : use == Use::kJoint ? "torque"
@@ -142,6 +143,47 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
     uses_.push_back({function, use, name});
   }
   return Path(found->second);
+}
+
+// Where a function first pushes the wrong way for its use, as `sled check` judges a law (E0420):
+// a contact's or a belt's force is positive for every positive deflection or strain, a joint's
+// torque has the sign of its angle. Constants and tables by their values, a polynomial near zero
+// by its lowest non-zero coefficient.
+void DeckMapper::CheckSign(const FunctionCard& function, const Ref& ref, Use use) {
+  const bool both_ways = use == Use::kJoint;
+  std::string wrong;
+  switch (function.form) {
+    case FunctionCard::Form::kConstant:
+      if (function.constant < 0) wrong = fmt::format("its constant D2 is {}", function.constant);
+      break;
+    case FunctionCard::Form::kPolynomial:
+      for (const double c : function.coefficients) {
+        if (c == 0) continue;
+        if (c < 0) wrong = fmt::format("its lowest non-zero E.3 coefficient is {}", c);
+        break;
+      }
+      break;
+    case FunctionCard::Form::kTable:
+      for (const auto& [x, f] : function.points) {
+        if ((x > 0 && f < 0) || (both_ways && x < 0 && f > 0)) {
+          wrong = fmt::format("its E.4.b table gives {} at {}", f, x);
+          break;
+        }
+      }
+      break;
+  }
+  if (wrong.empty()) return;
+  const char* law = use == Use::kJoint ? "a joint's torque, which has the sign of the angle"
+                    : use == Use::kBelt
+                        ? "a belt's force, which is positive for every positive strain"
+                        : "a contact's force, which is positive for every positive deflection";
+  Diagnostic diagnostic = MakeDiagnostic(
+      DiagnosticKind::kDeckInvalidValue, function.where,
+      fmt::format("function {} (E.1, line {}) pushes the wrong way: {}; card {} uses it as {}",
+                  function.number, function.line, wrong, ref.card, law));
+  diagnostic.help = "give the function's values with a positive sign for a positive argument";
+  diagnostic.show_column_range = true;
+  diagnostics_.Consume(std::move(diagnostic));
 }
 
 // A friction coefficient from a constant function; zero for no function.
@@ -154,6 +196,15 @@ std::optional<double> DeckMapper::Friction(const Ref& ref) {
     Report(DiagnosticKind::kDeckNotExpressible, ref,
            fmt::format("card {}: friction function {} is not a constant", ref.card, ref.number),
            "sled's `friction` is one coefficient; use a constant function (D1 = 0)");
+    return std::nullopt;
+  }
+  if (function->constant < 0 || function->constant > kMaxFriction) {
+    Report(function->constant < 0 ? DiagnosticKind::kDeckInvalidValue
+                                  : DiagnosticKind::kDeckNotExpressible,
+           ref,
+           fmt::format("card {}: friction function {} is {} (E.2 D2, line {})", ref.card,
+                       ref.number, function->constant, function->line),
+           fmt::format("a friction coefficient is from 0 to {} in sled", kMaxFriction));
     return std::nullopt;
   }
   return function->constant;
