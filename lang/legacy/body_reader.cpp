@@ -225,20 +225,44 @@ class BodyReader : public DeckFields {
     return spring;
   }
 
+  static bool HasAnyTerm(const JointSpring& spring) {
+    return spring.function.number != 0 || spring.linear != 0 || spring.quadratic != 0 ||
+           spring.cubic != 0 || spring.energy_loss != 0 || spring.stop != 0;
+  }
+
   void ReadJointSprings(JointCard& joint) {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
     const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
     joint.flexure = Spring(card, 1);
     joint.twist = Spring(card, 37);
-    if (joint.type != JointType::kEuler && joint.twist.energy_loss != 0 &&
-        joint.twist.energy_loss != joint.flexure.energy_loss) {
+    if (joint.twist.energy_loss != 0 && joint.twist.energy_loss != joint.flexure.energy_loss) {
       Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
              "sled's joints take one `energy_loss`; give both springs the same coefficient");
+    }
+    if (joint.type == JointType::kEuler && joint.twist.stop != 0) {
+      Refuse(card, 61, 72,
+             fmt::format("a torsion stop angle ({} deg) of an Euler joint", joint.twist.stop),
+             "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
+             "61-72 blank");
+    }
+    if (joint.type == JointType::kSlip && HasAnyTerm(joint.twist)) {
+      Refuse(card, 37, 72, "a torsion spring of a slip joint",
+             "sled's slip joint has one characteristic, `flexure` (B.4.a columns 1-36); leave "
+             "columns 37-72 blank");
     }
     if (joint.type == JointType::kEuler) {
       const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j), {"(2(4F6.0,F12.0))", 8});
       joint.spin = Spring(spin, 1);
       joint.initial_angles = Triple(spin, 37, 6, "ANG, the initial joint angles");
+      if (joint.spin.stop != 0) {
+        Refuse(spin, 25, 36, fmt::format("a spin stop angle ({} deg)", joint.spin.stop),
+               "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
+               "25-36 blank");
+      }
+      if (joint.spin.energy_loss != 0 && joint.spin.energy_loss != joint.flexure.energy_loss) {
+        Refuse(spin, 19, 24, "a spin energy-dissipation coefficient unlike the flexure's",
+               "sled's joints take one `energy_loss`; give the springs the same coefficient");
+      }
     }
   }
 

@@ -158,3 +158,28 @@ TEST(LegacyPhysicalChecks, TwoPointsOnOneSegmentAreTwoColumnsAndCheckClean) {
 
 }  // namespace
 }  // namespace sled::lang::legacy
+
+namespace sled::lang::legacy {
+namespace {
+
+// An Euler joint's torsion and spin stops, which sled's one `stop` cannot hold, were left out
+// without a word: they are refused at their columns.
+TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
+  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
+  std::vector<std::string> lines =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  const std::size_t b4a = LineStarting(lines, "    2.    0.    0.    0.         60.");
+  lines[b4a - 1] += "         40.";
+  lines[b4a] = "   0.5    0.    0.    0.         30.   10.    0.    0.";
+  const Converted c = ConvertText(Join(lines));
+  EXPECT_TRUE(
+      c.Has(fmt::format("deck.ain:{}:61-72: error[E0507]: card B.4.a (joint 1), columns "
+                        "61-72: a torsion stop angle (40 deg) of an Euler joint",
+                        b4a)))
+      << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:25-36: error[E0507]: card B.4.b (joint 1)", b4a + 1)))
+      << c.All();
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
