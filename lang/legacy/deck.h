@@ -186,6 +186,9 @@ struct InitialCard {
   std::uint32_t line = 0;
   int segment = 0;
   Vec3 position{}, velocity{};
+  // G.2 IREF4: the vehicle (0-based, C card order) in whose axes `position` is given, from its
+  // C.2.a position; -1: the inertial frame.
+  int position_vehicle = -1;
 };
 
 struct OrientationCard {

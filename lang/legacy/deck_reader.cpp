@@ -2,6 +2,7 @@
 
 #include "lang/legacy/body_reader.h"
 #include "lang/legacy/deck_fields.h"
+#include "lang/legacy/initial_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
 
@@ -64,7 +65,7 @@ class DeckReader : public DeckFields {
     if (!r_.truncated()) ReadE();
     if (unknown_layout_) return std::move(deck_);  // F.5 cards of unknown length follow
     if (!r_.truncated()) ReadF();
-    if (!r_.truncated()) ReadG();
+    if (!r_.truncated()) ReadInitialConditions(*this, bags_);
     if (!r_.truncated()) ReadOutputRequests(*this, bags_);
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
       const Card card = r_.Next("after H.10", {"(A80)"});
@@ -667,97 +668,6 @@ class DeckReader : public DeckFields {
     if (nx != 0) {
       Refuse(extra, 1, 4, fmt::format("NX is {}", nx), "the meaning of NX is not documented");
     }
-  }
-
-  // --- G: initial conditions ---------------------------------------------------------------
-  void ReadG() {
-    const Card g1 = r_.Next("G.1.a", {"(30X,2I4,8X,I4)", -1, false, 35});
-    const int i1 = r_.Integer(g1, 31, 34, "I1");
-    const int j1 = r_.Integer(g1, 35, 38, "J1");
-    const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
-    if (i1 == 15) {
-      Refuse(g1, 31, 34, "I1 = 15 asks for an equilibrium solve",
-             "use a `settle { duration = ... }` block instead, and remove the EQUILB cards");
-    }
-    // I3 = 0: every reference segment moves with the primary vehicle and the G.2 and G.3
-    // velocities are not used (INPUT_LINEAR, INPUT_ORIENT); 1: the G cards give them; 2: the G
-    // cards where IREF2 is 0, which is every card sled converts (IREF2 is refused).
-    if (i3 < 0 || i3 > 2) {
-      Invalid(g1, 47, 50, fmt::format("I3 is {}", i3),
-              "I3 is 0 (velocities of the primary vehicle), 1 or 2 (velocities from the G cards)");
-    }
-    deck_.velocities_from_vehicle = i3 == 0;
-    deck_.velocity_source_line = g1.line;
-    if (j1 != 0) {
-      r_.Next("G.1.b (obsolete)", {"(I1)"});
-      Unverified(g1, 35, 38, "J1 is not zero: the obsolete G.1.b card is read and ignored");
-    }
-    // One G.2 card per reference segment: segment 1 and each J+1 whose JNT(J) = 0.
-    std::vector<int> references{1};
-    for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
-      if (deck_.joints[j].parent == 0) references.push_back(static_cast<int>(j) + 2);
-    }
-    for (const int segment : references) {
-      const Card card =
-          r_.Next(fmt::format("G.2 (reference segment {})", segment), {"(6F10.0,2I3)"});
-      InitialCard initial;
-      initial.line = card.line;
-      initial.segment = segment;
-      initial.position = Triple(card, 1, 10, "the position");
-      initial.velocity = GivenVelocity(card, "velocity");
-      if (r_.Integer(card, 61, 63, "IREF2") != 0) {
-        Refuse(card, 61, 63, "IREF2: the velocity of a vehicle",
-               "write the velocity on the card itself");
-      }
-      if (r_.Integer(card, 64, 66, "IREF4") != 0) {
-        Refuse(card, 64, 66, "IREF4: a position relative to a vehicle",
-               "write the position in the inertial frame");
-      }
-      deck_.initial_positions.push_back(initial);
-    }
-    for (std::size_t s = 0; s < deck_.segments.size(); ++s) {
-      const Card card = r_.Next(fmt::format("G.3.a (segment {})", s + 1), {"(6F10.0,4I3)"});
-      OrientationCard orientation;
-      orientation.line = card.line;
-      orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
-      orientation.angular_velocity = GivenVelocity(card, "angular velocity");
-      for (int i = 0; i < 4; ++i) {
-        const int first = 61 + 3 * i;
-        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");
-        if (value != 0) {
-          Refuse(card, first, first + 2, fmt::format("ID{} is {}", i + 1, value),
-                 "sled's initial orientations are yaw, pitch, roll in the ground frame; leave "
-                 "columns 61-72 blank");
-          break;
-        }
-      }
-      const bool reference = std::find(references.begin(), references.end(),
-                                       static_cast<int>(s) + 1) != references.end();
-      if (!reference && (orientation.angles != Vec3{} || orientation.angular_velocity != Vec3{})) {
-        Refuse(card, 1, 60,
-               fmt::format("an initial orientation or angular velocity of segment {}, which "
-                           "hangs from joint {}",
-                           s + 1, s),
-               "sled sets a jointed segment's initial posture by its joint's angles, which the "
-               "converter does not compute from G.3.a; leave the card blank and give the "
-               "posture as `initial JOINT { angles = ... }` in the scenario");
-        orientation = OrientationCard{orientation.line};
-      }
-      deck_.initial_orientations.push_back(orientation);
-    }
-  }
-
-  // A G.2 velocity or G.3.a angular velocity (columns 31-60), zero when I3 = 0 makes ATB ignore it.
-  Vec3 GivenVelocity(const Card& card, std::string_view what) {
-    const Vec3 velocity = Triple(card, 31, 10, fmt::format("the {}", what));
-    if (!deck_.velocities_from_vehicle || velocity == Vec3{}) return velocity;
-    Ignored(card, 31, 60,
-            fmt::format("with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's {} "
-                        "and ignores this one",
-                        what),
-            "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or leave "
-            "these columns blank");
-    return Vec3{};
   }
 
   bool approximate_airbags_;

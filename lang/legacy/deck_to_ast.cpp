@@ -32,6 +32,22 @@ Vec3 VehicleVelocity(const VehicleCard& vehicle) {
           vehicle.speed * SinDegrees(yaw) * CosDegrees(pitch), -vehicle.speed * SinDegrees(pitch)};
 }
 
+// A point given in a vehicle's axes (G.2 IREF4), in the ground frame at the start: the
+// vehicle's C.2.a position plus the point turned by its yaw, pitch and roll (z, then y, then x,
+// as VehicleVelocity turns x), which is ATB's LIN_DISP(ref) + DIR_COS(ref) applied to the point.
+Vec3 VehicleToGround(const VehicleCard& vehicle, const Vec3& p) {
+  const double cy = CosDegrees(vehicle.orientation[0]), sy = SinDegrees(vehicle.orientation[0]);
+  const double cp = CosDegrees(vehicle.orientation[1]), sp = SinDegrees(vehicle.orientation[1]);
+  const double cr = CosDegrees(vehicle.orientation[2]), sr = SinDegrees(vehicle.orientation[2]);
+  const double r[3][3] = {{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
+                          {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
+                          {-sp, cp * sr, cp * cr}};
+  Vec3 out{};
+  for (std::size_t i = 0; i < 3; ++i)
+    out[i] = vehicle.position[i] + r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2];
+  return out;
+}
+
 }  // namespace
 
 ast::File DeckMapper::Map() {
@@ -437,7 +453,19 @@ void DeckMapper::MapInitial(ast::Block& scenario) {
     const auto index = static_cast<std::size_t>(card.segment - 1);
     const std::string target = card.segment == 1 ? body_ : body_ + "." + segments_[index];
     ast::Statement initial = Declaration("initial", Path(target), CardComment("G.2", card.line));
-    Add(initial, Attribute("position", Vector(card.position, L)));
+    if (card.position_vehicle >= 0) {
+      const auto v = static_cast<std::size_t>(card.position_vehicle);
+      Add(initial,
+          Attribute("position", Vector(VehicleToGround(deck_.vehicles[v], card.position), L)));
+      initial.block->statements.back().leading_comments.push_back(
+          {fmt::format(" IREF4: ({}, {}, {}) {} in the axes of vehicle `{}`, from its C.2.a "
+                       "position and orientation",
+                       card.position[0], card.position[1], card.position[2], L, vehicles_[v]),
+           {},
+           false});
+    } else {
+      Add(initial, Attribute("position", Vector(card.position, L)));
+    }
     const bool from_vehicle = deck_.velocities_from_vehicle && !deck_.vehicles.empty();
     const Vec3 velocity = from_vehicle ? VehicleVelocity(deck_.vehicles.back()) : card.velocity;
     if (!IsZero(velocity)) {

@@ -96,6 +96,10 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "spring_force_at") return at(m.spring_function.at(i));
   if (field == "spring_point_first") return Of(m.spring_point_first.at(i));
   if (field == "output_point") return Of(m.output_point.at(i));
+  if (field == "root_position") {  // a reference segment's: its free joint's first coordinates
+    const auto q = static_cast<std::size_t>(m.q_address.at(i));
+    return {m.q0.at(q), m.q0.at(q + 1), m.q0.at(q + 2)};
+  }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};

@@ -183,3 +183,24 @@ TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
 
 }  // namespace
 }  // namespace sled::lang::legacy
+
+namespace sled::lang::legacy {
+namespace {
+
+// G.2's IREF4 names a frame with prescribed motion (ATB stops otherwise, STOP 223).
+TEST(LegacyPhysicalChecks, Iref4OfABodySegmentIsRefusedAtG2) {
+  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
+  std::vector<std::string> lines =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  const std::size_t g2 = LineStarting(lines, "       0.5        0.      -0.8");
+  lines[g2 - 1].replace(63, 3, "  1");
+  const Converted c = ConvertText(Join(lines));
+  EXPECT_TRUE(
+      c.Has(fmt::format("deck.ain:{}:64-66: error[E0512]: card G.2 (reference segment 3), "
+                        "columns 64-66: IREF4 is 1, which has no prescribed motion",
+                        g2)))
+      << c.All();
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
