@@ -34,23 +34,50 @@ class BodyReader : public DeckFields {
     for (int j = 0; j < joints && j + 1 < segments; ++j) ReadJoint(j + 1, segments);
     for (auto& joint : deck_.joints) ReadJointSprings(joint);
     for (auto& joint : deck_.joints) ReadJointDamping(joint);
-    for (int i = 0; i < segments; ++i) {
-      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
-      for (int f = 0; f < 12; ++f) {
-        const int first = 6 * f + 1;
-        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
-        if (value != 0) {
-          Refuse(b6, first, first + 5,
-                 fmt::format("a per-segment convergence test of the integrator is {}", value),
-                 "sled's integrators take one `tolerance` for the whole scene; leave B.6 blank "
-                 "and set `integrator { tolerance = ... }` in the scenario");
-          break;
-        }
-      }
-    }
+    ReadConvergenceTests(segments);
   }
 
  private:
+  // B.6: per segment, for its angular and linear velocity and acceleration, a magnitude test,
+  // an absolute and a relative error. sled's integrator controls the relative error of every
+  // state with one `tolerance`: the smallest relative error given becomes it (at least as strict
+  // as each test), and the rest is approximated (W0504 at the first card that sets any).
+  void ReadConvergenceTests(int segments) {
+    bool warned = false;
+    for (int i = 0; i < segments; ++i) {
+      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
+      bool any = false;
+      for (int f = 0; f < 12; ++f) {
+        const int first = 6 * f + 1;
+        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
+        if (value < 0) {
+          Invalid(b6, first, first + 5, fmt::format("a convergence test of {}", value),
+                  "a magnitude test or an error is zero (none) or positive");
+        }
+        any = any || value != 0;
+        if (f % 3 == 2 && value > 0 && (deck_.tolerance == 0 || value < deck_.tolerance))
+          deck_.tolerance = value;
+      }
+      if (any && !warned) {
+        warned = true;
+        Approximated(b6, 1, 72,
+                     "ATB tests each segment's angular and linear velocity and acceleration "
+                     "against its own magnitude test, absolute and relative error; sled's "
+                     "integrator controls the relative error of every state with one "
+                     "`tolerance`, the smallest relative error of the B.6 cards (at least as "
+                     "strict as each), and does not use the magnitude tests and absolute errors");
+      }
+    }
+    if (deck_.tolerance > kMaxTolerance) deck_.tolerance = 0;  // sled's default is stricter
+    if (deck_.tolerance != 0 && deck_.tolerance < kMinTolerance) {
+      deck_.tolerance = kMinTolerance;  // as strict as double precision can meet (E0419)
+    }
+  }
+
+  // The range of sled's `tolerance` (docs/language.md, integrator).
+  static constexpr double kMinTolerance = 2.3e-14;
+  static constexpr double kMaxTolerance = 0.1;
+
   void ReadSegment(int number) {
     const Card card = r_.Next(fmt::format("B.2.a (segment {})", number), {"(A4,2X,10F6.0,I4)"});
     SegmentCard segment;

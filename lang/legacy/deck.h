@@ -226,6 +226,8 @@ struct Deck {
   std::uint32_t control_line = 0;
   int steps = 0;
   double dt = 0, first_step = 0, max_step = 0, min_step = 0;
+  // B.6: the smallest relative error its convergence tests give, sled's `tolerance`; 0: none.
+  double tolerance = 0;
   std::vector<int> print_controls;
   std::string body_title;
   std::uint32_t body_line = 0;

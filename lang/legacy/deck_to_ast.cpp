@@ -237,6 +237,11 @@ void DeckMapper::MapRunSettings(ast::Block& body) {
   if (deck_.first_step > 0) Add(integrator, Attribute("initial_step", Number(deck_.first_step, T)));
   if (deck_.max_step > 0) Add(integrator, Attribute("max_step", Number(deck_.max_step, T)));
   if (deck_.min_step > 0) Add(integrator, Attribute("min_step", Number(deck_.min_step, T)));
+  if (deck_.tolerance > 0) {
+    Add(integrator, Attribute("tolerance", Number(deck_.tolerance)));
+    integrator.block->statements.back().leading_comments.push_back(
+        {" cards B.6: the smallest relative error of the convergence tests", {}, false});
+  }
   body.statements.push_back(std::move(integrator));
 }
 

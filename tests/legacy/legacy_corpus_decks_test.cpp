@@ -68,6 +68,7 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "initial_step") return {m.initial_step};
   if (field == "max_step") return {m.max_step};
   if (field == "min_step") return {m.min_step};
+  if (field == "relative_tolerance") return {m.relative_tolerance};
   if (field == "segment_mass") return {m.segment_mass.at(i)};
   if (field == "segment_inertia") return Diagonal(m.segment_inertia.at(i));
   if (field == "joint_point_in_parent") return Of(m.joint_point_in_parent.at(i));
