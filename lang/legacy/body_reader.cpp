@@ -293,6 +293,11 @@ class BodyReader : public DeckFields {
     }
   }
 
+  // B.5.a (B.5.b and B.5.c for the second and third axes of an Euler joint, as INPUT_JOINTS
+  // reads VISC(., 3J-2..3J)): viscous and Coulomb terms, the rate of full Coulomb friction
+  // (VISC(3), which ATB requires above zero for every joint with a proximal segment: STOP 294),
+  // torque bounds and restitution. sled's `viscous` and `coulomb` act alike on every axis, so an
+  // Euler joint converts when its three cards agree.
   void ReadJointDamping(JointCard& joint) {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
     const int cards = joint.type == JointType::kEuler ? 3 : 1;
@@ -309,17 +314,20 @@ class BodyReader : public DeckFields {
       RefuseNonZero(card, 49, 54, r_.Real(card, 49, 54, "the minimum angular velocity"),
                     "the minimum angular velocity", "sled's joint friction has no such threshold");
       const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
-      if (coulomb != 0 && full != 0) {
-        Refuse(card, 13, 18,
-               fmt::format("the angular velocity of full Coulomb friction is {}", full),
-               "sled's Coulomb joint friction has no ramp velocity; set the Coulomb torque to "
-               "zero or convert the friction by hand");
-      }
-      if (k > 0 && (viscous != 0 || coulomb != 0 || restitution != 0)) {
-        Refuse(card, 1, 60, "per-axis damping of an Euler joint",
-               "sled's `viscous`, `coulomb` and `restitution` apply to the whole joint; leave "
-               "B.5.b and B.5.c blank");
-        continue;
+      if (joint.parent != 0 && full <= 0 && card.line != 0) {
+        Invalid(card, 13, 18,
+                fmt::format("the angular velocity of full Coulomb friction is {}", full),
+                fmt::format("ATB requires it above zero for every joint (STOP 294), in deg/{} "
+                            "(even without Coulomb friction)",
+                            deck_.units.time));
+      } else if (coulomb != 0 && full > 0 && k == 0) {
+        Approximated(
+            card, 7, 18,
+            fmt::format("Coulomb friction of {} {}*{} reaching its full torque at {} "
+                        "deg/{} (ATB's ramp; its law is not in the reference); sled's "
+                        "`coulomb` rises as tanh(rate / 0.01 rad/s): 76 % of the torque "
+                        "at 0.573 deg/s, 99.9 % at 2.2 deg/s, whatever the deck's rate",
+                        coulomb, deck_.units.force, deck_.units.length, full, deck_.units.time));
       }
       if (viscous < 0) {
         Invalid(card, 1, 6, fmt::format("the viscous coefficient is {}", viscous),
@@ -329,15 +337,21 @@ class BodyReader : public DeckFields {
         Invalid(card, 7, 12, fmt::format("the Coulomb friction torque is {}", coulomb),
                 "a friction torque is zero or positive: it resists the motion");
       }
-      if (k == 0) {
-        joint.viscous = viscous;
-        joint.coulomb = coulomb;
-        joint.restitution = restitution;
-      }
       if (restitution < 0 || restitution > 1) {
         Invalid(card, 55, 60, fmt::format("the coefficient of restitution is {}", restitution),
                 "a coefficient of restitution is from 0 to 1");
       }
+      if (k == 0) {
+        joint.viscous = viscous;
+        joint.coulomb = coulomb;
+        joint.restitution = restitution;
+      } else if (viscous != joint.viscous || coulomb != joint.coulomb ||
+                 restitution != joint.restitution || (coulomb != 0 && full != joint.coulomb_rate)) {
+        Refuse(card, 1, 60, "damping of this Euler joint axis unlike the first axis's (B.5.a)",
+               "sled's `viscous`, `coulomb` and `restitution` act alike on the three axes of an "
+               "Euler joint; give B.5.b and B.5.c the values of B.5.a");
+      }
+      if (k == 0) joint.coulomb_rate = full;
     }
   }
 };

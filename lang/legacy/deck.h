@@ -60,6 +60,7 @@ struct JointCard {
   JointSpring flexure, twist, spin;  // spin for Euler joints only (B.4.b)
   Vec3 initial_angles{};             // Euler joints: ANG on B.4.b
   double viscous = 0, coulomb = 0, restitution = 0;
+  double coulomb_rate = 0;  // B.5.a VISC(3): the rate of full Coulomb friction
 };
 
 struct VehicleCard {

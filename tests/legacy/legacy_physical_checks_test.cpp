@@ -204,3 +204,45 @@ TEST(LegacyPhysicalChecks, Iref4OfABodySegmentIsRefusedAtG2) {
 
 }  // namespace
 }  // namespace sled::lang::legacy
+
+namespace sled::lang::legacy {
+namespace {
+
+// B.5.a's VISC(3), the rate of full Coulomb friction: ATB stops when it is not above zero for a
+// joint with a proximal segment (STOP 294); with Coulomb friction it converts, approximated.
+TEST(LegacyPhysicalChecks, FullCoulombRateIsRequiredAndItsRampApproximated) {
+  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
+  const std::vector<std::string> deck =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain"));
+  std::vector<std::string> lines = deck;
+  const std::size_t b5 = LineStarting(lines, "    2.    0.    1.");
+  lines[b5 - 1].replace(12, 6, "    0.");
+  Converted c = ConvertText(Join(lines));
+  EXPECT_TRUE(
+      c.Has(fmt::format("deck.ain:{}:13-18: error[E0512]: card B.5.a (joint 1), columns "
+                        "13-18: the angular velocity of full Coulomb friction is 0",
+                        b5)))
+      << c.All();
+  lines = deck;
+  lines[b5 - 1].replace(6, 6, "   20.");
+  c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5))) << c.All();
+  EXPECT_NE(c.text.find("coulomb = 20 lbf*in"), std::string::npos) << c.text;
+}
+
+// An Euler joint's B.5.b and B.5.c damp its second and third axes (INPUT_JOINTS): sled's one
+// `viscous` holds them only when they equal B.5.a's.
+TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
+  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
+  std::vector<std::string> lines =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  const std::size_t b5a = LineStarting(lines, "  0.05    0.    1.");
+  lines[b5a].replace(0, 6, "   0.1");
+  const Converted c = ConvertText(Join(lines));
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:1-60: error[E0507]: card B.5.b (joint 1)", b5a + 1)))
+      << c.All();
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
