@@ -144,6 +144,25 @@ class DeckReader : public DeckFields {
     for (int i = 0; i < 36; ++i) {
       deck_.print_controls.push_back(r_.Integer(print, 2 * i + 1, 2 * i + 2, "NPRT"));
     }
+    // NPRT(4) < 0: ATB reads the A cards and then a tape 8 of an earlier run, simulating nothing.
+    if (deck_.print_controls[3] < 0) {
+      Refuse(print, 7, 8,
+             fmt::format("NPRT(4) is {}: a post-processing run of an earlier run's "
+                         "tape 8, which simulates nothing",
+                         deck_.print_controls[3]),
+             "sled simulates the deck's scene; set NPRT(4) to 0 to convert it");
+    }
+    // The other entries choose ATB's printed report and files (VIEW, tape 8), which sled writes
+    // its own way: they are read and left out, with one warning.
+    bool printing = false;
+    for (int i = 0; i < 36; ++i)
+      printing = printing || (i != 33 && deck_.print_controls[static_cast<std::size_t>(i)] > 0);
+    if (printing) {
+      Ignored(print, 1, 72,
+              "the print and file controls (NPRT) choose ATB's printed report, VIEW file and "
+              "tape 8; sled writes its own run folder (docs/outputs.md), so they are left out",
+              "nothing to do; the scene does not depend on them");
+    }
     const int windows = deck_.print_controls[33];
     if (windows < 0 || windows > 3) {
       r_.Report(DiagnosticKind::kDeckCountOutOfRange, print, 67, 68,

@@ -246,3 +246,34 @@ TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
 
 }  // namespace
 }  // namespace sled::lang::legacy
+
+namespace sled::lang::legacy {
+namespace {
+
+// A.5: NPRT(4) < 0 asks ATB for a post-processing run that simulates nothing (refused); the
+// other print controls are left out with one warning at the card.
+TEST(LegacySilentlyDropped, PrintControlsAreWarnedAndAPostProcessingRunRefused) {
+  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
+  const std::vector<std::string> deck =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain"));
+  const std::size_t a5 = LineStarting(deck, "   0  20") + 1;
+  std::vector<std::string> lines = deck;
+  lines[a5 - 1] = " 1";
+  Converted c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_TRUE(
+      c.Has(fmt::format("deck.ain:{}:1-2: warning[W0503]: card A.5, columns 1-72: the "
+                        "print and file controls",
+                        a5)))
+      << c.All();
+  lines[a5 - 1] = "      -1";
+  c = ConvertText(Join(lines));
+  EXPECT_TRUE(
+      c.Has(fmt::format("deck.ain:{}:7-8: error[E0507]: card A.5, columns 7-8: NPRT(4) "
+                        "is -1",
+                        a5)))
+      << c.All();
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
