@@ -175,6 +175,8 @@ class AirbagReader {
       require(airbag.semi_axes[static_cast<std::size_t>(i)] > 0, shape, 1 + 12 * i,
               "a semi-axis of the bag is not positive", "give the full bag's three semi-axes");
     }
+    require(airbag.deploy_at >= 0, d, 13, "CYTD is negative",
+            "the cylinder starts to empty at CYTD, a time from 0 on");
     require(airbag.ambient_pressure > 0, d, 25, "CYPA is not positive",
             "give the ambient pressure in the deck's force and length units");
     require(cylinder.supply_pressure + airbag.ambient_pressure > 0, d, 37,

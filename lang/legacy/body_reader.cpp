@@ -34,23 +34,50 @@ class BodyReader : public DeckFields {
     for (int j = 0; j < joints && j + 1 < segments; ++j) ReadJoint(j + 1, segments);
     for (auto& joint : deck_.joints) ReadJointSprings(joint);
     for (auto& joint : deck_.joints) ReadJointDamping(joint);
-    for (int i = 0; i < segments; ++i) {
-      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
-      for (int f = 0; f < 12; ++f) {
-        const int first = 6 * f + 1;
-        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
-        if (value != 0) {
-          Refuse(b6, first, first + 5,
-                 fmt::format("a per-segment convergence test of the integrator is {}", value),
-                 "sled's integrators take one `tolerance` for the whole scene; leave B.6 blank "
-                 "and set `integrator { tolerance = ... }` in the scenario");
-          break;
-        }
-      }
-    }
+    ReadConvergenceTests(segments);
   }
 
  private:
+  // B.6: per segment, for its angular and linear velocity and acceleration, a magnitude test,
+  // an absolute and a relative error. sled's integrator controls the relative error of every
+  // state with one `tolerance`: the smallest relative error given becomes it (at least as strict
+  // as each test), and the rest is approximated (W0504 at the first card that sets any).
+  void ReadConvergenceTests(int segments) {
+    bool warned = false;
+    for (int i = 0; i < segments; ++i) {
+      const Card b6 = r_.Next(fmt::format("B.6 (segment {})", i + 1), {"(12F6.0)"});
+      bool any = false;
+      for (int f = 0; f < 12; ++f) {
+        const int first = 6 * f + 1;
+        const double value = r_.Real(b6, first, first + 5, "an integrator convergence test");
+        if (value < 0) {
+          Invalid(b6, first, first + 5, fmt::format("a convergence test of {}", value),
+                  "a magnitude test or an error is zero (none) or positive");
+        }
+        any = any || value != 0;
+        if (f % 3 == 2 && value > 0 && (deck_.tolerance == 0 || value < deck_.tolerance))
+          deck_.tolerance = value;
+      }
+      if (any && !warned) {
+        warned = true;
+        Approximated(b6, 1, 72,
+                     "ATB tests each segment's angular and linear velocity and acceleration "
+                     "against its own magnitude test, absolute and relative error; sled's "
+                     "integrator controls the relative error of every state with one "
+                     "`tolerance`, the smallest relative error of the B.6 cards (at least as "
+                     "strict as each), and does not use the magnitude tests and absolute errors");
+      }
+    }
+    if (deck_.tolerance > kMaxTolerance) deck_.tolerance = 0;  // sled's default is stricter
+    if (deck_.tolerance != 0 && deck_.tolerance < kMinTolerance) {
+      deck_.tolerance = kMinTolerance;  // as strict as double precision can meet (E0419)
+    }
+  }
+
+  // The range of sled's `tolerance` (docs/language.md, integrator).
+  static constexpr double kMinTolerance = 2.3e-14;
+  static constexpr double kMaxTolerance = 0.1;
+
   void ReadSegment(int number) {
     const Card card = r_.Next(fmt::format("B.2.a (segment {})", number), {"(A4,2X,10F6.0,I4)"});
     SegmentCard segment;
@@ -68,6 +95,8 @@ class BodyReader : public DeckFields {
       Invalid(card, 7, 12, fmt::format("WEIGHT is {}", segment.weight),
               "a weight is zero (a singular segment) or positive");
     }
+    CheckInertia(card, segment);
+    CheckSemiAxes(card, 31, segment.semi_axes, true);
     if (lpmi == 1) {
       const Card axes = r_.Next(fmt::format("B.2.b (segment {})", number), {"(12X,3F6.0)"});
       segment.has_principal_axes = true;
@@ -77,6 +106,47 @@ class BodyReader : public DeckFields {
               "LPMI is 1 when a B.2.b card follows, else 0 or blank");
     }
     deck_.segments.push_back(std::move(segment));
+  }
+
+  // PHI: with a positive weight, three positive moments that a rigid body can have (each at
+  // most the sum of the other two); with zero weight (a singular segment) none is used.
+  void CheckInertia(const Card& card, SegmentCard& segment) {
+    const Vec3& phi = segment.inertia;
+    if (phi[0] < 0 || phi[1] < 0 || phi[2] < 0) {
+      Invalid(card, 13, 30,
+              fmt::format("a principal moment of inertia is negative ({}, {}, {})", phi[0], phi[1],
+                          phi[2]),
+              "moments of inertia are positive");
+      return;
+    }
+    if (segment.weight == 0) {
+      if (phi != Vec3{}) {
+        Ignored(card, 13, 30,
+                "PHI of a segment of zero weight: ATB makes the segment singular, without mass "
+                "or inertia",
+                "a singular segment has neither mass nor inertia; leave columns 13-30 blank");
+        segment.inertia = Vec3{};
+      }
+      return;
+    }
+    if (phi[0] == 0 || phi[1] == 0 || phi[2] == 0) {
+      Refuse(card, 13, 30,
+             fmt::format("a segment of weight {} with a zero moment of inertia", segment.weight),
+             "sled's singular segment has neither mass nor inertia; give all three moments, or "
+             "a zero weight");
+      return;
+    }
+    const double sum = phi[0] + phi[1] + phi[2];
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (phi[i] > sum - phi[i] + 1e-9 * sum) {
+        Invalid(card, 13, 30,
+                fmt::format("the principal moments ({}, {}, {}) break the triangle inequality: "
+                            "the {} moment exceeds the sum of the other two",
+                            phi[0], phi[1], phi[2], "xyz"[i]),
+                "no rigid body has these moments; check the columns and the order of the axes");
+        return;
+      }
+    }
   }
 
   void ReadJoint(int number, int segments) {
@@ -161,6 +231,14 @@ class BodyReader : public DeckFields {
     } else {
       spring.linear = c1;
     }
+    const double lowest = spring.linear != 0      ? spring.linear
+                          : spring.quadratic != 0 ? spring.quadratic
+                                                  : spring.cubic;
+    if (spring.function.number == 0 && lowest < 0) {
+      Invalid(card, first, first + 17,
+              fmt::format("the spring's lowest coefficient is negative ({})", lowest),
+              "a joint spring resists its angle: its lowest non-zero coefficient is positive");
+    }
     if (spring.energy_loss < 0 || spring.energy_loss > 1) {
       Invalid(card, first + 18, first + 23,
               fmt::format("the energy-dissipation coefficient is {}", spring.energy_loss),
@@ -174,23 +252,52 @@ class BodyReader : public DeckFields {
     return spring;
   }
 
+  static bool HasAnyTerm(const JointSpring& spring) {
+    return spring.function.number != 0 || spring.linear != 0 || spring.quadratic != 0 ||
+           spring.cubic != 0 || spring.energy_loss != 0 || spring.stop != 0;
+  }
+
   void ReadJointSprings(JointCard& joint) {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
     const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
     joint.flexure = Spring(card, 1);
     joint.twist = Spring(card, 37);
-    if (joint.type != JointType::kEuler && joint.twist.energy_loss != 0 &&
-        joint.twist.energy_loss != joint.flexure.energy_loss) {
+    if (joint.twist.energy_loss != 0 && joint.twist.energy_loss != joint.flexure.energy_loss) {
       Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
              "sled's joints take one `energy_loss`; give both springs the same coefficient");
+    }
+    if (joint.type == JointType::kEuler && joint.twist.stop != 0) {
+      Refuse(card, 61, 72,
+             fmt::format("a torsion stop angle ({} deg) of an Euler joint", joint.twist.stop),
+             "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
+             "61-72 blank");
+    }
+    if (joint.type == JointType::kSlip && HasAnyTerm(joint.twist)) {
+      Refuse(card, 37, 72, "a torsion spring of a slip joint",
+             "sled's slip joint has one characteristic, `flexure` (B.4.a columns 1-36); leave "
+             "columns 37-72 blank");
     }
     if (joint.type == JointType::kEuler) {
       const Card spin = r_.Next(fmt::format("B.4.b (joint {})", j), {"(2(4F6.0,F12.0))", 8});
       joint.spin = Spring(spin, 1);
       joint.initial_angles = Triple(spin, 37, 6, "ANG, the initial joint angles");
+      if (joint.spin.stop != 0) {
+        Refuse(spin, 25, 36, fmt::format("a spin stop angle ({} deg)", joint.spin.stop),
+               "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
+               "25-36 blank");
+      }
+      if (joint.spin.energy_loss != 0 && joint.spin.energy_loss != joint.flexure.energy_loss) {
+        Refuse(spin, 19, 24, "a spin energy-dissipation coefficient unlike the flexure's",
+               "sled's joints take one `energy_loss`; give the springs the same coefficient");
+      }
     }
   }
 
+  // B.5.a (B.5.b and B.5.c for the second and third axes of an Euler joint, as INPUT_JOINTS
+  // reads VISC(., 3J-2..3J)): viscous and Coulomb terms, the rate of full Coulomb friction
+  // (VISC(3), which ATB requires above zero for every joint with a proximal segment: STOP 294),
+  // torque bounds and restitution. sled's `viscous` and `coulomb` act alike on every axis, so an
+  // Euler joint converts when its three cards agree.
   void ReadJointDamping(JointCard& joint) {
     const std::size_t j = static_cast<std::size_t>(&joint - deck_.joints.data()) + 1;
     const int cards = joint.type == JointType::kEuler ? 3 : 1;
@@ -207,27 +314,44 @@ class BodyReader : public DeckFields {
       RefuseNonZero(card, 49, 54, r_.Real(card, 49, 54, "the minimum angular velocity"),
                     "the minimum angular velocity", "sled's joint friction has no such threshold");
       const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
-      if (coulomb != 0 && full != 0) {
-        Refuse(card, 13, 18,
-               fmt::format("the angular velocity of full Coulomb friction is {}", full),
-               "sled's Coulomb joint friction has no ramp velocity; set the Coulomb torque to "
-               "zero or convert the friction by hand");
+      if (joint.parent != 0 && full <= 0 && card.line != 0) {
+        Invalid(card, 13, 18,
+                fmt::format("the angular velocity of full Coulomb friction is {}", full),
+                fmt::format("ATB requires it above zero for every joint (STOP 294), in deg/{} "
+                            "(even without Coulomb friction)",
+                            deck_.units.time));
+      } else if (coulomb != 0 && full > 0 && k == 0) {
+        Approximated(
+            card, 7, 18,
+            fmt::format("Coulomb friction of {} {}*{} reaching its full torque at {} "
+                        "deg/{} (ATB's ramp; its law is not in the reference); sled's "
+                        "`coulomb` rises as tanh(rate / 0.01 rad/s): 76 % of the torque "
+                        "at 0.573 deg/s, 99.9 % at 2.2 deg/s, whatever the deck's rate",
+                        coulomb, deck_.units.force, deck_.units.length, full, deck_.units.time));
       }
-      if (k > 0 && (viscous != 0 || coulomb != 0 || restitution != 0)) {
-        Refuse(card, 1, 60, "per-axis damping of an Euler joint",
-               "sled's `viscous`, `coulomb` and `restitution` apply to the whole joint; leave "
-               "B.5.b and B.5.c blank");
-        continue;
+      if (viscous < 0) {
+        Invalid(card, 1, 6, fmt::format("the viscous coefficient is {}", viscous),
+                "a viscous coefficient is zero or positive: it resists the motion");
       }
-      if (k == 0) {
-        joint.viscous = viscous;
-        joint.coulomb = coulomb;
-        joint.restitution = restitution;
+      if (coulomb < 0) {
+        Invalid(card, 7, 12, fmt::format("the Coulomb friction torque is {}", coulomb),
+                "a friction torque is zero or positive: it resists the motion");
       }
       if (restitution < 0 || restitution > 1) {
         Invalid(card, 55, 60, fmt::format("the coefficient of restitution is {}", restitution),
                 "a coefficient of restitution is from 0 to 1");
       }
+      if (k == 0) {
+        joint.viscous = viscous;
+        joint.coulomb = coulomb;
+        joint.restitution = restitution;
+      } else if (viscous != joint.viscous || coulomb != joint.coulomb ||
+                 restitution != joint.restitution || (coulomb != 0 && full != joint.coulomb_rate)) {
+        Refuse(card, 1, 60, "damping of this Euler joint axis unlike the first axis's (B.5.a)",
+               "sled's `viscous`, `coulomb` and `restitution` act alike on the three axes of an "
+               "Euler joint; give B.5.b and B.5.c the values of B.5.a");
+      }
+      if (k == 0) joint.coulomb_rate = full;
     }
   }
 };

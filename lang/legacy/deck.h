@@ -60,6 +60,7 @@ struct JointCard {
   JointSpring flexure, twist, spin;  // spin for Euler joints only (B.4.b)
   Vec3 initial_angles{};             // Euler joints: ANG on B.4.b
   double viscous = 0, coulomb = 0, restitution = 0;
+  double coulomb_rate = 0;  // B.5.a VISC(3): the rate of full Coulomb friction
 };
 
 struct VehicleCard {
@@ -186,6 +187,9 @@ struct InitialCard {
   std::uint32_t line = 0;
   int segment = 0;
   Vec3 position{}, velocity{};
+  // G.2 IREF4: the vehicle (0-based, C card order) in whose axes `position` is given, from its
+  // C.2.a position; -1: the inertial frame.
+  int position_vehicle = -1;
 };
 
 struct OrientationCard {
@@ -223,6 +227,8 @@ struct Deck {
   std::uint32_t control_line = 0;
   int steps = 0;
   double dt = 0, first_step = 0, max_step = 0, min_step = 0;
+  // B.6: the smallest relative error its convergence tests give, sled's `tolerance`; 0: none.
+  double tolerance = 0;
   std::vector<int> print_controls;
   std::string body_title;
   std::uint32_t body_line = 0;

@@ -84,6 +84,18 @@ std::optional<DeckFrame> DeckFields::FrameOf(const Card& card, int first, int la
   return std::nullopt;
 }
 
+void DeckFields::CheckSemiAxes(const Card& card, int first, const Vec3& semi_axes,
+                               bool may_be_absent) {
+  if (may_be_absent && semi_axes == Vec3{}) return;
+  if (semi_axes[0] > 0 && semi_axes[1] > 0 && semi_axes[2] > 0) return;
+  Invalid(card, first, first + 17,
+          fmt::format("the semi-axes ({}, {}, {}) are not all positive", semi_axes[0], semi_axes[1],
+                      semi_axes[2]),
+          may_be_absent ? "an ellipsoid's three semi-axes are positive; all three blank give "
+                          "the segment no contact ellipsoid"
+                        : "an ellipsoid's three semi-axes are positive");
+}
+
 void DeckFields::ReportField(DiagnosticKind kind, const Card& card, int first, int last,
                              std::string_view what, std::string help) {
   r_.Report(kind, card, first, last,

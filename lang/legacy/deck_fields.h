@@ -43,6 +43,10 @@ class DeckFields {
   std::optional<DeckFrame> FrameOf(const Card& card, int first, int last, int number, int bags,
                                    std::string_view what);
 
+  // Three semi-axes of 6 columns from `first`: each positive, or (when `may_be_absent`, a
+  // segment without a contact ellipsoid) all three zero; else E0512.
+  void CheckSemiAxes(const Card& card, int first, const Vec3& semi_axes, bool may_be_absent);
+
   void Refuse(const Card& card, int first, int last, std::string_view what, std::string help);
   void RefuseNonZero(const Card& card, int first, int last, double value, std::string_view what,
                      std::string help);

@@ -43,6 +43,10 @@ class DeckMapper {
   const FunctionCard* Function(const Ref& ref);
   // The name under which a function is declared for one kind of use (its units depend on it).
   std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use);
+  // E0512 at the function's E.1 card when it pushes the wrong way for `use` (as E0420 would).
+  void CheckSign(const FunctionCard& function, const Ref& ref, Use use);
+  // The largest friction coefficient the language takes (`friction`, 0 to 5).
+  static constexpr double kMaxFriction = 5.0;
   // A friction coefficient from a constant function; zero for no function.
   std::optional<double> Friction(const Ref& ref);
   void MapRunSettings(ast::Block& body);
@@ -84,6 +88,9 @@ class DeckMapper {
   // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.
   void MapOutput(const OutputCard& card, ast::Statement& block);
   void MapOutputs(ast::Block& scenario);
+  // Adds one request of `card`; a second with the same column name is named with `as`, the
+  // same request twice is added once.
+  void AddRequest(ast::Statement& block, ast::Statement request, const OutputCard& card);
   struct FunctionUse {
     const FunctionCard* function;
     Use use;
@@ -104,6 +111,8 @@ class DeckMapper {
   std::set<int> used_;
   std::vector<std::pair<std::string, std::string>> contact_outputs_;
   std::vector<std::string> belt_outputs_;
+  std::map<std::string, std::set<std::string>> output_labels_;  // request -> its points
+  std::set<std::string> taken_outputs_;                         // names given with `as`
 };
 
 }  // namespace sled::lang::legacy::mapping

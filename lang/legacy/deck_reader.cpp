@@ -2,10 +2,12 @@
 
 #include "lang/legacy/body_reader.h"
 #include "lang/legacy/deck_fields.h"
+#include "lang/legacy/initial_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <string>
@@ -14,6 +16,23 @@
 
 namespace sled::lang::legacy {
 namespace {
+
+// Whether the corners P1, P2, P3 span a plane: the edges P1-P2 and P1-P3 are not parallel (their
+// cross product is not negligible against their lengths).
+bool Spans(const std::array<Vec3, 3>& p) {
+  Vec3 a{}, b{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    a[i] = p[1][i] - p[0][i];
+    b[i] = p[2][i] - p[0][i];
+  }
+  const double cx = a[1] * b[2] - a[2] * b[1];
+  const double cy = a[2] * b[0] - a[0] * b[2];
+  const double cz = a[0] * b[1] - a[1] * b[0];
+  const double cross = std::sqrt(cx * cx + cy * cy + cz * cz);
+  const double lengths = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) *
+                         std::sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+  return lengths > 0 && cross > 1e-9 * lengths;
+}
 
 constexpr int kMaxPlanes = 50;
 constexpr int kMaxBelts = 20;
@@ -46,7 +65,7 @@ class DeckReader : public DeckFields {
     if (!r_.truncated()) ReadE();
     if (unknown_layout_) return std::move(deck_);  // F.5 cards of unknown length follow
     if (!r_.truncated()) ReadF();
-    if (!r_.truncated()) ReadG();
+    if (!r_.truncated()) ReadInitialConditions(*this, bags_);
     if (!r_.truncated()) ReadOutputRequests(*this, bags_);
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
       const Card card = r_.Next("after H.10", {"(A80)"});
@@ -107,10 +126,42 @@ class DeckReader : public DeckFields {
       Invalid(control, 9, 16, fmt::format("DT is {}", deck_.dt),
               "the output step must be positive");
     }
+    const double steps[] = {deck_.first_step, deck_.max_step, deck_.min_step};
+    static constexpr const char* kStepNames[] = {"H0", "HMAX", "HMIN"};
+    for (int i = 0; i < 3; ++i) {
+      if (steps[i] < 0) {
+        Invalid(control, 17 + 8 * i, 24 + 8 * i, fmt::format("{} is {}", kStepNames[i], steps[i]),
+                "an integration step is positive, or blank for sled's default");
+      }
+    }
+    if (deck_.min_step > 0 && deck_.max_step > 0 && deck_.min_step > deck_.max_step) {
+      Invalid(control, 25, 40,
+              fmt::format("HMIN ({}) is larger than HMAX ({})", deck_.min_step, deck_.max_step),
+              "the smallest integration step is at most the largest");
+    }
 
     const Card print = r_.Next("A.5", {"(36I2)"});
     for (int i = 0; i < 36; ++i) {
       deck_.print_controls.push_back(r_.Integer(print, 2 * i + 1, 2 * i + 2, "NPRT"));
+    }
+    // NPRT(4) < 0: ATB reads the A cards and then a tape 8 of an earlier run, simulating nothing.
+    if (deck_.print_controls[3] < 0) {
+      Refuse(print, 7, 8,
+             fmt::format("NPRT(4) is {}: a post-processing run of an earlier run's "
+                         "tape 8, which simulates nothing",
+                         deck_.print_controls[3]),
+             "sled simulates the deck's scene; set NPRT(4) to 0 to convert it");
+    }
+    // The other entries choose ATB's printed report and files (VIEW, tape 8), which sled writes
+    // its own way: they are read and left out, with one warning.
+    bool printing = false;
+    for (int i = 0; i < 36; ++i)
+      printing = printing || (i != 33 && deck_.print_controls[static_cast<std::size_t>(i)] > 0);
+    if (printing) {
+      Ignored(print, 1, 72,
+              "the print and file controls (NPRT) choose ATB's printed report, VIEW file and "
+              "tape 8; sled writes its own run folder (docs/outputs.md), so they are left out",
+              "nothing to do; the scene does not depend on them");
     }
     const int windows = deck_.print_controls[33];
     if (windows < 0 || windows > 3) {
@@ -119,8 +170,16 @@ class DeckReader : public DeckFields {
                             "{} is outside 0 to 3",
                             r_.Where(print, 67, 68), windows));
     } else {
-      for (int i = 0; i < windows; ++i)
-        r_.Next(fmt::format("A.6 (window {})", i + 1), {"(A1,1X,A1,1X,A1,1X,F10.3,1X,F10.3)"});
+      for (int i = 0; i < windows; ++i) {
+        const Card window =
+            r_.Next(fmt::format("A.6 (window {})", i + 1), {"(A1,1X,A1,1X,A1,1X,F10.3,1X,F10.3)"});
+        if (window.line != 0) {
+          Approximated(window, 1, 27,
+                       "an output time window: ATB prints and writes only between TSTART and "
+                       "TEND (with the flags of window 1); sled writes every output step of the "
+                       "whole run");
+        }
+      }
     }
   }
 
@@ -272,9 +331,17 @@ class DeckReader : public DeckFields {
                              "whose MSEG is 0), their corners in {} (UNITL) in its axes",
                              deck_.units.length));
     }
+    Card last;
     for (int i = 0; i < 3; ++i) {
-      const Card corner = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1), {"(3F12.0)"});
-      plane.corners[static_cast<std::size_t>(i)] = Triple(corner, 1, 12, "a corner of the plane");
+      last = r_.Next(fmt::format("D.2 (plane {}, P{})", number, i + 1), {"(3F12.0)"});
+      plane.corners[static_cast<std::size_t>(i)] = Triple(last, 1, 12, "a corner of the plane");
+    }
+    if (!r_.truncated() && !Spans(plane.corners)) {
+      Invalid(last, 1, 36,
+              "P1, P2 and P3 lie on one line (or two of them are the same point), so they "
+              "span no plane",
+              "the plane is the parallelogram with edges P1-P2 and P1-P3; give three corners "
+              "that are not in line");
     }
     deck_.planes.push_back(std::move(plane));
   }
@@ -313,9 +380,17 @@ class DeckReader : public DeckFields {
     Vec3 exponents{};
     for (int i = 0; i < 3; ++i) {
       const int first = 61 + 4 * i;
-      exponents[static_cast<std::size_t>(i)] = r_.Real(card, first, first + 3, "an exponent");
-      if (exponents[static_cast<std::size_t>(i)] == 0) exponents[static_cast<std::size_t>(i)] = 2;
+      double& exponent = exponents[static_cast<std::size_t>(i)];
+      exponent = r_.Real(card, first, first + 3, "an exponent");
+      if (exponent == 0) exponent = 2;
+      if (exponent < 2) {
+        Invalid(card, first, first + 3, fmt::format("the exponent is {}", exponent),
+                "an ellipsoid's exponent is 2 (or blank), a hyper-ellipsoid's above 2");
+        exponent = 2;
+      }
     }
+    const int segments_now = static_cast<int>(deck_.segments.size());
+    CheckSemiAxes(card, 7, semi_axes, m >= 1 && m <= segments_now);
     if (exponents[0] != exponents[1] || exponents[1] != exponents[2]) {
       Refuse(card, 61, 72, "a hyper-ellipsoid with different exponents per axis",
              "sled's `degree` is one exponent for all three axes");
@@ -385,6 +460,19 @@ class DeckReader : public DeckFields {
     spring.damping = r_.Real(card, 61, 66, "B1, the damping coefficient");
     RefuseNonZero(card, 67, 72, r_.Real(card, 67, 72, "B2"), "B2 (a second damping coefficient)",
                   "sled's springs take one linear `damping`");
+    const double lowest = spring.linear != 0 ? spring.linear : spring.quadratic;
+    if (lowest < 0) {
+      Invalid(card, 49, 60, fmt::format("the spring's lowest coefficient is negative ({})", lowest),
+              "a spring pulls back when stretched: its lowest non-zero coefficient is positive");
+    }
+    if (spring.damping < 0) {
+      Invalid(card, 61, 66, fmt::format("B1 is {}", spring.damping),
+              "a damping coefficient is zero or positive: it resists the motion");
+    }
+    if (spring.free_length < 0) {
+      Invalid(card, 43, 48, fmt::format("D0 is {}", spring.free_length),
+              "a free length is zero (the initial length) or positive");
+    }
     if (spring.quadratic != 0) {
       Unverified(card, 55, 60,
                  fmt::format("A2 is taken as the coefficient of the squared elongation, in {}/{}^2",
@@ -599,85 +687,6 @@ class DeckReader : public DeckFields {
     if (nx != 0) {
       Refuse(extra, 1, 4, fmt::format("NX is {}", nx), "the meaning of NX is not documented");
     }
-  }
-
-  // --- G: initial conditions ---------------------------------------------------------------
-  void ReadG() {
-    const Card g1 = r_.Next("G.1.a", {"(30X,2I4,8X,I4)", -1, false, 35});
-    const int i1 = r_.Integer(g1, 31, 34, "I1");
-    const int j1 = r_.Integer(g1, 35, 38, "J1");
-    const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
-    if (i1 == 15) {
-      Refuse(g1, 31, 34, "I1 = 15 asks for an equilibrium solve",
-             "use a `settle { duration = ... }` block instead, and remove the EQUILB cards");
-    }
-    // I3 = 0: every reference segment moves with the primary vehicle and the G.2 and G.3
-    // velocities are not used (INPUT_LINEAR, INPUT_ORIENT); 1: the G cards give them; 2: the G
-    // cards where IREF2 is 0, which is every card sled converts (IREF2 is refused).
-    if (i3 < 0 || i3 > 2) {
-      Invalid(g1, 47, 50, fmt::format("I3 is {}", i3),
-              "I3 is 0 (velocities of the primary vehicle), 1 or 2 (velocities from the G cards)");
-    }
-    deck_.velocities_from_vehicle = i3 == 0;
-    deck_.velocity_source_line = g1.line;
-    if (j1 != 0) {
-      r_.Next("G.1.b (obsolete)", {"(I1)"});
-      Unverified(g1, 35, 38, "J1 is not zero: the obsolete G.1.b card is read and ignored");
-    }
-    // One G.2 card per reference segment: segment 1 and each J+1 whose JNT(J) = 0.
-    std::vector<int> references{1};
-    for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
-      if (deck_.joints[j].parent == 0) references.push_back(static_cast<int>(j) + 2);
-    }
-    for (const int segment : references) {
-      const Card card =
-          r_.Next(fmt::format("G.2 (reference segment {})", segment), {"(6F10.0,2I3)"});
-      InitialCard initial;
-      initial.line = card.line;
-      initial.segment = segment;
-      initial.position = Triple(card, 1, 10, "the position");
-      initial.velocity = GivenVelocity(card, "velocity");
-      if (r_.Integer(card, 61, 63, "IREF2") != 0) {
-        Refuse(card, 61, 63, "IREF2: the velocity of a vehicle",
-               "write the velocity on the card itself");
-      }
-      if (r_.Integer(card, 64, 66, "IREF4") != 0) {
-        Refuse(card, 64, 66, "IREF4: a position relative to a vehicle",
-               "write the position in the inertial frame");
-      }
-      deck_.initial_positions.push_back(initial);
-    }
-    for (std::size_t s = 0; s < deck_.segments.size(); ++s) {
-      const Card card = r_.Next(fmt::format("G.3.a (segment {})", s + 1), {"(6F10.0,4I3)"});
-      OrientationCard orientation;
-      orientation.line = card.line;
-      orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
-      orientation.angular_velocity = GivenVelocity(card, "angular velocity");
-      for (int i = 0; i < 4; ++i) {
-        const int first = 61 + 3 * i;
-        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");
-        if (value != 0) {
-          Refuse(card, first, first + 2, fmt::format("ID{} is {}", i + 1, value),
-                 "sled's initial orientations are yaw, pitch, roll in the ground frame; leave "
-                 "columns 61-72 blank");
-          break;
-        }
-      }
-      deck_.initial_orientations.push_back(orientation);
-    }
-  }
-
-  // A G.2 velocity or G.3.a angular velocity (columns 31-60), zero when I3 = 0 makes ATB ignore it.
-  Vec3 GivenVelocity(const Card& card, std::string_view what) {
-    const Vec3 velocity = Triple(card, 31, 10, fmt::format("the {}", what));
-    if (!deck_.velocities_from_vehicle || velocity == Vec3{}) return velocity;
-    Ignored(card, 31, 60,
-            fmt::format("with I3 = 0 on G.1.a, ATB gives the segment the primary vehicle's {} "
-                        "and ignores this one",
-                        what),
-            "set I3 = 1 on G.1.a (columns 47-50) to use the G.2 and G.3 velocities, or leave "
-            "these columns blank");
-    return Vec3{};
   }
 
   bool approximate_airbags_;

@@ -32,6 +32,22 @@ Vec3 VehicleVelocity(const VehicleCard& vehicle) {
           vehicle.speed * SinDegrees(yaw) * CosDegrees(pitch), -vehicle.speed * SinDegrees(pitch)};
 }
 
+// A point given in a vehicle's axes (G.2 IREF4), in the ground frame at the start: the
+// vehicle's C.2.a position plus the point turned by its yaw, pitch and roll (z, then y, then x,
+// as VehicleVelocity turns x), which is ATB's LIN_DISP(ref) + DIR_COS(ref) applied to the point.
+Vec3 VehicleToGround(const VehicleCard& vehicle, const Vec3& p) {
+  const double cy = CosDegrees(vehicle.orientation[0]), sy = SinDegrees(vehicle.orientation[0]);
+  const double cp = CosDegrees(vehicle.orientation[1]), sp = SinDegrees(vehicle.orientation[1]);
+  const double cr = CosDegrees(vehicle.orientation[2]), sr = SinDegrees(vehicle.orientation[2]);
+  const double r[3][3] = {{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
+                          {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
+                          {-sp, cp * sr, cp * cr}};
+  Vec3 out{};
+  for (std::size_t i = 0; i < 3; ++i)
+    out[i] = vehicle.position[i] + r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2];
+  return out;
+}
+
 }  // namespace
 
 ast::File DeckMapper::Map() {
@@ -134,6 +150,7 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
   auto key = std::make_pair(function->number, static_cast<int>(use));
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
+    CheckSign(*function, ref, use);
     std::string name = NameOf(function->title, fmt::format("function_{}", function->number), taken_,
                               use == Use::kContact ? "force"
                               : use == Use::kJoint ? "torque"
@@ -142,6 +159,47 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
     uses_.push_back({function, use, name});
   }
   return Path(found->second);
+}
+
+// Where a function first pushes the wrong way for its use, as `sled check` judges a law (E0420):
+// a contact's or a belt's force is positive for every positive deflection or strain, a joint's
+// torque has the sign of its angle. Constants and tables by their values, a polynomial near zero
+// by its lowest non-zero coefficient.
+void DeckMapper::CheckSign(const FunctionCard& function, const Ref& ref, Use use) {
+  const bool both_ways = use == Use::kJoint;
+  std::string wrong;
+  switch (function.form) {
+    case FunctionCard::Form::kConstant:
+      if (function.constant < 0) wrong = fmt::format("its constant D2 is {}", function.constant);
+      break;
+    case FunctionCard::Form::kPolynomial:
+      for (const double c : function.coefficients) {
+        if (c == 0) continue;
+        if (c < 0) wrong = fmt::format("its lowest non-zero E.3 coefficient is {}", c);
+        break;
+      }
+      break;
+    case FunctionCard::Form::kTable:
+      for (const auto& [x, f] : function.points) {
+        if ((x > 0 && f < 0) || (both_ways && x < 0 && f > 0)) {
+          wrong = fmt::format("its E.4.b table gives {} at {}", f, x);
+          break;
+        }
+      }
+      break;
+  }
+  if (wrong.empty()) return;
+  const char* law = use == Use::kJoint ? "a joint's torque, which has the sign of the angle"
+                    : use == Use::kBelt
+                        ? "a belt's force, which is positive for every positive strain"
+                        : "a contact's force, which is positive for every positive deflection";
+  Diagnostic diagnostic = MakeDiagnostic(
+      DiagnosticKind::kDeckInvalidValue, function.where,
+      fmt::format("function {} (E.1, line {}) pushes the wrong way: {}; card {} uses it as {}",
+                  function.number, function.line, wrong, ref.card, law));
+  diagnostic.help = "give the function's values with a positive sign for a positive argument";
+  diagnostic.show_column_range = true;
+  diagnostics_.Consume(std::move(diagnostic));
 }
 
 // A friction coefficient from a constant function; zero for no function.
@@ -154,6 +212,15 @@ std::optional<double> DeckMapper::Friction(const Ref& ref) {
     Report(DiagnosticKind::kDeckNotExpressible, ref,
            fmt::format("card {}: friction function {} is not a constant", ref.card, ref.number),
            "sled's `friction` is one coefficient; use a constant function (D1 = 0)");
+    return std::nullopt;
+  }
+  if (function->constant < 0 || function->constant > kMaxFriction) {
+    Report(function->constant < 0 ? DiagnosticKind::kDeckInvalidValue
+                                  : DiagnosticKind::kDeckNotExpressible,
+           ref,
+           fmt::format("card {}: friction function {} is {} (E.2 D2, line {})", ref.card,
+                       ref.number, function->constant, function->line),
+           fmt::format("a friction coefficient is from 0 to {} in sled", kMaxFriction));
     return std::nullopt;
   }
   return function->constant;
@@ -170,6 +237,11 @@ void DeckMapper::MapRunSettings(ast::Block& body) {
   if (deck_.first_step > 0) Add(integrator, Attribute("initial_step", Number(deck_.first_step, T)));
   if (deck_.max_step > 0) Add(integrator, Attribute("max_step", Number(deck_.max_step, T)));
   if (deck_.min_step > 0) Add(integrator, Attribute("min_step", Number(deck_.min_step, T)));
+  if (deck_.tolerance > 0) {
+    Add(integrator, Attribute("tolerance", Number(deck_.tolerance)));
+    integrator.block->statements.back().leading_comments.push_back(
+        {" cards B.6: the smallest relative error of the convergence tests", {}, false});
+  }
   body.statements.push_back(std::move(integrator));
 }
 
@@ -386,7 +458,19 @@ void DeckMapper::MapInitial(ast::Block& scenario) {
     const auto index = static_cast<std::size_t>(card.segment - 1);
     const std::string target = card.segment == 1 ? body_ : body_ + "." + segments_[index];
     ast::Statement initial = Declaration("initial", Path(target), CardComment("G.2", card.line));
-    Add(initial, Attribute("position", Vector(card.position, L)));
+    if (card.position_vehicle >= 0) {
+      const auto v = static_cast<std::size_t>(card.position_vehicle);
+      Add(initial,
+          Attribute("position", Vector(VehicleToGround(deck_.vehicles[v], card.position), L)));
+      initial.block->statements.back().leading_comments.push_back(
+          {fmt::format(" IREF4: ({}, {}, {}) {} in the axes of vehicle `{}`, from its C.2.a "
+                       "position and orientation",
+                       card.position[0], card.position[1], card.position[2], L, vehicles_[v]),
+           {},
+           false});
+    } else {
+      Add(initial, Attribute("position", Vector(card.position, L)));
+    }
     const bool from_vehicle = deck_.velocities_from_vehicle && !deck_.vehicles.empty();
     const Vec3 velocity = from_vehicle ? VehicleVelocity(deck_.vehicles.back()) : card.velocity;
     if (!IsZero(velocity)) {

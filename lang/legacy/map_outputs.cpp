@@ -38,8 +38,8 @@ void DeckMapper::MapOutput(const OutputCard& card, ast::Statement& block) {
                          card.segment.card, card.segment.number),
              "docs/legacy.md, H cards");
     }
-    Add(block, request(parameters ? "joint_angle" : "joint_force", joint));
-    Add(block, request("joint_torque", joint));
+    AddRequest(block, request(parameters ? "joint_angle" : "joint_force", joint), card);
+    AddRequest(block, request("joint_torque", joint), card);
     return;
   }
   const std::string segment = Segment(card.segment, "segment");
@@ -70,7 +70,41 @@ void DeckMapper::MapOutput(const OutputCard& card, ast::Statement& block) {
              "for ATB's quantity, request `velocity ... expressed_in` of both and subtract");
     }
   }
-  Add(block, std::move(statement));
+  AddRequest(block, std::move(statement), card);
+}
+
+// sled names a request's column after its kind, target and frame, so two requests that differ
+// only in their point (two H.1 points on one segment, which ATB allows) would be one column:
+// the second is named with `as`. The same request twice is one column: the second is left out
+// (ATB prints it twice); H.7 and H.9 of one joint both give its `joint_torque`, once.
+void DeckMapper::AddRequest(ast::Statement& block, ast::Statement request, const OutputCard& card) {
+  std::string label = request.keyword + " " + request.target->PathText();
+  for (const ast::Clause& clause : request.clauses) {
+    if (clause.word != "at") label += " " + clause.word + " " + clause.value.PathText();
+  }
+  const std::string point = request.FindClause("at") ? fmt::format("{} {} {}", card.point[0],
+                                                                   card.point[1], card.point[2])
+                                                     : std::string();
+  auto [requested, inserted] = output_labels_.try_emplace(label);
+  if (!inserted) {
+    if (requested->second.count(point) != 0) {
+      if (request.keyword != "joint_torque") {
+        Report(DiagnosticKind::kDeckIgnoredField, card.segment,
+               fmt::format("card {}: the same output request as an earlier H card ({} of {}); "
+                           "sled outputs it once",
+                           card.segment.card, request.keyword, request.target->PathText()),
+               "remove the repeated request");
+      }
+      return;
+    }
+    const std::string& target = request.target->path.back();
+    std::string name;
+    for (int n = 2; name.empty() || !taken_outputs_.insert(name).second; ++n)
+      name = fmt::format("{}_{}_{}", target, request.keyword, n);
+    request.clauses.push_back({"as", {}, Path(name)});
+  }
+  requested->second.insert(point);
+  Add(block, std::move(request));
 }
 
 void DeckMapper::MapOutputs(ast::Block& scenario) {
