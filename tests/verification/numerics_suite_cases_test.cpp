@@ -97,10 +97,14 @@ TEST_P(NumericsSuiteCases, MillimetreLinksStayAboveTheFloor) {
 // 0.1 (cos p, sin p cos wt, sin p sin wt) m, and the joint's nutation passes 90 degrees - p from
 // its singular value twice a turn.
 TEST_P(NumericsSuiteCases, EulerJointPassingNearGimbalLockTurnsAsTheClosedForm) {
-  for (const auto& [name, precession_deg] : {std::pair<std::string, double>{"gimbal_0p2", 89.8},
-                                             std::pair<std::string, double>{"gimbal_0p8", 89.2}}) {
+  struct Case {
+    std::string name;
+    double precession_deg;
+  };
+  for (const Case& gimbal : {Case{"gimbal_0p2", 89.8}, Case{"gimbal_0p8", 89.2}}) {
+    const std::string& name = gimbal.name;
+    const double p = gimbal.precession_deg * kPi / 180, w = 2 * kPi;
     ForEachTolerance(name, [&](const RunResult& run, double tolerance) {
-      const double p = precession_deg * kPi / 180, w = 2 * kPi;
       const auto x = Channel(run.series, "rig.head.position.x [m]");
       const auto y = Channel(run.series, "rig.head.position.y [m]");
       const auto z = Channel(run.series, "rig.head.position.z [m]");
