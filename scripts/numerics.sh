@@ -4,7 +4,10 @@
 #   scripts/numerics.sh [OUT]      (OUT: where the study folders go; default build/numerics)
 #
 #   SLED_NUMERICS_CASES="free_body lock_cascade"   measures only those cases of the suite (and
-#                                                  `flagship` only when named); default: all
+#                                                  `flagship` only when named); default: all. The
+#                                                  page keeps every other case's rows and lines as
+#                                                  the earlier run wrote them, and says which run
+#                                                  measured which cases
 #   SLED_NUMERICS_TABLES_ONLY=1  measures nothing: rewrites the tables from OUT as an earlier
 #                                run left it
 #   SLED_NUMERICS_DOC=FILE     writes the tables into FILE (and the plots beside it, in
@@ -135,11 +138,12 @@ load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
 [[ -n "${SLED_NUMERICS_TABLES_ONLY:-}" ]] && load_after="(not recorded)"
 python3 - "${out}" "${doc}" "$(dirname "${doc}")/numerics" "${tolerances}" \
   "${load_before}" "${load_after}" "$(git -C "${root}" rev-parse --short HEAD)" "${root}" \
-  "${order_tolerances}" <<'PY'
+  "${order_tolerances}" "${cases}" <<'PY'
 import csv, json, math, os, re, shutil, sys
 from datetime import date
 
-out, doc, plots, ladder, load_before, load_after, commit, root, order_tolerances = sys.argv[1:10]
+out, doc, plots, ladder, load_before, load_after, commit, root, order_tolerances, only = \
+    sys.argv[1:11]
 LEVELS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6]
 METHODS = ["auto", "exponential", "dopri5", "rosenbrock", "cvs"]
 # Theoretical orders (auto is dopri5 or the exponential method, step by step: no single order).
@@ -605,12 +609,104 @@ for c in cases:
     if os.path.exists(svg):
         shutil.copy(svg, os.path.join(plots, c["name"] + ".svg"))
 
+
+def table_spans(lines):
+    """{(heading, header, count): (header index, end index)} of the tables of a block (count:
+    how many tables with that heading and header came before it)."""
+    spans, heading, i = {}, None, 0
+    while i < len(lines):
+        if lines[i].startswith("### "):
+            heading = lines[i]
+        if lines[i].startswith("| case |"):
+            j = i + 2
+            while j < len(lines) and lines[j].startswith("|"):
+                j += 1
+            count = sum(1 for key in spans if key[:2] == (heading, lines[i]))
+            spans[(heading, lines[i], count)] = (i, j)
+            i = j
+            continue
+        i += 1
+    return spans
+
+
+def row_case(row):
+    return row.split("|")[1].strip()
+
+
+def merge_partial(old, new, measured, order):
+    """The earlier block `old` with the rows and lines of the `measured` cases from `new`."""
+    rank = {name: k for k, name in enumerate(order)}
+    merged = list(old)
+    old_spans, new_spans = table_spans(old), table_spans(new)
+    # Tables from the bottom up, so the spans above stay where they are.
+    for key, (start, stop) in sorted(old_spans.items(), key=lambda item: -item[1][0]):
+        if key not in new_spans:
+            continue
+        s, e = new_spans[key]
+        rows = [r for r in merged[start + 2:stop] if row_case(r) not in measured]
+        # Each new row goes before the first kept row of a later case in the suite's order (the
+        # kept rows keep theirs).
+        for row in new[s + 2:e]:
+            later = [k for k, r in enumerate(rows)
+                     if rank.get(row_case(r), len(rank)) > rank.get(row_case(row), len(rank))]
+            rows.insert(later[0] if later else len(rows), row)
+        merged[start + 2:stop] = rows
+    for key, (s, e) in new_spans.items():
+        if key not in old_spans:
+            merged += ["", key[0] or "", ""] + new[s:e]
+    names = ", ".join(sorted(measured))
+
+    def patch(prefix, separator, entries):
+        """A line `prefix ...SEPARATOR a, b, c.` whose entries are per case: the measured ones
+        replaced."""
+        old_line = next((k for k, l in enumerate(merged) if l.startswith(prefix)), None)
+        new_line = next((l for l in new if l.startswith(prefix)), None)
+        if old_line is None or new_line is None:
+            return
+        kept = [x for x in entries(merged[old_line]) if x[0] not in measured] + entries(new_line)
+        kept.sort(key=lambda x: rank.get(x[0], len(rank)))
+        merged[old_line] = (new_line.split(separator, 1)[0] + separator + " " +
+                            ", ".join(x[1] for x in kept) + ".")
+
+    patch("Plots:", ":", lambda l: [(re.search(r"\[([^]]+)\]", x).group(1), x.strip())
+                                    for x in l.split(":", 1)[1].rstrip(".").split(",") if "[" in x])
+    patch("Reference uncertainty", "):",
+          lambda l: [(x.split()[0], x.strip()) for x in l.split("):", 1)[1].rstrip(".").split(",")
+                     if x.strip()])
+    # The failures: the earlier run's for the other cases and this run's.
+    fails = [l for l in merged if l.startswith("- ") and l[2:].split(",")[0] not in measured
+             and " at " in l and "failed at" in l]
+    fails += [l for l in new if l.startswith("- ") and "failed at" in l]
+    at = next((k for k, l in enumerate(merged) if l.startswith("Runs of the ladder that stopped")
+               or l.startswith("No run of the ladder")), None)
+    if at is not None:
+        stop = at + 1
+        while stop < len(merged) and (merged[stop] == "" or merged[stop].startswith("- ")):
+            stop += 1
+        block = (["Runs of the ladder that stopped with a failure (method, tolerance, where and "
+                  "why):", ""] + sorted(fails, key=lambda l: rank.get(l[2:].split(",")[0], 99))
+                 if fails else ["No run of the ladder stopped with a failure."])
+        merged[at:stop] = block + [""]
+    # Which run measured what.
+    stamp = next(l for l in new if l.startswith("Measured by"))
+    merged = [l for l in merged if not (l.startswith("Cases ") and "measured by" in l
+                                        and set(l[6:l.index(":")].split(", ")) <= measured)]
+    merged.insert(0, f"Cases {names}: measured by" + stamp[len("Measured by"):])
+    merged.insert(1, "")
+    return merged
+
+
 text = open(doc).read()
 begin, end = "<!-- numerics:begin -->", "<!-- numerics:end -->"
 if begin not in text or end not in text:
     sys.exit("numerics.sh: docs/numerics.md has no numerics:begin / numerics:end markers")
 head, rest = text.split(begin, 1)
-_, tail = rest.split(end, 1)
+previous, tail = rest.split(end, 1)
+if only.strip():
+    # SLED_NUMERICS_CASES: the page keeps every other case's rows and lines as the earlier run
+    # left them, and this run's cases replace or join theirs.
+    L = merge_partial(previous.strip("\n").split("\n"), L, set(only.replace(",", " ").split()),
+                      suite_order + ["flagship"])
 open(doc, "w").write(head + begin + "\n" + "\n".join(L) + "\n" + end + tail)
 print(f"numerics.sh: {doc} updated", file=sys.stderr)
 PY

@@ -26,8 +26,9 @@ namespace sled::runtime {
 inline constexpr double kContactReachShare = 0.25;
 
 // The longest step from data's state (after Forward: positions, velocities and accelerations)
-// over which no pair that is apart can pass more than kContactReachShare of its thinner
-// ellipsoid's smallest semi-axis into contact; infinity when no pair approaches.
+// over which no pair can pass more than kContactReachShare of its thinner ellipsoid's smallest
+// semi-axis into contact, past its gap when apart, past where it is when touching; infinity
+// when no pair approaches.
 double ContactStepLimit(const Model& model, const Data& data);
 
 // At the start (data's surfaces placed): which ellipsoids start wholly behind their plane.
