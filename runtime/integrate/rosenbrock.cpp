@@ -145,11 +145,12 @@ void Rosenbrock::SerializeHistory(Archive& archive) {
 bool Rosenbrock::TryStep(double h, double* error) {
   const std::size_t n = y_.size();
   // A retry from the same point keeps the Jacobian formed there.
-  // The system's own A costs no evaluation: formed at every step (a stale one misses a stiff
-  // element that turns, such as a tether on a swinging ball: 1.3e-3 off at 1e-6 with A up to 20
-  // steps old, 5e-5 with a fresh one). f_t, one evaluation, and a difference A, n of them, are
-  // reused.
-  const long max_age = system().StructuredRank() > 0 ? 1 : kMaxJacobianAge;
+  // The system's own A with stiff terms costs no evaluation: formed at every step (a stale one
+  // misses a stiff element that turns, such as a tether on a swinging ball: 1.3e-3 off at 1e-6
+  // with A up to 20 steps old, 5e-5 with a fresh one). f_t, one evaluation, a difference A, n of
+  // them, and a kinematic one (no stiff terms: the 60-link chain) are reused.
+  const bool stiff_terms = source_.valid() && source_.structured() && source_.jacobian().rank() > 0;
+  const long max_age = stiff_terms ? 1 : kMaxJacobianAge;
   if (source_.MustForm(h, max_age, kJacobianGrowth, true) ||
       time_derivative_age_ >= kMaxJacobianAge) {
     switch (FormJacobian(h)) {
@@ -205,6 +206,18 @@ bool Rosenbrock::TryStep(double h, double* error) {
 bool Rosenbrock::IntegrateQuadratures(double h) {
   const std::size_t n = y_.size();
   if (!Evaluate(t_ + h, y1_, f1_)) return false;
+  // Rates of zero at both ends: nothing does work here (free flight; an element's contact
+  // begins and ends at events), and the midpoint's evaluation would add zero.
+  bool working = false;
+  for (std::size_t i = quadratures_; i < n; ++i)
+    working = working || f0_[i] != 0.0 || f1_[i] != 0.0;
+  if (!working) {
+    for (std::size_t i = quadratures_; i < n; ++i) {
+      y1_[i] = y_[i];
+      error_(static_cast<Eigen::Index>(i)) = 0.0;
+    }
+    return true;
+  }
   // The midpoint of the step's cubic Hermite interpolant (its dense output), of stage order 3.
   for (std::size_t i = 0; i < n; ++i) {
     stage_(static_cast<Eigen::Index>(i)) = 0.5 * (y_[i] + y1_[i]) + 0.125 * h * (f0_[i] - f1_[i]);
