@@ -350,6 +350,15 @@ AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) 
   return result;
 }
 
+AdaptiveIntegrator::Failure AdaptiveIntegrator::Attempt(double h, bool fixed, double* error) {
+  if (!TryStep(h, error)) return Failure::kEvaluation;
+  if (!AllFinite(y1_) || std::isnan(*error)) return Failure::kNotFinite;
+  if (!fixed && !(*error <= 1.0)) return Failure::kErrorTest;
+  if (!HasEndDerivative() && !Evaluate(t_ + h, y1_, f1_)) return Failure::kEvaluation;
+  if (!AllFinite(f1_)) return Failure::kNotFinite;
+  return Failure::kNone;
+}
+
 AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
   if (system_ == nullptr) {
     throw std::logic_error("sled::runtime integrator " + std::string(name()) +
@@ -375,19 +384,8 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     step_ = h;
 
     double error = 0.0;
-    Failure failure = Failure::kNone;
     largest_ = {};
-    if (!TryStep(h, &error)) {
-      failure = Failure::kEvaluation;
-    } else if (!AllFinite(y1_) || std::isnan(error)) {
-      failure = Failure::kNotFinite;
-    } else if (!fixed && !(error <= 1.0)) {
-      failure = Failure::kErrorTest;
-    } else if (!HasEndDerivative() && !Evaluate(t_ + h, y1_, f1_)) {
-      failure = Failure::kEvaluation;
-    } else if (!AllFinite(f1_)) {
-      failure = Failure::kNotFinite;
-    }
+    const Failure failure = Attempt(h, fixed, &error);
 
     if (failure != Failure::kNone) {
       ++stats_.rejected;

@@ -127,6 +127,9 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
  private:
   enum class Failure { kNone, kEvaluation, kNotFinite, kErrorTest };
 
+  // One attempt of a step of size h: the method's step, its error test (unless `fixed`) and the
+  // end derivative; what failed, if anything.
+  Failure Attempt(double h, bool fixed, double* error);
   // One accepted step towards t_stop (fixed_step > 0: of that size, without error control).
   AdvanceResult StepOnce(double t_stop, double fixed_step);
   // What the last step left for the next one to do first: the event it ended at (the system's
