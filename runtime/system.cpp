@@ -75,6 +75,16 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
 
 std::size_t MultibodySystem::ControlledSize() const { return StateSize(model_) - kEnergyStates; }
 
+double MultibodySystem::QuadratureScale(double t, std::span<const double> y) {
+  // The integrator asks where it has just evaluated, so data holds that state: a scale needs
+  // no new evaluation (a step that lands on its stop may end an ulp from where it evaluated).
+  (void)t, (void)y;
+  const EnergyBalance& work = data_.energy;
+  return std::max({KineticEnergy(model_, data_), std::abs(work.element_work),
+                   std::abs(work.constraint_work), std::abs(work.vehicle_work),
+                   std::abs(work.applied_work)});
+}
+
 std::size_t MultibodySystem::size() const { return StateSize(model_); }
 
 void MultibodySystem::Load(double t, std::span<const double> y) {
@@ -83,8 +93,15 @@ void MultibodySystem::Load(double t, std::span<const double> y) {
 }
 
 bool MultibodySystem::Evaluate(double t, std::span<const double> y) {
-  if (evaluated_ && t == evaluated_t_ &&
-      std::equal(y.begin(), y.end(), evaluated_y_.begin(), evaluated_y_.end())) {
+  const auto controlled = static_cast<std::ptrdiff_t>(ControlledSize());
+  if (evaluated_ && t == evaluated_t_ && y.size() == evaluated_y_.size() &&
+      std::equal(y.begin(), y.begin() + controlled, evaluated_y_.begin())) {
+    // The work integrals feed nothing back: a state that differs from the evaluated one only in
+    // them (a method sets its quadratures after the end derivative) needs no new Forward.
+    if (!std::equal(y.begin() + controlled, y.end(), evaluated_y_.begin() + controlled)) {
+      LoadState(data_, t, y);
+      std::copy(y.begin() + controlled, y.end(), evaluated_y_.begin() + controlled);
+    }
     return true;
   }
   Load(t, y);

@@ -20,6 +20,9 @@ class MultibodySystem : public OdeSystem {
 
   std::size_t size() const override;
   std::size_t ControlledSize() const override;
+  // The energy the work integrals are measured against: the largest of the kinetic energy and
+  // the work integrals' magnitudes at (t, y), the terms the energy balance is reported against.
+  double QuadratureScale(double t, std::span<const double> y) override;
   bool Derivative(double t, std::span<const double> y, std::span<double> dy) override;
   std::vector<std::size_t> VectorGroups() const override;
   // The force elements' stiffness and damping through the tree (multibody_jacobian.h).

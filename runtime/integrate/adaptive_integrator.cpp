@@ -68,6 +68,7 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(dense_f1_);
   archive.Field(restart_step_);
   archive.Field(step_limit_);
+  archive.Field(quadrature_scale_);
   archive.Field(stats_);
   controller_.Serialize(archive);
   events_.Serialize(archive);
@@ -77,7 +78,13 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
 double AdaptiveIntegrator::ErrorNorm(std::span<const double> error) {
   return WeightedRmsNorm(error.first(controlled_), std::span<const double>(y_).first(controlled_),
                          std::span<const double>(y1_).first(controlled_),
-                         options_.relative_tolerance, options_.absolute_tolerance, &largest_);
+                         options_.relative_tolerance, options_.absolute_tolerance, &largest_,
+                         {quadratures_from_, quadrature_scale_});
+}
+
+void AdaptiveIntegrator::UpdateQuadratureScale(double t, std::span<const double> y) {
+  // Only a method that measures the quadratures needs it (dopri5 would pay for nothing).
+  if (controlled_ > quadratures_from_) quadrature_scale_ = system_->QuadratureScale(t, y);
 }
 
 void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const double> y0,
@@ -99,7 +106,9 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
                                 ": need 0 <= min_step <= max_step (max_step 0: no limit)");
   }
   system_ = &system;
-  controlled_ = ControlsQuadratures() ? n : std::min(system.ControlledSize(), n);
+  quadratures_from_ = std::min(system.ControlledSize(), n);
+  controlled_ = ControlsQuadratures() ? n : quadratures_from_;
+  quadrature_scale_ = 0.0;
   options_ = options;
   stats_ = {};
   t_ = t0;
@@ -244,13 +253,15 @@ double AdaptiveIntegrator::InitialStep() {
   const double rtol = options_.relative_tolerance;
   const double atol = options_.absolute_tolerance;
   // With atol = 0 a zero component would have weight 0; the smallest normal double stands in.
-  const auto weight = [&](double y) {
-    return std::max(atol + rtol * std::abs(y), std::numeric_limits<double>::min());
+  // (The quadratures as ErrorNorm weighs them.)
+  const auto weight = [&](std::size_t i, double y) {
+    const double floor = i >= quadratures_from_ ? quadrature_scale_ : 0.0;
+    return std::max(atol + rtol * std::max(std::abs(y), floor), std::numeric_limits<double>::min());
   };
   double dnf = 0.0;
   double dny = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double w = weight(y_[i]);
+    const double w = weight(i, y_[i]);
     dnf += (f0_[i] / w) * (f0_[i] / w);
     dny += (y_[i] / w) * (y_[i] / w);
   }
@@ -262,7 +273,7 @@ double AdaptiveIntegrator::InitialStep() {
   if (!Evaluate(t_ + h, y1_, f1_) || !AllFinite(f1_)) return h;
   double der2 = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double scaled = (f1_[i] - f0_[i]) / weight(y_[i]);
+    const double scaled = (f1_[i] - f0_[i]) / weight(i, y_[i]);
     der2 += scaled * scaled;
   }
   der2 = std::sqrt(der2) / h;
@@ -293,6 +304,7 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
     return false;
   }
   step_limit_ = system_->StepLimit(t_, y_);
+  UpdateQuadratureScale(t_, y_);
   controller_.Restart();
   RestartHistory();
   if (events_.active()) {
@@ -338,6 +350,15 @@ AdvanceResult AdaptiveIntegrator::Fail(Failure failure, double h, double error) 
   return result;
 }
 
+AdaptiveIntegrator::Failure AdaptiveIntegrator::Attempt(double h, bool fixed, double* error) {
+  if (!TryStep(h, error)) return Failure::kEvaluation;
+  if (!AllFinite(y1_) || std::isnan(*error)) return Failure::kNotFinite;
+  if (!fixed && !(*error <= 1.0)) return Failure::kErrorTest;
+  if (!HasEndDerivative() && !Evaluate(t_ + h, y1_, f1_)) return Failure::kEvaluation;
+  if (!AllFinite(f1_)) return Failure::kNotFinite;
+  return Failure::kNone;
+}
+
 AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
   if (system_ == nullptr) {
     throw std::logic_error("sled::runtime integrator " + std::string(name()) +
@@ -363,19 +384,8 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     step_ = h;
 
     double error = 0.0;
-    Failure failure = Failure::kNone;
     largest_ = {};
-    if (!TryStep(h, &error)) {
-      failure = Failure::kEvaluation;
-    } else if (!AllFinite(y1_) || std::isnan(error)) {
-      failure = Failure::kNotFinite;
-    } else if (!fixed && !(error <= 1.0)) {
-      failure = Failure::kErrorTest;
-    } else if (!HasEndDerivative() && !Evaluate(t_ + h, y1_, f1_)) {
-      failure = Failure::kEvaluation;
-    } else if (!AllFinite(f1_)) {
-      failure = Failure::kNotFinite;
-    }
+    const Failure failure = Attempt(h, fixed, &error);
 
     if (failure != Failure::kNone) {
       ++stats_.rejected;
@@ -424,6 +434,7 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     // The next step's limit, from the state the step reached (where the system was just
     // evaluated: the FSAL stage or the end derivative).
     step_limit_ = system_->StepLimit(t1, y1_);
+    UpdateQuadratureScale(t1, y1_);
     std::copy(y1_.begin(), y1_.end(), y_project_.begin());
     system_->Project(t1, y1_);
     for (std::size_t i = 0; i < y1_.size(); ++i) y_project_[i] = y1_[i] - y_project_[i];

@@ -104,7 +104,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::span<const double> dense_end() const { return dense_y1_; }
 
   // The weighted RMS norm (error_norm.h) of a local error estimate for the step from y_ to
-  // y1_, over the components the system's error control measures (ControlledSize).
+  // y1_, over the components the method's error control measures (ControlledSize, or all with
+  // the quadratures, which are measured against the system's QuadratureScale too).
   // Also notes the component with the largest weighted error of the attempt, for a failure.
   double ErrorNorm(std::span<const double> error);
 
@@ -126,6 +127,9 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
  private:
   enum class Failure { kNone, kEvaluation, kNotFinite, kErrorTest };
 
+  // One attempt of a step of size h: the method's step, its error test (unless `fixed`) and the
+  // end derivative; what failed, if anything.
+  Failure Attempt(double h, bool fixed, double* error);
   // One accepted step towards t_stop (fixed_step > 0: of that size, without error control).
   AdvanceResult StepOnce(double t_stop, double fixed_step);
   // What the last step left for the next one to do first: the event it ended at (the system's
@@ -140,6 +144,9 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   double MaxStep() const;
   double ClampStep(double h) const;
   double EventTolerance() const;
+  // The system's QuadratureScale at (t, y), just evaluated there, when the method measures the
+  // quadratures.
+  void UpdateQuadratureScale(double t, std::span<const double> y);
   AdvanceResult Fail(Failure failure, double h, double error);
 
   OdeSystem* system_ = nullptr;
@@ -147,8 +154,12 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   IntegratorStats stats_;
   StepSizeController controller_;
   EventLocator events_;
-  double h_ = 0.0;              // next step to try
-  std::size_t controlled_ = 0;  // system().ControlledSize()
+  double h_ = 0.0;                    // next step to try
+  std::size_t controlled_ = 0;        // how many components the error test measures
+  std::size_t quadratures_from_ = 0;  // system().ControlledSize(): where the quadratures begin
+  // The system's QuadratureScale at the current step start (0 while the method leaves the
+  // quadratures out).
+  double quadrature_scale_ = 0.0;
   bool restart_pending_ = true;
   // After an event that only changed the system's equations: the restart keeps the step size.
   bool keep_step_ = false;

@@ -13,13 +13,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0,
                        std::span<const double> y1, double relative_tolerance,
-                       double absolute_tolerance, LargestComponent* largest) {
+                       double absolute_tolerance, LargestComponent* largest,
+                       QuadratureWeight quadratures) {
   const std::size_t n = error.size();
   if (n == 0) return 0.0;
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double weight =
-        absolute_tolerance + relative_tolerance * std::max(std::abs(y0[i]), std::abs(y1[i]));
+    const double floor = i >= quadratures.scaled_from ? quadratures.scale : 0.0;
+    const double weight = absolute_tolerance +
+                          relative_tolerance * std::max({std::abs(y0[i]), std::abs(y1[i]), floor});
     // With atol = 0 a component that is exactly zero has weight 0: no error there is no error,
     // any other is infinitely too large (and NaN stays NaN).
     const double scaled =

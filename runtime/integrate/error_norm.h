@@ -11,14 +11,21 @@ namespace sled::runtime {
 // from y0 to y1 measured in units of the tolerance (1 = exactly the tolerance). Hairer's norm.
 // NaN in the error or the states yields NaN, which every caller treats as a failed test.
 // With `largest`, also the component whose weighted error |e_i / w_i| is largest (a NaN one
-// counts as largest), so a failed step can say where it failed.
+// counts as largest), so a failed step can say where it failed. Components from `scaled_from`
+// on (quadratures, OdeSystem::QuadratureScale) are weighted with atol + rtol * max(|y0_i|,
+// |y1_i|, scale).
 struct LargestComponent {
   std::size_t index = 0;
   double weighted = -1.0;  // |e_i / w_i| (NaN when the component's error is NaN)
 };
+struct QuadratureWeight {
+  std::size_t scaled_from = static_cast<std::size_t>(-1);  // none
+  double scale = 0.0;
+};
 double WeightedRmsNorm(std::span<const double> error, std::span<const double> y0,
                        std::span<const double> y1, double relative_tolerance,
-                       double absolute_tolerance, LargestComponent* largest = nullptr);
+                       double absolute_tolerance, LargestComponent* largest = nullptr,
+                       QuadratureWeight quadratures = {});
 
 // The PI step-size controller of Hairer & Wanner (Solving ODEs I, §II.4, and dopri5.f): with
 // err_n the weighted local error of the step just taken and k the power of h in that error

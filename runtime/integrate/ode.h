@@ -53,6 +53,18 @@ class OdeSystem {
   // back, carried along with the state but never the reason a step is rejected or shortened.
   virtual std::size_t ControlledSize() const { return size(); }
 
+  // The magnitude the quadratures are measured against, at (t, y), where Derivative was just
+  // evaluated. A method that puts the quadratures in its error test (AdaptiveIntegrator::
+  // ControlsQuadratures) weighs each one's error with atol + rtol * max(|value|, scale), as a
+  // state's is with atol + rtol * |value|: a work integral that passes through zero (the elastic
+  // energy a contact stores and gives back) is then held to the tolerance of the energy that
+  // flows, not to the absolute tolerance. The default 0 measures each quadrature against its own
+  // magnitude only (CVODE's quadrature error control with the state's tolerances).
+  virtual double QuadratureScale(double t, std::span<const double> y) {
+    (void)t, (void)y;
+    return 0.0;
+  }
+
   // State components that form 3-vectors (a segment's angular velocity, say), as the starting
   // index of each group; the CVS exponential integrator estimates one decay rate per group.
   // Components outside every group are integrated with a decay rate of zero.

@@ -3,7 +3,8 @@
 // with every method and tolerance, at the speed the conservation of energy (no damping) or an
 // independent integration of the contact's force law (with damping) gives; a chain of 1 mm, 1 g
 // links dropped on a floor stays on it; and a contact too soft to stop its sphere says so (W0010)
-// instead of letting it pass silently.
+// instead of letting it pass silently. Every method but `cvs` runs with the default minimum step
+// (1 ns), and every one closes its energy balance.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -30,10 +31,11 @@ std::string SphereAtWall(const std::string& method) {
   param tol = 1e-6
   param damping = 0 N*s/m
   param stiffness = 1e8 N/m
+  param smallest = 1e-9 s
   time { end = 40 ms  output_every = step }
   integrator )" +
          method +
-         R"( { tolerance = tol  min_step = 1e-12 s }
+         R"( { tolerance = tol  min_step = smallest }
   plane wall on ground { corners = (0, -1, -1) m, (0, 1, -1) m, (0, -1, 1) m }
   body ball {
     segment sphere {
@@ -56,7 +58,10 @@ struct Shot {
   std::string errors;
 };
 
-Shot Fire(const std::string& method, const std::vector<std::pair<std::string, std::string>>& set) {
+Shot Fire(const std::string& method, std::vector<std::pair<std::string, std::string>> set) {
+  // CVS-III's method fails its error test in the velocity at 1 ns (300 and 500 km/h from 0.05 m
+  // at 1e-8); the others need no more than the default.
+  if (method == "cvs") set.emplace_back("smallest", "1e-12 s");
   const Compiled compiled =
       CompileSource(Source::Text(SphereAtWall(method), "sphere_at_wall.sled"), set);
   if (!compiled.errors.empty()) return {{}, compiled.errors};
@@ -98,6 +103,12 @@ double ReboundSpeed(double m, double k, double c, double v) {
 
 class ContactTunnelling : public ::testing::TestWithParam<std::string> {};
 
+// How far the energy balance may be off (largest residual over the largest term), in tolerances:
+// as far as the speed may be. The exponential method and Rosenbrock, which measure the work in
+// their error test, close it to 0.2 and 20 tolerances; dopri5 (and `auto`, which is dopri5 here)
+// is 0.19 off at 1e-3 and 500 km/h from 1.09 m, its rebound speed as far off as that.
+constexpr double kBalance = 300.0;
+
 TEST_P(ContactTunnelling, FastSphereBouncesOffTheWallAtEveryDistanceStepAndTolerance) {
   // Before contacts were bounded, every method carried the sphere straight through the wall at
   // every tolerance: free flight has no error, so one step spanned the 40 mm contact zone.
@@ -121,6 +132,8 @@ TEST_P(ContactTunnelling, FastSphereBouncesOffTheWallAtEveryDistanceStepAndToler
           const double out = Last(series, Column(series, "ball.sphere.velocity.x [m/s]"));
           EXPECT_NEAR(out / v, 1.0, std::max(300 * tolerance, 1e-6)) << where;
           EXPECT_GT(Last(series, Column(series, "ball.sphere.position.x [m]")), 0.02) << where;
+          // The contact's work: the energy it stored is what it gave back.
+          EXPECT_LT(shot.result.summary.energy.relative(), kBalance * tolerance) << where;
         }
       }
     }
@@ -144,6 +157,8 @@ TEST_P(ContactTunnelling, DampedBounceLeavesWithTheForceLawsRestitution) {
       const double out = Last(series, Column(series, "ball.sphere.velocity.x [m/s]"));
       EXPECT_NEAR(out / expected, 1.0, std::max(300 * tolerance, 1e-6))
           << speed << " km/h, tol " << tolerance;
+      EXPECT_LT(shot.result.summary.energy.relative(), kBalance * tolerance)
+          << speed << " km/h, tol " << tolerance;
     }
   }
 }
@@ -155,7 +170,7 @@ std::string ChainOnFloor(const std::string& method) {
   param tol = 1e-6
   time { end = 200 ms  output_every = 10 ms }
   integrator )" + method +
-                     R"( { tolerance = tol  min_step = 1e-12 s }
+                     R"( { tolerance = tol }
   plane floor on ground { corners = (-1, -1, 0) m, (1, -1, 0) m, (-1, 1, 0) m }
   body chain {
 )";
