@@ -32,6 +32,7 @@ using sled::testing::WriteText;
 
 constexpr double kInch = 0.0254;
 constexpr double kPound = 0.45359237;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 // A body and the published figures it was made to (the sources are in each file's header).
 struct Target {
@@ -169,6 +170,50 @@ TEST(BodyFamily, TheChildrensHeadsAreHeavierForTheirSizeThanTheAdults) {
       if (s.name == "occupant.head") head = s.mass;
     }
     EXPECT_NEAR(head / TotalMass(c.scenario), share, 1e-3);
+  }
+}
+
+// std.postures.walking: with straight legs 15 degrees either side of the vertical, the H-point is
+// (hip-to-ankle length) cos 15 deg + ankle height above the soles, 895.6 mm for male50 and that
+// times the length ratio for child6. There both feet touch the road; 2 mm lower both are 2 mm
+// inside it (the checker's own contact geometry, W0004), so both soles are flat and level.
+TEST(BodyFamily, TheWalkingStanceStandsBothFeetFlatOnTheRoad) {
+  const std::map<std::string, double> h_point = {{"male50", 862.0 * std::cos(15.0 * kDeg) + 63.0},
+                                                 {"child6", 0.63034 * 895.6}};
+  for (const auto& [body, height] : h_point) {
+    for (const double lower : {0.0, 2.0}) {
+      SCOPED_TRACE(fmt::format("{} {} mm lower", body, lower));
+      const Checked c = CheckText(fmt::format(R"(scenario "walking" {{
+  import std.humans.{} as pedestrian
+  import std.postures.walking as walk
+  time {{ end = 10 ms  output_every = 1 ms }}
+  plane road on ground {{ corners = (-5, -5, 0) m, (5, -5, 0) m, (-5, 5, 0) m }}
+  contact pedestrian.foot_l with road {{ force = 100 kN/m }}
+  contact pedestrian.foot_r with road {{ force = 100 kN/m }}
+  initial pedestrian {{ h_point = (0, 0, {:.3f}) mm  orientation = (90, 0, 0) deg }}
+  initial pedestrian.hip_l {{ angles = walk.hip_leading }}
+  initial pedestrian.hip_r {{ angles = walk.hip_trailing }}
+  initial pedestrian.ankle_l {{ angles = walk.ankle_leading }}
+  initial pedestrian.ankle_r {{ angles = walk.ankle_trailing }}
+  initial pedestrian.shoulder_l {{ angles = walk.shoulder_against_leading }}
+  initial pedestrian.shoulder_r {{ angles = walk.shoulder_against_trailing }}
+}}
+)",
+                                              body, height - lower),
+                                  Stdlib());
+      EXPECT_EQ(c.errors, 0) << c.messages;
+      if (lower == 0.0) {
+        EXPECT_EQ(c.warnings, 0) << c.messages;
+      } else {
+        EXPECT_EQ(c.warnings, 2) << c.messages;
+        for (const char* foot : {"foot_l", "foot_r"}) {
+          EXPECT_NE(
+              c.messages.find(fmt::format("`pedestrian.{}` starts 2.0 mm inside `road`", foot)),
+              std::string::npos)
+              << c.messages;
+        }
+      }
+    }
   }
 }
 

@@ -23,8 +23,6 @@ using testing::JsonReader;
 using testing::ReadText;
 using testing::SledResult;
 
-using LoadCaseExamples = testing::SledProcessTest;
-
 // The speed of a point's velocity channels (ground frame) at a row.
 double Speed(const testing::CsvTable& table, std::size_t row, const std::string& prefix) {
   double sum = 0.0;
@@ -98,13 +96,15 @@ const testing::Json* Criterion(const testing::Json& summary, const std::string& 
   return nullptr;
 }
 
-// A vehicle's ground-frame velocity component `axis` (0, 1, 2) in a `--dump-at` printout: the
-// `velocity` line after the vehicle's name, `  velocity [m/s] = (x, y, z)`.
-double DumpedVehicleVelocity(const std::string& dump, const std::string& vehicle, int axis) {
+// A component (axis 0, 1, 2) of a vehicle's ground-frame `field` (`position`, `velocity`) in a
+// `--dump-at` printout: the line after the vehicle's name, `  velocity [m/s] = (x, y, z)`.
+double DumpedVehicle(const std::string& dump, const std::string& vehicle, const std::string& field,
+                     int axis) {
   const std::size_t name = dump.find("\n" + vehicle + "\n");
-  const std::size_t line = dump.find("velocity", name == std::string::npos ? dump.size() : name);
+  const std::size_t line =
+      dump.find("  " + field + " ", name == std::string::npos ? dump.size() : name);
   const std::size_t open = dump.find('(', line == std::string::npos ? dump.size() : line);
-  EXPECT_NE(open, std::string::npos) << "no velocity of " << vehicle;
+  EXPECT_NE(open, std::string::npos) << "no " << field << " of " << vehicle;
   if (open == std::string::npos) return NAN;
   const char* at = dump.c_str() + open + 1;
   double value = 0.0;
@@ -134,6 +134,35 @@ void ExpectEveryCriterionJudged(const testing::Json& summary) {
 void ExpectEnergyBalanceCloses(const testing::Json& summary) {
   EXPECT_LT(std::abs(summary["energy_balance"]["relative_residual"].number), 1e-4);
 }
+
+// A load-case example run as a user runs it, with the state printed at one time.
+struct ExampleRun {
+  bool ok = false;
+  testing::Json summary;
+  testing::CsvTable table;
+  std::string dump;  // the `--dump-at` printout
+};
+
+class LoadCaseExamples : public testing::SledProcessTest {
+ protected:
+  // Runs `examples/NAME.sled` with `--dump-at DUMP_AT` and checks what every load case must
+  // show: every criterion judged against a named standard, and the energy balance closed.
+  ExampleRun RunExample(const std::string& name, const std::string& dump_at) {
+    ExampleRun run;
+    const fs::path out = temp() / "out";
+    const SledResult result =
+        Sled({"run", "examples/" + name + ".sled", "-o", out.string(), "--dump-at", dump_at});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    if (result.exit_code != 0) return run;
+    run.summary = JsonReader::Parse(ReadText(out / "summary.json"));
+    run.table = testing::ReadCsv(out / "timeseries.csv");
+    run.dump = ReadText(out / ("dump_" + dump_at + ".txt"));
+    ExpectEveryCriterionJudged(run.summary);
+    ExpectEnergyBalanceCloses(run.summary);
+    run.ok = !run.table.rows.empty();
+    return run;
+  }
+};
 
 TEST_F(LoadCaseExamples, TheRearImpactSettlesStartsAtRestAndJudgesItsCriteria) {
   const fs::path out = temp() / "out";
@@ -187,22 +216,18 @@ TEST_F(LoadCaseExamples, TheRearImpactSettlesStartsAtRestAndJudgesItsCriteria) {
 }
 
 TEST_F(LoadCaseExamples, TheSideImpactMovesTheBuckByItsPulseAndJudgesTtiFromItsChannels) {
-  const fs::path out = temp() / "out";
-  const SledResult result =
-      Sled({"run", "examples/side_impact.sled", "-o", out.string(), "--dump-at", "0.1"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const testing::Json summary = JsonReader::Parse(ReadText(out / "summary.json"));
+  const ExampleRun run = RunExample("side_impact", "0.1");
+  ASSERT_TRUE(run.ok);
+  const testing::Json& summary = run.summary;
   EXPECT_TRUE(summary["settle"]["converged"].boolean);
-  ExpectEveryCriterionJudged(summary);
-  ExpectEnergyBalanceCloses(summary);
   // The half-sine's closed form: after the 50 ms pulse the buck moves at -delta_v along y, and
   // by 100 ms it has gone delta_v T / 2 + delta_v (0.1 s - T).
   const double dv = 20.2 / 3.6;
-  const std::string dump = ReadText(out / "dump_0.1.txt");
-  EXPECT_NEAR(DumpedVehicleVelocity(dump, "sled", 1), -dv, 1e-6);
+  EXPECT_NEAR(DumpedVehicle(run.dump, "sled", "velocity", 1), -dv, 1e-6);
+  EXPECT_NEAR(DumpedVehicle(run.dump, "sled", "position", 1), -(dv * 0.05 / 2 + dv * 0.05), 1e-6);
   // TTI from the raw lateral accelerations (each segment's own y), filtered here at CFC 180:
   // (peak rib + peak lower spine) / 2 in g.
-  const testing::CsvTable table = testing::ReadCsv(out / "timeseries.csv");
+  const testing::CsvTable& table = run.table;
   ASSERT_GT(table.rows.size(), 100U);
   const double dt = table.rows[1][0] - table.rows[0][0];
   const double rib =
@@ -224,25 +249,19 @@ TEST_F(LoadCaseExamples, TheSideImpactMovesTheBuckByItsPulseAndJudgesTtiFromItsC
 }
 
 TEST_F(LoadCaseExamples, TheChildOnTheBoosterIsHeldByTheLapBeltAndTheSledStopsFrom50Kmh) {
-  const fs::path out = temp() / "out";
-  const SledResult result =
-      Sled({"run", "examples/child_booster.sled", "-o", out.string(), "--dump-at", "0.12"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const testing::Json summary = JsonReader::Parse(ReadText(out / "summary.json"));
+  const ExampleRun run = RunExample("child_booster", "0.12");
+  ASSERT_TRUE(run.ok);
+  const testing::Json& summary = run.summary;
   EXPECT_TRUE(summary["settle"]["converged"].boolean);
   EXPECT_LE(summary["settle"]["largest_velocity"].number, 0.005);
-  ExpectEveryCriterionJudged(summary);
-  ExpectEnergyBalanceCloses(summary);
   // R44's stand-in stops the sled from 50 km/h: its velocity change after the 93.6 ms pulse is
   // -50 km/h along x (the sled starts at rest, so its velocity is -50 km/h).
-  const std::string dump = ReadText(out / "dump_0.12.txt");
-  EXPECT_NEAR(DumpedVehicleVelocity(dump, "sled", 0), -50.0 / 3.6, 1e-6);
+  EXPECT_NEAR(DumpedVehicle(run.dump, "sled", "velocity", 0), -50.0 / 3.6, 1e-6);
   // The lap belt, anchored at the booster's guides, carries the pelvis: it takes load and the
   // pelvis moves forward in the sled by less than 150 mm (with the guides ahead of the pelvis,
   // where the webbing lay behind it, the pelvis went over 250 mm forward before the shoulder belt
   // stopped it: so this can fail).
-  const testing::CsvTable table = testing::ReadCsv(out / "timeseries.csv");
-  ASSERT_FALSE(table.rows.empty());
+  const testing::CsvTable& table = run.table;
   const std::vector<double> pelvis_x =
       ColumnOf(table, "child.pelvis.relative_to.sled.position.x [m]");
   ASSERT_FALSE(pelvis_x.empty());
@@ -253,18 +272,13 @@ TEST_F(LoadCaseExamples, TheChildOnTheBoosterIsHeldByTheLapBeltAndTheSledStopsFr
 }
 
 TEST_F(LoadCaseExamples, TheYieldingSeatBackTurnsOnItsReclinerWhileItsFrameStaysWelded) {
-  const fs::path out = temp() / "out";
-  const SledResult result = Sled(
-      {"run", "examples/rear_impact_yielding_seat.sled", "-o", out.string(), "--dump-at", "0.1"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const testing::Json summary = JsonReader::Parse(ReadText(out / "summary.json"));
+  const ExampleRun run = RunExample("rear_impact_yielding_seat", "0.1");
+  ASSERT_TRUE(run.ok);
+  const testing::Json& summary = run.summary;
   EXPECT_TRUE(summary["settle"]["converged"].boolean);
-  ExpectEveryCriterionJudged(summary);
-  ExpectEnergyBalanceCloses(summary);
   // The trapezoid by delta-v: after its 90 ms the sled moves forward at 16 km/h.
-  EXPECT_NEAR(DumpedVehicleVelocity(ReadText(out / "dump_0.1.txt"), "sled", 0), 16.0 / 3.6, 1e-6);
-  const testing::CsvTable table = testing::ReadCsv(out / "timeseries.csv");
-  ASSERT_FALSE(table.rows.empty());
+  EXPECT_NEAR(DumpedVehicle(run.dump, "sled", "velocity", 0), 16.0 / 3.6, 1e-6);
+  const testing::CsvTable& table = run.table;
   // Three fixed points hold the frame: its pose in the sled does not move (to 0.1 mm, 1 mrad).
   for (const char* axis : {"x", "y", "z"}) {
     const std::vector<double> p =
@@ -288,6 +302,38 @@ TEST_F(LoadCaseExamples, TheYieldingSeatBackTurnsOnItsReclinerWhileItsFrameStays
   EXPECT_GT(PeakMagnitude(
                 ColumnOf(table, "occupant.head.seat.back.head_restraint.contact_force.normal [N]")),
             100.0);
+}
+
+TEST_F(LoadCaseExamples, TheChildPedestrianIsStruckWhenTheBumperReachesItsThigh) {
+  const ExampleRun run = RunExample("pedestrian_child", "0.1");
+  ASSERT_TRUE(run.ok);
+  const testing::Json& summary = run.summary;
+  const testing::Json* hic = Criterion(summary, "hic15");
+  ASSERT_NE(hic, nullptr);
+  EXPECT_EQ((*hic)["limit_source"].text, "EU pedestrian headform, Phase 1");
+  EXPECT_DOUBLE_EQ((*hic)["limit"].number, 1000.0);
+  // Braking at 0.7 g reached over a 100 ms ramp: by then the car has lost 0.7 g * 0.1 s / 2.
+  EXPECT_NEAR(DumpedVehicle(run.dump, "car", "velocity", 0), 40.0 / 3.6 - 0.7 * 9.80665 * 0.1 / 2.0,
+              1e-6);
+  // First contact where the geometry puts it: the bumper face starts 200 mm behind the child's
+  // pelvis and the left thigh's surface is 53.6 + 50.4 mm behind it (hip joint and thigh
+  // semi-axis of child6), so the bumper closes the 96 mm at 40 km/h (braking moves it by
+  // microns in that time) after 8.64 ms.
+  const testing::CsvTable& table = run.table;
+  const std::vector<double> bumper =
+      ColumnOf(table, "pedestrian.upper_leg_l.front.bumper.contact_force.normal [N]");
+  ASSERT_EQ(bumper.size(), table.rows.size());
+  double first = NAN;
+  for (std::size_t row = 0; row < bumper.size(); ++row) {
+    if (bumper[row] > 0.0) {
+      first = table.rows[row][0];
+      break;
+    }
+  }
+  EXPECT_NEAR(first, 0.096 / (40.0 / 3.6), 2e-4);
+  // The head strikes the bonnet.
+  EXPECT_GT(PeakMagnitude(ColumnOf(table, "pedestrian.head.front.bonnet.contact_force.normal [N]")),
+            1000.0);
 }
 
 }  // namespace
