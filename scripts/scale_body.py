@@ -3,14 +3,17 @@
 
     scripts/scale_body.py --name female05 --stature 1501mm --mass 48.99kg > my_body.sled
 
-The scaling is the one the Hybrid III family was sized by (a 50th-percentile design scaled to
-other statures and masses; Mertz et al., SAE 890756): every length of the reference body (joint
-locations, contact ellipsoids, the H-point) by the stature ratio L, every mass by the mass ratio
-M, every moment of inertia by M * L^2. Joint torque functions are scaled by M * L, so that each
-joint carries its own segments' weight at the same angle as the reference does (static
-similarity), and joint viscous damping by M * L^1.5, which keeps each joint's damping ratio
-(its natural frequency goes as sqrt(torque / inertia) ~ L^-0.5). Angles (ranges of motion) are
-kept. The torque and damping rules are this script's engineering choice, not a published law.
+The scaling follows how the Hybrid III family was sized: NHTSA's dummy pages call the 5th
+female "a scaled down version" of the 50th male and the 6-year-old "scaled down from" it. Every
+length of the reference body (joint locations, contact ellipsoids, the H-point) is multiplied by
+the length ratio L that gives the stated stature, every mass by the mass ratio M, each moment of
+inertia by its segment's mass ratio times its length ratio squared. Each joint's torque functions
+are multiplied by M_j * L_j (M_j the ratio of the mass beyond the joint, L_j the child segment's
+length ratio), so that the joint holds up what hangs beyond it at the reference's angle under
+gravity (static similarity), and its viscous damping by M_j * L_j^1.5, which keeps its damping
+ratio (a joint's natural frequency goes as sqrt(torque / inertia), ~ L^-0.5). Angles (ranges of
+motion) are kept. The torque and damping rules are this script's engineering choice, not a
+published law.
 
 Options that bring published data in where a uniform scaling would be wrong:
   --segment-mass GROUP=KG   a published segment (group) mass, both sides together, e.g. a Hybrid
