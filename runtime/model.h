@@ -285,14 +285,15 @@ struct Model {
     kNic,
     kTti,
     kTibiaIndex,
+    kViscousCriterion,  // of a slip joint between the spine and the sternum
   };
   std::vector<CriterionKind> criterion_kind;
   std::vector<std::string> criterion_name;    // as the language spells it: hic15
   std::vector<std::string> criterion_target;  // the segment or joint: occupant.head
-  // The output group it reads: the acceleration of the segment's centre of mass, or the joint
-  // force; and a second group (else -1): the joint torque for Nij, Nkm and the Tibia Index, the
-  // acceleration of T1 for NIC and of the lower spine for TTI. Accelerations are in each
-  // segment's own axes, joint loads in the child's.
+  // The output group it reads: the acceleration of the segment's centre of mass, the joint
+  // force, or (the Viscous Criterion) a slip joint's displacement; and a second group (else -1):
+  // the joint torque for Nij, Nkm and the Tibia Index, the acceleration of T1 for NIC and of the
+  // lower spine for TTI. Accelerations are in each segment's own axes, joint loads in the child's.
   std::vector<std::int32_t> criterion_output;
   std::vector<std::int32_t> criterion_second_output;
   std::vector<std::uint8_t> criterion_filter_iso;  // 1: ISO 6487 coefficients

@@ -303,11 +303,27 @@ void OutputChecker::CheckOutputs() {
           continue;
         }
         const EntityKind kind = *EntityKindFromName(spec->target_kind);
-        Entity* target = Resolve(scope, *value.arguments[0].value, {kind});
-        if (!target) continue;
         Criterion criterion;
         criterion.kind = static_cast<Criterion::Kind>(spec - AllCriterionSpecs().data());
-        (kind == EntityKind::kSegment ? criterion.segment : criterion.joint) = target->index;
+        // The Viscous Criterion reads a chest's deflection: a slip joint between the spine and
+        // the sternum gives one (a rigid thorax segment does not, and is noted when lowered).
+        const bool viscous = criterion.kind == Criterion::Kind::kViscousCriterion;
+        Entity* target = Resolve(scope, *value.arguments[0].value,
+                                 viscous ? std::vector<EntityKind>{kind, EntityKind::kJoint}
+                                         : std::vector<EntityKind>{kind});
+        if (!target) continue;
+        if (target->kind == EntityKind::kJoint && viscous &&
+            scenario_.joints[static_cast<std::size_t>(target->index)].type != JointType::kSlip) {
+          Report(DiagnosticKind::kWrongKindOfName, value.arguments[0].value->range,
+                 fmt::format("`viscous_criterion` of a joint reads its sliding as the chest's "
+                             "deflection: `{}` is not a slip joint",
+                             value.arguments[0].value->PathText()),
+                 "not a slip joint",
+                 "name the slip joint between the spine and the sternum, or the chest segment");
+          continue;
+        }
+        (target->kind == EntityKind::kSegment ? criterion.segment : criterion.joint) =
+            target->index;
         criterion.iso_filter = iso_filter;
         criterion.range = value.range;
         if (!ReadCriterionArguments(scope, value, *spec, criterion)) continue;

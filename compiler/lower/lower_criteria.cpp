@@ -83,8 +83,9 @@ runtime::Model::CriterionKind ModelKind(Criterion::Kind kind) {
       return K::kTti;
     case Criterion::Kind::kTibiaIndex:
       return K::kTibiaIndex;
+    case Criterion::Kind::kViscousCriterion:  // of a slip joint (a segment's is noted, not lowered)
+      return K::kViscousCriterion;
     case Criterion::Kind::kFemurLoad:
-    case Criterion::Kind::kViscousCriterion:  // not lowered (LowerCriteria notes it)
       return K::kFemurLoad;
   }
   return K::kFemurLoad;
@@ -148,7 +149,8 @@ void LowerCriteria(Lowering& lowering) {
                          fmt::format("injury criterion `{}({})` needs a chest deflection, which a "
                                      "rigid thorax segment does not have (its contacts' "
                                      "penetrations measure the padding, not the ribcage); left "
-                                     "out",
+                                     "out (a chest of two segments on a slip joint has one: "
+                                     "give `viscous_criterion` that joint)",
                                      name, target));
         continue;
       }
@@ -179,7 +181,12 @@ void LowerCriteria(Lowering& lowering) {
         continue;
       }
       const auto [index, mirrored] = ModelSegment(lowering, joint.child);
-      output = FindOrAddOutput(lowering, Model::OutputKind::kJointForce, index, mirrored, target);
+      // The Viscous Criterion reads the slip joint's sliding, the chest's deflection.
+      output = FindOrAddOutput(lowering,
+                               criterion.kind == Criterion::Kind::kViscousCriterion
+                                   ? Model::OutputKind::kJointAngle
+                                   : Model::OutputKind::kJointForce,
+                               index, mirrored, target);
       if (criterion.kind == Criterion::Kind::kNij || criterion.kind == Criterion::Kind::kNkm ||
           criterion.kind == Criterion::Kind::kTibiaIndex) {
         second_output =

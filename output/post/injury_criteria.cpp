@@ -14,6 +14,7 @@
 #include "output/post/severity_index.h"
 #include "output/post/thoracic_trauma_index.h"
 #include "output/post/tibia_index.h"
+#include "output/post/viscous_criterion.h"
 #include "output/post/whiplash_criterion.h"
 
 namespace sled::runtime::post {
@@ -39,6 +40,8 @@ int InputClass(Kind kind) {
     // whose first stage is this class; sled stops there (docs/load_cases.md), which keeps more of
     // the peak than FIR100 does.
     case Kind::kTti:
+    // The chest's deflection for VC, as UN R94 practice filters it (crash-conventions.md §2.1).
+    case Kind::kViscousCriterion:
       return 180;
     case Kind::kNij:
     case Kind::kNkm:
@@ -86,6 +89,8 @@ Limit LimitOf(Kind kind) {
       return {85.0, "FMVSS 214 (SID, four-door)"};
     case Kind::kTibiaIndex:
       return {1.3, "UN R94"};
+    case Kind::kViscousCriterion:
+      return {1.0, "UN R94/R137"};
   }
   return {0.0, ""};
 }
@@ -117,6 +122,10 @@ class Evaluator {
     standard_ = c < model_.criterion_filter_iso.size() && model_.criterion_filter_iso[c] != 0
                     ? FilterStandard::kIso6487
                     : FilterStandard::kSaeJ211;
+    if (kind == Kind::kViscousCriterion) {
+      EvaluateViscous(c, base, out);
+      return;
+    }
     std::array<std::vector<double>, 3> xyz;
     if (!FilterGroup(model_.criterion_output[c], base.filter_class, xyz, base)) {
       out.push_back(base);
@@ -174,6 +183,8 @@ class Evaluator {
       case Kind::kTibiaIndex:
         EvaluatePair(c, kind, base, xyz, out);
         break;
+      case Kind::kViscousCriterion:  // above: one channel, not three
+        break;
     }
   }
 
@@ -195,6 +206,26 @@ class Evaluator {
       }
     }
     return true;
+  }
+
+  // VC from a slip joint's displacement (its one channel): the joint's axis points from the
+  // spine to the sternum, so the chest is compressed, D > 0, when the displacement is negative.
+  // Hybrid III 50th male constants (SF 1.3, Dc 229 mm).
+  void EvaluateViscous(std::size_t c, CriterionValue base, std::vector<CriterionValue>& out) {
+    std::vector<double> deflection;
+    std::string error;
+    if (raw_.rows() < 5) {
+      base.reason = "the run produced fewer than five output rows";
+    } else if (FilterColumn(raw_, columns_.at(static_cast<std::size_t>(model_.criterion_output[c])),
+                            period_, base.filter_class, standard_, deflection, &error)) {
+      for (double& d : deflection) d = -d;
+      const ViscousResult vc = ViscousCriterion(deflection, period_, start_, kHybridIII50thMaleVc);
+      out.push_back(Done(base, vc.value, "m/s", vc.time, vc.time));
+      return;
+    } else {
+      base.reason = error;
+    }
+    out.push_back(base);
   }
 
   static std::vector<double> ResultantG(const std::array<std::vector<double>, 3>& xyz) {

@@ -134,5 +134,62 @@ TEST_F(RunCriteria, OutputRequestsCarryTheirFilterClass) {
   EXPECT_THAT(ReadText(out / "timeseries.csv"), HasSubstr("dummy.neck.acceleration.z"));
 }
 
+// A chest of two segments, the spine and the sternum, on a slip joint along x with a spring
+// between them, squeezed by a constant force F across the joint from rest: the relative motion
+// is that of the reduced mass mu on the spring k, so the compression is D(t) = (F / k) (1 -
+// cos w t), w = sqrt(k / mu), its rate V = (F / k) w sin w t, and VC = SF V D / Dc peaks where
+// (1 - cos) sin does, at w t = 2 pi / 3, at SF (F / k)^2 w (3 sqrt(3) / 4) / Dc (Hybrid III 50th
+// male: SF = 1.3, Dc = 0.229 m; crash-conventions.md §2.1).
+constexpr const char* kChest = R"(scenario "chest" {
+  gravity = (0, 0, 0) m/s^2
+  time { end = 60 ms  output_every = 0.1 ms }
+  body chest {
+    segment spine { mass = 20 kg  inertia = (0.2, 0.2, 0.2) kg*m^2 }
+    segment sternum { mass = 0.5 kg  inertia = (0.001, 0.001, 0.001) kg*m^2 }
+    joint ribcage : slip(spine -> sternum) {
+      at spine = (100, 0, 0) mm
+      at sternum = (0, 0, 0) mm
+      axis = x
+    }
+  }
+  spring ribs : chest.spine -> chest.sternum {
+    at chest.spine = (0, 0, 0) mm
+    at chest.sternum = (0, 0, 0) mm
+    stiffness = 10 kN/m
+  }
+  load squeeze on chest.ribcage { force = -300 N }
+  output { criteria = viscous_criterion(chest.ribcage) }
+}
+)";
+
+TEST_F(RunCriteria, TheViscousCriterionOfASlipJointChestIsTheClosedForm) {
+  WriteText(temp() / "chest.sled", kChest);
+  const fs::path out = temp() / "out";
+  const SledResult result = Sled({"run", (temp() / "chest.sled").string(), "-o", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const double mu = 20.0 * 0.5 / 20.5;
+  const double w = std::sqrt(10000.0 / mu);
+  const double amplitude = 300.0 / 10000.0;
+  const double expected = 1.3 * amplitude * amplitude * w * (3.0 * std::sqrt(3.0) / 4.0) / 0.229;
+  const std::string vc = CriterionLine(ReadText(out / "summary.json"), "viscous_criterion");
+  ASSERT_FALSE(vc.empty()) << result.err;
+  EXPECT_NEAR(Field(vc, "value"), expected, 0.005 * expected);
+  EXPECT_NEAR(Field(vc, "window_start"), 2.0 * M_PI / 3.0 / w, 2e-4);
+  EXPECT_THAT(vc, HasSubstr("\"unit\": \"m/s\""));
+  EXPECT_EQ(Field(vc, "limit"), 1.0);
+  EXPECT_THAT(vc, HasSubstr("\"limit_source\": \"UN R94/R137\""));
+  EXPECT_THAT(vc, HasSubstr("\"filter_class\": 180"));
+}
+
+TEST_F(RunCriteria, TheViscousCriterionOfAJointThatDoesNotSlideIsRefused) {
+  std::string scene = kChest;
+  scene.replace(scene.find("slip(spine -> sternum)"), 22, "pin(spine -> sternum)");
+  WriteText(temp() / "pin.sled", scene);
+  const SledResult result = Sled({"check", (temp() / "pin.sled").string()});
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_THAT(result.out + result.err, HasSubstr("E0205"));
+  EXPECT_THAT(result.out + result.err, HasSubstr("`chest.ribcage` is not a slip joint"));
+}
+
 }  // namespace
 }  // namespace sled

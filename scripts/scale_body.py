@@ -1,0 +1,356 @@
+#!/usr/bin/env python3
+"""Makes a body of another size from std.humans.male50 by length and mass scaling.
+
+    scripts/scale_body.py --name female05 --stature 1501mm --mass 48.99kg > my_body.sled
+
+The scaling follows how the Hybrid III family was sized: NHTSA's dummy pages call the 5th
+female "a scaled down version" of the 50th male and the 6-year-old "scaled down from" it. Every
+length of the reference body (joint locations, contact ellipsoids, the H-point) is multiplied by
+the length ratio L that gives the stated stature, every mass by the mass ratio M, each moment of
+inertia by its segment's mass ratio times its length ratio squared. Each joint's torque functions
+are multiplied by M_j * L_j (M_j the ratio of the mass beyond the joint, L_j the child segment's
+length ratio), so that the joint holds up what hangs beyond it at the reference's angle under
+gravity (static similarity), and its viscous damping by M_j * L_j^1.5, which keeps its damping
+ratio (a joint's natural frequency goes as sqrt(torque / inertia), ~ L^-0.5). Angles (ranges of
+motion) are kept. The torque and damping rules are this script's engineering choice, not a
+published law.
+
+Options that bring published data in where a uniform scaling would be wrong:
+  --segment-mass GROUP=KG   a published segment (group) mass, both sides together, e.g. a Hybrid
+                            III dummy's segment weights; shared inside the group in the reference
+                            body's proportions; the other segments take what is left of --mass in
+                            the reference proportions, so the total is --mass exactly.
+  --head-length MM          the published head length (glabella to back of the head): the head
+                            segment is scaled by its own factor (head length / the reference's
+                            200 mm), and the rest of the body by the factor that keeps --stature.
+
+Every stated input is written into the new file's header; tests/compiler/body_family_test.cpp
+checks each body's total mass and standing height (computed from its geometry) against them.
+"""
+import argparse
+import re
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+REFERENCE = ROOT / "stdlib" / "humans" / "male50.sled"
+REFERENCE_HEAD_LENGTH_MM = 200.0  # male50's head ellipsoid is 2 x 100 mm long (its header)
+
+GROUPS = {
+    "head": ["head"],
+    "neck": ["neck"],
+    "upper_torso": ["thorax"],
+    "lower_torso": ["abdomen", "pelvis"],
+    "torso": ["thorax", "abdomen", "pelvis"],
+    "upper_arms": ["upper_arm_l", "upper_arm_r"],
+    "lower_arms": ["lower_arm_l", "lower_arm_r"],
+    "upper_legs": ["upper_leg_l", "upper_leg_r"],
+    "lower_legs_feet": ["lower_leg_l", "lower_leg_r", "foot_l", "foot_r"],
+    "lower_legs": ["lower_leg_l", "lower_leg_r"],
+    "feet": ["foot_l", "foot_r"],
+}
+
+NUMBER = r"-?\d+(?:\.\d+)?(?:e-?\d+)?"
+VECTOR = re.compile(r"\(\s*(" + NUMBER + r")\s*,\s*(" + NUMBER + r")\s*,\s*(" + NUMBER + r")\s*\)")
+
+
+def quantity(text, unit):
+    """'1501mm', '1.501 m', '48.99kg' -> the value in `unit` (mm or kg)."""
+    match = re.fullmatch(r"\s*(" + NUMBER + r")\s*([a-z]*)\s*", text)
+    if not match:
+        raise SystemExit(f"scale_body: cannot read '{text}' as a quantity")
+    value, given = float(match.group(1)), match.group(2) or unit
+    factors = {"mm": {"mm": 1, "cm": 10, "m": 1000, "in": 25.4}, "kg": {"kg": 1, "g": 0.001, "lb": 0.45359237}}
+    if given not in factors[unit]:
+        raise SystemExit(f"scale_body: '{text}' is not a {unit} quantity")
+    return value * factors[unit][given]
+
+
+def fmt(value, digits=4):
+    """A number with `digits` significant digits, without an exponent."""
+    if value == 0:
+        return "0"
+    text = f"{value:.{digits}g}"
+    if "e" in text:
+        text = f"{float(text):f}".rstrip("0").rstrip(".")
+    return text
+
+
+def fmt_length(value):
+    return fmt(round(value, 1), 6) if abs(value) >= 1 else fmt(round(value, 2), 3)
+
+
+class Reference:
+    """The reference body's segments, joints and geometry as male50.sled writes them."""
+
+    def __init__(self, text):
+        self.text = text
+        self.masses = {}
+        self.parent = {}  # child -> (parent, at_parent, at_child)
+        self.ellipsoids = {}  # segment -> [(semi_axes, center)]
+        segment = None
+        joint = None
+        for line in text.splitlines():
+            s = line.strip()
+            m = re.match(r"segment (\w+) \{", s)
+            if m:
+                segment = m.group(1)
+            m = re.match(r"mass = (" + NUMBER + r") kg", s)
+            if m and segment:
+                self.masses[segment] = float(m.group(1))
+            m = re.match(r"ellipsoid \{ semi_axes = (.*) mm\s+center = (.*) mm \}", s)
+            if m and segment:
+                self.ellipsoids.setdefault(segment, []).append(
+                    (vector(m.group(1)), vector(m.group(2))))
+            m = re.match(r"joint (\w+) : \w+\((\w+) -> (\w+)\)", s)
+            if m:
+                segment = None
+                joint = [m.group(2), m.group(3), None, None]
+            m = re.match(r"at (\w+) = (.*) mm", s)
+            if m and joint:
+                slot = 2 if m.group(1) == joint[0] else 3
+                joint[slot] = vector(m.group(2))
+                if joint[2] and joint[3]:
+                    self.parent[joint[1]] = (joint[0], joint[2], joint[3])
+                    joint = None
+
+    def stature(self, scale_of):
+        """Standing height (all joint angles zero): the top of the highest contact ellipsoid less
+        the bottom of the lowest, with each segment's lengths multiplied by scale_of(segment)."""
+        position = {}
+
+        def at(segment):
+            if segment not in position:
+                if segment not in self.parent:
+                    position[segment] = 0.0
+                else:
+                    parent, at_parent, at_child = self.parent[segment]
+                    position[segment] = (at(parent) + at_parent[2] * scale_of(parent) -
+                                         at_child[2] * scale_of(segment))
+            return position[segment]
+
+        top, bottom = -1e9, 1e9
+        for segment, shapes in self.ellipsoids.items():
+            for semi_axes, center in shapes:
+                z = at(segment) + center[2] * scale_of(segment)
+                top = max(top, z + semi_axes[2] * scale_of(segment))
+                bottom = min(bottom, z - semi_axes[2] * scale_of(segment))
+        return top - bottom
+
+
+def vector(text):
+    m = VECTOR.fullmatch(text.strip())
+    if not m:
+        raise SystemExit(f"scale_body: cannot read the vector '{text}'")
+    return [float(m.group(i)) for i in (1, 2, 3)]
+
+
+def scale_vector(m, factor, scale=fmt_length):
+    return "(" + ", ".join(scale(float(m.group(i)) * factor) for i in (1, 2, 3)) + ")"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--name", required=True, help="the new body's name")
+    parser.add_argument("--stature", required=True, help="standing height, e.g. 1501mm")
+    parser.add_argument("--mass", required=True, help="total mass, e.g. 48.99kg")
+    parser.add_argument("--segment-mass", action="append", default=[], metavar="GROUP=MASS")
+    parser.add_argument("--head-length", help="published head length, e.g. 172.7mm")
+    parser.add_argument("--title", default="", help="what the body is, for the header")
+    parser.add_argument("--source", action="append", default=[], help="a source line for the header")
+    parser.add_argument("--reference", default=str(REFERENCE), help=argparse.SUPPRESS)
+    args = parser.parse_args()
+
+    if not re.fullmatch(r"[a-z_][a-z0-9_]*", args.name):
+        raise SystemExit("scale_body: --name must be a lower-case identifier")
+    ref = Reference(Path(args.reference).read_text())
+    stature = quantity(args.stature, "mm")
+    mass = quantity(args.mass, "kg")
+    ref_mass = sum(ref.masses.values())
+    ones = ref.stature(lambda _: 1.0)
+
+    # Masses: published groups first, the rest in the reference proportions.
+    masses = {}
+    for item in args.segment_mass:
+        group, _, value = item.partition("=")
+        if group not in GROUPS:
+            raise SystemExit(f"scale_body: unknown group '{group}' (known: {', '.join(GROUPS)})")
+        members = GROUPS[group]
+        if any(s in masses for s in members):
+            raise SystemExit(f"scale_body: group '{group}' overlaps another --segment-mass")
+        group_ref = sum(ref.masses[s] for s in members)
+        for s in members:
+            masses[s] = quantity(value, "kg") * ref.masses[s] / group_ref
+    rest_ref = sum(m for s, m in ref.masses.items() if s not in masses)
+    rest = mass - sum(masses.values())
+    if (rest_ref > 0 and rest <= 0) or (rest_ref == 0 and abs(rest) > 1e-6 * mass):
+        raise SystemExit("scale_body: the segment masses do not add up to the total --mass")
+    for s, m in ref.masses.items():
+        if s not in masses:
+            masses[s] = m * rest / rest_ref if rest_ref > 0 else 0.0
+
+    # Lengths: the head by its own factor when its length is given, the rest to the stature.
+    head = quantity(args.head_length, "mm") / REFERENCE_HEAD_LENGTH_MM if args.head_length else None
+    if head is None:
+        body_scale = stature / ones
+    else:
+        # Standing height is linear in the head's factor h and the rest's l while the head stays
+        # the top and a foot the bottom: S = h * A + l * B.
+        head_share = ref.stature(lambda seg: 2.0 if seg == "head" else 1.0) - ones
+        body_scale = (stature - head * head_share) / (ones - head_share)
+        if body_scale <= 0:
+            raise SystemExit("scale_body: the head length does not fit the stature")
+
+    def length_scale(segment):
+        return head if head is not None and segment == "head" else body_scale
+
+    achieved = ref.stature(length_scale)
+    mass_ratio = mass / ref_mass
+
+    # A joint's torques hold up what hangs beyond it: scaled by that mass's ratio M_j and the
+    # child segment's length ratio L_j (its weight's lever), so the body stands and sits at the
+    # reference's joint angles under gravity; damping by M_j * L_j^1.5 keeps the damping ratio.
+    def beyond(joint_child, table):
+        return table[joint_child] + sum(beyond(c, table) for c, (p, _, _) in ref.parent.items()
+                                        if p == joint_child)
+
+    def torque_factor(child):
+        return beyond(child, masses) / beyond(child, ref.masses) * length_scale(child)
+
+    def viscous_factor(child):
+        return beyond(child, masses) / beyond(child, ref.masses) * length_scale(child) ** 1.5
+
+    out = []
+    title = args.title or f"a body of {fmt(stature)} mm and {fmt(mass)} kg"
+    out.append(f"// std.humans.{args.name}: {title}.")
+    out.append("// Generated by scripts/scale_body.py from std.humans.male50; do not edit by hand:")
+    command = ["scripts/scale_body.py", f"--name {args.name}", f"--stature {args.stature}",
+               f"--mass {args.mass}"]
+    command += [f"--segment-mass {m}" for m in args.segment_mass]
+    if args.head_length:
+        command.append(f"--head-length {args.head_length}")
+    command.append("--title ... --source ...")
+    line = "//  "
+    for word in command:
+        if len(line) + len(word) > 96:
+            out.append(line + " \\")
+            line = "//    "
+        line += " " + word
+    out.append(line)
+    out.append("//")
+    out.append(f"// Stated inputs: stature {fmt(stature, 5)} mm, total mass {fmt(mass, 5)} kg.")
+    for line in args.source:
+        out.append(f"//   {line}")
+    out.append("//")
+    out.append("// Derivation (scripts/scale_body.py's header has the rules): male50 is 77.99 kg and")
+    out.append(f"// {fmt(ones, 5)} mm tall standing (from its geometry). Lengths times {fmt(body_scale, 5)}"
+               + (f", the head's times {fmt(head, 5)}." if head is not None else "."))
+    if args.segment_mass:
+        out.append("// Masses: the groups given above, each shared in male50's proportions"
+                   + ("; every other" if rest_ref > 0 else "."))
+        if rest_ref > 0:
+            out.append(f"// segment times {fmt(rest / rest_ref, 5)} (what is left of the total).")
+    else:
+        out.append(f"// Masses times {fmt(mass_ratio, 5)}.")
+    out.append("// Each segment's moments of inertia times its mass ratio and its length ratio squared.")
+    out.append("// Each joint's torque tables times M_j * L_j and its viscous damping times M_j * L_j^1.5,")
+    out.append("// M_j the ratio of the mass beyond the joint and L_j the child segment's length ratio:")
+    out.append("// they keep male50's joint angles under gravity and its damping ratios (an engineering")
+    out.append("// estimate, not measured). Ranges of motion are male50's (adult) ones. Standing height")
+    out.append(f"// from this file's geometry: {fmt(achieved, 5)} mm. What male50's header calls an estimate")
+    out.append("// is one here too.")
+    out.append("//")
+    out.append("// Frames as in male50: x forward, y left, z up, each segment frame at its centre of mass;")
+    out.append("// all joint angles zero is the standing posture; the H-point is midway between the hips.")
+
+    # The joints each torque function serves. male50 shares functions between joints (the two
+    # sides; the two neck joints); a function whose joints scale apart is written once per scale,
+    # named after the first joint of each (`neck_nutation_neck_lower`).
+    uses = {}  # function -> [(joint, child)]
+    for j in re.finditer(r"joint (\w+) : \w+\(\w+ -> (\w+)\) \{([^}]*)\}", ref.text):
+        for f in re.finditer(r"(?:flexure|twist|precession|nutation|spin) = (\w+)", j.group(3)):
+            uses.setdefault(f.group(1), []).append((j.group(1), j.group(2)))
+    copies = {}  # function -> [(new name, factor)]
+    renamed = {}  # (joint, function) -> new name
+    for function, joints in uses.items():
+        by_factor = {}
+        for joint, child in joints:
+            by_factor.setdefault(round(torque_factor(child), 12), []).append(joint)
+        single = len(by_factor) == 1
+        copies[function] = []
+        for factor, group in by_factor.items():
+            name = function if single else f"{function}_{group[0]}"
+            copies[function].append((name, factor))
+            for joint in group:
+                renamed[(joint, function)] = name
+
+    def scaled_body_lines():
+        segment = None
+        joint = None
+        joint_child = None
+        for line in ref.text.split("\n")[ref.text[:ref.text.index("\nbody ")].count("\n") + 2:]:
+            s = line.strip()
+            if s.startswith("//"):
+                # male50's comments describe its own numbers; only the section titles stay.
+                if s.startswith("// ---"):
+                    yield line
+                continue
+            m = re.match(r"segment (\w+) \{", s)
+            if m:
+                segment = m.group(1)
+            m = re.match(r"joint (\w+) : \w+\((\w+) -> (\w+)\)", s)
+            if m:
+                segment, joint, joint_child = None, m.group(1), m.group(3)
+            new = line
+            m = re.search(r"mass = (" + NUMBER + r") kg", new)
+            if m and segment:
+                new = new.replace(m.group(0), f"mass = {fmt(masses[segment])} kg")
+            m = re.search(r"inertia = (\(.*\)) kg\*m\^2", new)
+            if m and segment:
+                factor = masses[segment] / ref.masses[segment] * length_scale(segment) ** 2
+                new = new.replace(m.group(1), scale_vector(VECTOR.fullmatch(m.group(1)), factor,
+                                                           lambda v: fmt(v, 4)))
+            if re.search(r"(semi_axes|center|h_point) = ", new) and " mm" in new:
+                factor = length_scale(segment) if segment else body_scale
+                new = re.sub(r"(semi_axes|center|h_point) = (\([^)]*\)) mm",
+                             lambda g: f"{g.group(1)} = "
+                             + scale_vector(VECTOR.fullmatch(g.group(2)), factor) + " mm", new)
+            m = re.match(r"(\s*at (\w+) = )(\(.*\)) mm", new)
+            if m:
+                new = m.group(1) + scale_vector(VECTOR.fullmatch(m.group(3)),
+                                                length_scale(m.group(2))) + " mm"
+            m = re.match(r"(\s*(?:flexure|twist|precession|nutation|spin) = )(\w+)$", new)
+            if m and joint:
+                new = m.group(1) + renamed[(joint, m.group(2))]
+            m = re.search(r"viscous = (" + NUMBER + r") N\*m\*s/rad", new)
+            if m:
+                new = new.replace(m.group(0), f"viscous = "
+                                  f"{fmt(float(m.group(1)) * viscous_factor(joint_child), 3)} N*m*s/rad")
+            yield new
+
+    lines = list(scaled_body_lines())
+    out.append(f"body {args.name} {{")
+    i = 0
+    while i < len(lines):
+        m = re.match(r"(\s*)function (\w+) = table", lines[i])
+        if not m:
+            out.append(lines[i])
+            i += 1
+            continue
+        end = i
+        while lines[end].strip() != "}":
+            end += 1
+        for name, factor in copies.get(m.group(2), [(m.group(2), 1.0)]):
+            out.append(lines[i].replace(f"function {m.group(2)} ", f"function {name} "))
+            for row in lines[i + 1:end + 1]:
+                r = re.match(r"(\s*)(" + NUMBER + r") deg -> (" + NUMBER + r") N\*m$", row)
+                out.append(f"{r.group(1)}{r.group(2)} deg -> {fmt(float(r.group(3)) * factor, 3)} N*m"
+                           if r else row)
+        i = end + 1
+    while out and not out[-1].strip():
+        out.pop()
+    sys.stdout.write("\n".join(out) + "\n")
+
+
+if __name__ == "__main__":
+    main()

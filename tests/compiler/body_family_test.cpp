@@ -1,0 +1,363 @@
+// The standard library's body family (docs/language.md §22, docs/load_cases.md): each body's total
+// mass and standing height against the published figures it was made to (the standing height
+// computed here from the body's own geometry: the top of the highest contact ellipsoid less the
+// bottom of the lowest, all joint angles zero), the files against what scripts/body_family.sh
+// makes, the generator for a size of the user's own, and each body seated in a seat scaled to it
+// settling under gravity without a warning.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "compiler/check/check.h"
+#include "lang/diagnostics/render.h"
+#include "lang/syntax/parser.h"
+#include "tests/compiler/mini_json.h"
+#include "tests/compiler/sled_process.h"
+
+namespace sled::compiler {
+namespace {
+
+namespace fs = std::filesystem;
+using sled::testing::Quote;
+using sled::testing::ReadText;
+using sled::testing::SledResult;
+using sled::testing::WriteText;
+
+constexpr double kInch = 0.0254;
+constexpr double kPound = 0.45359237;
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// A body and the published figures it was made to (the sources are in each file's header).
+struct Target {
+  std::string name;
+  double stature;  // [m]
+  double mass;     // [kg]
+};
+
+const std::vector<Target>& Family() {
+  static const std::vector<Target> family = {
+      // The Hybrid III 50th male: 78 kg, 1753 mm (crash-conventions.md §4); male50 rounds its
+      // segments to 77.99 kg.
+      {"male50", 1.753, 78.0},
+      // NHTSA's Hybrid III family table and segment weights.
+      {"female05", 59.1 * kInch, 108.03 * kPound},
+      {"child6", 45.0 * kInch, 51.6 * kPound},
+      {"child3", 37.2 * kInch, 34.09 * kPound},
+      // Wikipedia's Hybrid III page: 188 cm, 223 lb.
+      {"male95", 1.88, 223 * kPound},
+  };
+  return family;
+}
+
+struct Checked {
+  CheckedScenario scenario;
+  std::string messages;
+  int errors = 0;
+  int warnings = 0;
+};
+
+Checked CheckText(const std::string& text, const std::string& stdlib) {
+  lang::SourceManager sources;
+  const lang::FileId file = sources.Add("body_family_test.sled", text);
+  lang::DiagnosticCollector collector;
+  CheckOptions options;
+  options.diagnostics = &collector;
+  options.stdlib_root = stdlib;
+  Checked out;
+  out.scenario = ParseAndCheck(sources, file, options);
+  for (const auto& d : collector.diagnostics()) {
+    out.messages += lang::RenderCompact(sources, d) + "\n";
+  }
+  out.errors = collector.error_count();
+  out.warnings = collector.warning_count();
+  return out;
+}
+
+// A scene that imports the body `name` as `occupant` from the folder `stdlib` (its humans/).
+Checked CheckBody(const std::string& name, const std::string& stdlib) {
+  return CheckText(fmt::format("scenario \"t\" {{\n  import std.humans.{} as occupant\n"
+                               "  time {{ end = 10 ms  output_every = 1 ms }}\n}}\n",
+                               name),
+                   stdlib);
+}
+
+const std::string& Stdlib() {
+  static const std::string root = std::string(SLED_SOURCE_ROOT) + "/stdlib";
+  return root;
+}
+
+double TotalMass(const CheckedScenario& s) {
+  double total = 0;
+  for (const Segment& segment : s.segments) total += segment.mass;
+  return total;
+}
+
+// Standing height from the geometry: each segment's frame placed by its parent joint with every
+// joint angle zero (the joint's point in the parent and in the child coincide, axes aligned),
+// then the highest and lowest points of the segments' contact ellipsoids.
+double Stature(const CheckedScenario& s) {
+  std::vector<double> z(s.segments.size(), NAN);
+  std::vector<bool> placed(s.segments.size(), false);
+  std::vector<bool> is_child(s.segments.size(), false);
+  for (const Joint& j : s.joints) is_child[static_cast<std::size_t>(j.child)] = true;
+  for (std::size_t i = 0; i < s.segments.size(); ++i) {
+    if (!is_child[i]) {
+      z[i] = 0;
+      placed[i] = true;
+    }
+  }
+  for (std::size_t round = 0; round < s.segments.size(); ++round) {
+    for (const Joint& j : s.joints) {
+      const auto p = static_cast<std::size_t>(j.parent);
+      const auto c = static_cast<std::size_t>(j.child);
+      if (placed[p] && !placed[c]) {
+        z[c] = z[p] + j.location_in_parent[2] - j.location_in_child[2];
+        placed[c] = true;
+      }
+    }
+  }
+  double top = -1e9;
+  double bottom = 1e9;
+  for (std::size_t i = 0; i < s.segments.size(); ++i) {
+    EXPECT_TRUE(placed[i]) << s.segments[i].name << " hangs from no joint";
+    for (int e : s.segments[i].ellipsoids) {
+      const Ellipsoid& shape = s.ellipsoids[static_cast<std::size_t>(e)];
+      EXPECT_EQ(shape.orientation[0] + shape.orientation[1] + shape.orientation[2], 0.0)
+          << s.segments[i].name << ": a turned ellipsoid's extent needs more than its z axis";
+      top = std::max(top, z[i] + shape.center[2] + shape.semi_axes[2]);
+      bottom = std::min(bottom, z[i] + shape.center[2] - shape.semi_axes[2]);
+    }
+  }
+  return top - bottom;
+}
+
+const Joint& JointNamed(const CheckedScenario& s, const std::string& name) {
+  for (const Joint& j : s.joints) {
+    if (j.name == name) return j;
+  }
+  throw std::runtime_error("no joint " + name);
+}
+
+TEST(BodyFamily, EachBodyHasThePublishedMassAndStatureToOnePercent) {
+  for (const Target& target : Family()) {
+    SCOPED_TRACE(target.name);
+    const Checked c = CheckBody(target.name, Stdlib());
+    ASSERT_EQ(c.errors + c.warnings, 0) << c.messages;
+    EXPECT_EQ(c.scenario.segments.size(), 15U);
+    EXPECT_EQ(c.scenario.joints.size(), 14U);
+    EXPECT_NEAR(TotalMass(c.scenario), target.mass, 0.01 * target.mass);
+    EXPECT_NEAR(Stature(c.scenario), target.stature, 0.01 * target.stature);
+  }
+}
+
+TEST(BodyFamily, TheChildrensHeadsAreHeavierForTheirSizeThanTheAdults) {
+  // Hybrid III segment weights: the 6-year-old's head is 7.66 of 51.6 lb (14.8 %), the
+  // 3-year-old's 5.92 of 34.09 lb (17.4 %), against the adult's 5.6 % (4.33 of 77.99 kg).
+  const std::map<std::string, double> head_share = {
+      {"male50", 4.33 / 77.99}, {"child6", 7.66 / 51.6}, {"child3", 5.92 / 34.09}};
+  for (const auto& [name, share] : head_share) {
+    SCOPED_TRACE(name);
+    const Checked c = CheckBody(name, Stdlib());
+    double head = 0;
+    for (const Segment& s : c.scenario.segments) {
+      if (s.name == "occupant.head") head = s.mass;
+    }
+    EXPECT_NEAR(head / TotalMass(c.scenario), share, 1e-3);
+  }
+}
+
+// std.postures.walking: with straight legs 15 degrees either side of the vertical, the H-point is
+// (hip-to-ankle length) cos 15 deg + ankle height above the soles, 895.6 mm for male50 and that
+// times the length ratio for child6. There both feet touch the road; 2 mm lower both are 2 mm
+// inside it (the checker's own contact geometry, W0004), so both soles are flat and level.
+TEST(BodyFamily, TheWalkingStanceStandsBothFeetFlatOnTheRoad) {
+  const std::map<std::string, double> h_point = {{"male50", 862.0 * std::cos(15.0 * kDeg) + 63.0},
+                                                 {"child6", 0.63034 * 895.6}};
+  for (const auto& [body, height] : h_point) {
+    for (const double lower : {0.0, 2.0}) {
+      SCOPED_TRACE(fmt::format("{} {} mm lower", body, lower));
+      const Checked c = CheckText(fmt::format(R"(scenario "walking" {{
+  import std.humans.{} as pedestrian
+  import std.postures.walking as walk
+  time {{ end = 10 ms  output_every = 1 ms }}
+  plane road on ground {{ corners = (-5, -5, 0) m, (5, -5, 0) m, (-5, 5, 0) m }}
+  contact pedestrian.foot_l with road {{ force = 100 kN/m }}
+  contact pedestrian.foot_r with road {{ force = 100 kN/m }}
+  initial pedestrian {{ h_point = (0, 0, {:.3f}) mm  orientation = (90, 0, 0) deg }}
+  initial pedestrian.hip_l {{ angles = walk.hip_leading }}
+  initial pedestrian.hip_r {{ angles = walk.hip_trailing }}
+  initial pedestrian.ankle_l {{ angles = walk.ankle_leading }}
+  initial pedestrian.ankle_r {{ angles = walk.ankle_trailing }}
+  initial pedestrian.shoulder_l {{ angles = walk.shoulder_against_leading }}
+  initial pedestrian.shoulder_r {{ angles = walk.shoulder_against_trailing }}
+}}
+)",
+                                              body, height - lower),
+                                  Stdlib());
+      EXPECT_EQ(c.errors, 0) << c.messages;
+      if (lower == 0.0) {
+        EXPECT_EQ(c.warnings, 0) << c.messages;
+      } else {
+        EXPECT_EQ(c.warnings, 2) << c.messages;
+        for (const char* foot : {"foot_l", "foot_r"}) {
+          EXPECT_NE(
+              c.messages.find(fmt::format("`pedestrian.{}` starts 2.0 mm inside `road`", foot)),
+              std::string::npos)
+              << c.messages;
+        }
+      }
+    }
+  }
+}
+
+// Runs a command line through the shell; its exit code.
+int Shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return status == -1 ? -1 : WEXITSTATUS(status);
+}
+
+bool HavePython() { return Shell("python3 --version >/dev/null 2>&1") == 0; }
+
+class BodyGenerator : public sled::testing::SledProcessTest {};
+
+TEST_F(BodyGenerator, TheStandardFamilyIsWhatTheScriptMakes) {
+  if (!HavePython()) GTEST_SKIP() << "no python3 to run scripts/scale_body.py";
+  const fs::path root = SLED_SOURCE_ROOT;
+  const fs::path humans = temp() / "humans";
+  fs::create_directories(humans);
+  ASSERT_EQ(Shell(Quote((root / "scripts/body_family.sh").string()) + " " + Quote(humans.string())),
+            0);
+  int bodies = 0;
+  for (const auto& entry : fs::directory_iterator(humans)) {
+    SCOPED_TRACE(entry.path().filename().string());
+    EXPECT_EQ(ReadText(entry.path()), ReadText(root / "stdlib/humans" / entry.path().filename()))
+        << "stdlib/humans is not what scripts/body_family.sh makes: run it";
+    ++bodies;
+  }
+  EXPECT_EQ(bodies, 4);
+}
+
+TEST_F(BodyGenerator, MakesABodyOfTheUsersOwnStatureAndMass) {
+  if (!HavePython()) GTEST_SKIP() << "no python3 to run scripts/scale_body.py";
+  const fs::path root = SLED_SOURCE_ROOT;
+  const fs::path stdlib = temp() / "lib";
+  fs::create_directories(stdlib / "humans");
+  fs::copy_file(root / "stdlib/humans/male50.sled", stdlib / "humans/male50.sled");
+  struct Case {
+    std::string name;
+    std::string arguments;
+    double stature;
+    double mass;
+  };
+  const std::vector<Case> cases = {
+      {"tall_light", "--stature 1.95m --mass 70kg", 1.95, 70},
+      {"short_heavy", "--stature 158cm --mass 92kg", 1.58, 92},
+      {"big_head", "--stature 1300mm --mass 30kg --head-length 190mm --segment-mass head=3.8kg",
+       1.30, 30},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const fs::path file = stdlib / "humans" / (c.name + ".sled");
+    ASSERT_EQ(Shell("python3 " + Quote((root / "scripts/scale_body.py").string()) + " --name " +
+                    c.name + " " + c.arguments + " > " + Quote(file.string())),
+              0);
+    const Checked checked = CheckBody(c.name, stdlib.string());
+    ASSERT_EQ(checked.errors + checked.warnings, 0) << checked.messages;
+    EXPECT_NEAR(TotalMass(checked.scenario), c.mass, 0.01 * c.mass);
+    EXPECT_NEAR(Stature(checked.scenario), c.stature, 0.01 * c.stature);
+  }
+  // Published segment masses that do not fit the total are refused, not stretched.
+  EXPECT_NE(Shell("python3 " + Quote((root / "scripts/scale_body.py").string()) +
+                  " --name bad --stature 1.5m --mass 40kg --segment-mass torso=45kg"
+                  " >/dev/null 2>&1"),
+            0);
+}
+
+// The flagship's seated posture in male50's driver seat (std.vehicles.midsize_driver's seat pan,
+// seat back, floor and toe board and their foams) scaled to the body: lengths by the body's
+// length ratio (its hip width against male50's), forces by its mass ratio.
+std::string SeatedScene(const std::string& body, double length, double mass) {
+  auto point = [&](double x, double y, double z) {
+    return fmt::format("({:.2f}, {:.2f}, {:.2f}) mm", x * length, y * length, z * length);
+  };
+  auto table = [&](const std::vector<std::pair<double, double>>& rows, double loss) {
+    std::string out = "table(deflection -> force) {\n";
+    for (const auto& [d, f] : rows) {
+      out += fmt::format("    {:.3f} mm -> {:.2f} N\n", d * length, f * mass);
+    }
+    return out + fmt::format("    energy_loss = {}\n  }}", loss);
+  };
+  std::string s = "scenario \"seated " + body + "\" {\n  import std.humans." + body +
+                  " as occupant\n  gravity = (0, 0, -9.81) m/s^2\n"
+                  "  time { end = 10 ms  output_every = 1 ms }\n"
+                  "  integrator auto { tolerance = 1e-5  max_step = 0.5 ms }\n"
+                  "  settle { duration = 2 s  velocity = 5 mm/s  angular_velocity = 0.05 rad/s"
+                  "  force_change = 0.02 }\n";
+  s += "  plane seat_pan on ground { corners = " + point(-200, -260, -134.8) + ", " +
+       point(380, -260, -11.5) + ", " + point(-200, 260, -134.8) + " }\n";
+  s += "  plane seat_back on ground { corners = " + point(-113.2, -260, -110) + ", " +
+       point(-113.2, 260, -110) + ", " + point(-348.1, -260, 612.8) + " }\n";
+  s += "  plane floor on ground { corners = " + point(250, -300, -290) + ", " +
+       point(950, -300, -290) + ", " + point(250, 300, -290) + " }\n";
+  s += "  plane toe_board on ground { corners = " + point(758.5, 300, -290) + ", " +
+       point(758.5, -300, -290) + ", " + point(1003.6, 300, -84.3) + " }\n";
+  s += "  function foam = " +
+       table({{0, 0}, {20, 300}, {40, 900}, {60, 2200}, {80, 5000}, {100, 12000}}, 0.5) + "\n";
+  s += "  function back_foam = " +
+       table({{0, 0}, {20, 200}, {50, 800}, {80, 2500}, {100, 8000}}, 0.5) + "\n";
+  s += "  function carpet = " + table({{0, 0}, {5, 500}, {15, 3000}, {25, 10000}}, 0.6) + "\n";
+  for (const char* part : {"pelvis", "upper_leg_l", "upper_leg_r"}) {
+    s += fmt::format("  contact occupant.{} with seat_pan {{ force = foam  friction = 0.4 }}\n",
+                     part);
+  }
+  for (const char* part : {"pelvis", "abdomen", "thorax"}) {
+    s += fmt::format(
+        "  contact occupant.{} with seat_back {{ force = back_foam  friction = 0.2 }}\n", part);
+  }
+  for (const char* foot : {"foot_l", "foot_r"}) {
+    for (const char* surface : {"floor", "toe_board"}) {
+      s += fmt::format("  contact occupant.{} with {} {{ force = carpet  friction = 0.5 }}\n", foot,
+                       surface);
+    }
+  }
+  s += "  initial occupant { h_point = (0, 0, 0) mm  orientation = (0, -20, 0) deg }\n";
+  for (const char* side : {"l", "r"}) {
+    s += fmt::format("  initial occupant.hip_{} {{ angles = (0, -80, 0) deg }}\n", side);
+    s += fmt::format("  initial occupant.knee_{} {{ angles = (53.5, 0, 0) deg }}\n", side);
+    s += fmt::format("  initial occupant.ankle_{} {{ angles = (0, 6.5, 0) deg }}\n", side);
+    s += fmt::format("  initial occupant.elbow_{} {{ angles = (-60, 0, 0) deg }}\n", side);
+  }
+  return s + "  output { velocity occupant.head at (0, 0, 0) mm }\n}\n";
+}
+
+TEST_F(BodyGenerator, EveryBodySitsAndSettlesInItsSeatWithoutAWarning) {
+  const double male50_hip =
+      JointNamed(CheckBody("male50", Stdlib()).scenario, "occupant.hip_l").location_in_parent[1];
+  for (const Target& target : Family()) {
+    SCOPED_TRACE(target.name);
+    const Checked body = CheckBody(target.name, Stdlib());
+    const double length =
+        JointNamed(body.scenario, "occupant.hip_l").location_in_parent[1] / male50_hip;
+    const double mass = TotalMass(body.scenario) / 77.99;
+    const fs::path scene = temp() / (target.name + ".sled");
+    WriteText(scene, SeatedScene(target.name, length, mass));
+    const fs::path out = temp() / ("out_" + target.name);
+    const SledResult run = Sled({"run", scene.string(), "-o", out.string()});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err;
+    const sled::testing::Json summary =
+        sled::testing::JsonReader::Parse(ReadText(out / "summary.json"));
+    EXPECT_TRUE(summary["settle"]["converged"].boolean);
+    EXPECT_LE(summary["settle"]["largest_velocity"].number, 0.005);
+  }
+}
+
+}  // namespace
+}  // namespace sled::compiler
