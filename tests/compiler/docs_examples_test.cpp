@@ -193,7 +193,7 @@ std::vector<std::filesystem::path> SledFilesUnder(const std::string& folder) {
 TEST(ExamplesAndStdlib, EveryFileChecksWithoutErrorsOrWarnings) {
   std::set<std::string> seen;
   for (const std::string folder : {"examples", "stdlib"}) {
-    for (const std::filesystem::path& file : SledFilesUnder(kRoot + "/" + folder)) {
+    for (const std::filesystem::path& file : SledFilesUnder((kRoot + "/").append(folder))) {
       const std::string relative = std::filesystem::relative(file, kRoot).generic_string();
       seen.insert(relative);
       const Outcome outcome = CheckText(file.string(), ReadOrFail(file.string()));
