@@ -53,8 +53,9 @@ ConstraintPattern BuildConstraintPattern(const Model& model) {
   // The segment of each velocity coordinate, and the coordinates each row can involve.
   std::vector<std::size_t> dof_segment(nv);
   for (std::size_t s = 0; s < n; ++s) {
-    for (int k = 0; k < model.v_count[s]; ++k) {
-      dof_segment[static_cast<std::size_t>(model.v_address[s] + k)] = s;
+    const auto first = static_cast<std::size_t>(model.v_address[s]);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(model.v_count[s]); ++k) {
+      dof_segment[first + k] = s;
     }
   }
   auto on_path = [&](const FrameRef& frame, std::size_t j) {

@@ -46,7 +46,8 @@ namespace {
 std::atomic<bool> g_count_mallocs{false};
 std::atomic<long> g_mallocs{0};
 }  // namespace
-extern "C" void* __libc_malloc(std::size_t size);
+// glibc's own allocator, under its reserved name: the one this malloc hands every call to.
+extern "C" void* __libc_malloc(std::size_t size);  // NOLINT(bugprone-reserved-identifier)
 extern "C" void* malloc(std::size_t size) {
   if (g_count_mallocs.load(std::memory_order_relaxed)) {
     g_mallocs.fetch_add(1, std::memory_order_relaxed);

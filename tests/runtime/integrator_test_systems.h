@@ -75,11 +75,11 @@ class Kepler : public OdeSystem {
     const double r = std::sqrt(r2);
     const double r3 = r2 * r;
     const double r5 = r3 * r2;
-    for (int i = 0; i < 3; ++i) {
-      jacobian[static_cast<std::size_t>(i * 6 + i + 3)] = jacobian_scale_;
-      for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      jacobian[i * 6 + i + 3] = jacobian_scale_;
+      for (std::size_t j = 0; j < 3; ++j) {
         const double value = (i == j ? -1.0 / r3 : 0.0) + 3.0 * y[i] * y[j] / r5;
-        jacobian[static_cast<std::size_t>((i + 3) * 6 + j)] = jacobian_scale_ * value;
+        jacobian[(i + 3) * 6 + j] = jacobian_scale_ * value;
       }
     }
     return true;
