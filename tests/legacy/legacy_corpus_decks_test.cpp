@@ -101,6 +101,10 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     const auto q = static_cast<std::size_t>(m.q_address.at(i));
     return {m.q0.at(q), m.q0.at(q + 1), m.q0.at(q + 2)};
   }
+  if (field == "root_angular_velocity") {  // in the segment's axes: the free joint's first rates
+    const auto v = static_cast<std::size_t>(m.v_address.at(i));
+    return {m.v0.at(v), m.v0.at(v + 1), m.v0.at(v + 2)};
+  }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};
