@@ -32,20 +32,27 @@ Vec3 VehicleVelocity(const VehicleCard& vehicle) {
           vehicle.speed * SinDegrees(yaw) * CosDegrees(pitch), -vehicle.speed * SinDegrees(pitch)};
 }
 
-// A point given in a vehicle's axes (G.2 IREF4), in the ground frame at the start: the
-// vehicle's C.2.a position plus the point turned by its yaw, pitch and roll (z, then y, then x,
-// as VehicleVelocity turns x), which is ATB's LIN_DISP(ref) + DIR_COS(ref) applied to the point.
-Vec3 VehicleToGround(const VehicleCard& vehicle, const Vec3& p) {
-  const double cy = CosDegrees(vehicle.orientation[0]), sy = SinDegrees(vehicle.orientation[0]);
-  const double cp = CosDegrees(vehicle.orientation[1]), sp = SinDegrees(vehicle.orientation[1]);
-  const double cr = CosDegrees(vehicle.orientation[2]), sr = SinDegrees(vehicle.orientation[2]);
+// `v` turned by yaw, pitch and roll in degrees (about z, then y, then x: the rotation of sled's
+// `orientation`, and the one VehicleVelocity turns x by), from a frame's axes to the ground's.
+Vec3 Turned(const Vec3& ypr, const Vec3& v) {
+  const double cy = CosDegrees(ypr[0]), sy = SinDegrees(ypr[0]);
+  const double cp = CosDegrees(ypr[1]), sp = SinDegrees(ypr[1]);
+  const double cr = CosDegrees(ypr[2]), sr = SinDegrees(ypr[2]);
   const double r[3][3] = {{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
                           {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
                           {-sp, cp * sr, cp * cr}};
   Vec3 out{};
-  for (std::size_t i = 0; i < 3; ++i)
-    out[i] = vehicle.position[i] + r[i][0] * p[0] + r[i][1] * p[1] + r[i][2] * p[2];
+  for (std::size_t i = 0; i < 3; ++i) out[i] = r[i][0] * v[0] + r[i][1] * v[1] + r[i][2] * v[2];
   return out;
+}
+
+// A point given in a vehicle's axes (G.2 IREF4), in the ground frame at the start: the
+// vehicle's C.2.a position plus the point turned by its orientation, which is ATB's
+// LIN_DISP(ref) + DIR_COS(ref) applied to the point (INPUT_LINEAR).
+Vec3 VehicleToGround(const VehicleCard& vehicle, const Vec3& p) {
+  const Vec3 turned = Turned(vehicle.orientation, p);
+  return {vehicle.position[0] + turned[0], vehicle.position[1] + turned[1],
+          vehicle.position[2] + turned[2]};
 }
 
 }  // namespace
@@ -512,8 +519,19 @@ void DeckMapper::AddOrientation(ast::Statement& initial, std::size_t segment) {
   if (segment >= deck_.initial_orientations.size()) return;
   const OrientationCard& card = deck_.initial_orientations[segment];
   if (!IsZero(card.angles)) Add(initial, Attribute("orientation", Vector(card.angles, "deg")));
-  if (!IsZero(card.angular_velocity))
-    Add(initial, Attribute("angular_velocity", Vector(card.angular_velocity, "deg/" + T)));
+  if (!IsZero(card.angular_velocity)) {
+    // G.3.a gives it in the segment's own axes, sled's `angular_velocity` is in the ground's.
+    const Vec3 w = Turned(card.angles, card.angular_velocity);
+    Add(initial, Attribute("angular_velocity", Vector(w, "deg/" + T)));
+    if (!IsZero(card.angles)) {
+      initial.block->statements.back().leading_comments.push_back(
+          {fmt::format(" G.3.a: ({}, {}, {}) deg/{} in the segment's axes, turned to the ground's",
+                       card.angular_velocity[0], card.angular_velocity[1], card.angular_velocity[2],
+                       T),
+           {},
+           false});
+    }
+  }
 }
 
 }  // namespace sled::lang::legacy::mapping

@@ -97,9 +97,19 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "spring_force_at") return at(m.spring_function.at(i));
   if (field == "spring_point_first") return Of(m.spring_point_first.at(i));
   if (field == "output_point") return Of(m.output_point.at(i));
+  if (field == "belt_slack") return {m.belts.slack.at(i)};
+  if (field == "belt_friction") return {m.belts.friction.at(i)};
+  if (field == "belt_force_at") return at(m.belts.function.at(i));
+  if (field == "belt_point_position") return Of(m.belts.point_position.at(i));
+  if (field == "constraint_point_first") return Of(m.constraint_point_first.at(i));
+  if (field == "constraint_point_second") return Of(m.constraint_point_second.at(i));
   if (field == "root_position") {  // a reference segment's: its free joint's first coordinates
     const auto q = static_cast<std::size_t>(m.q_address.at(i));
     return {m.q0.at(q), m.q0.at(q + 1), m.q0.at(q + 2)};
+  }
+  if (field == "root_angular_velocity") {  // in the segment's axes: the free joint's first rates
+    const auto v = static_cast<std::size_t>(m.v_address.at(i));
+    return {m.v0.at(v), m.v0.at(v + 1), m.v0.at(v + 2)};
   }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};

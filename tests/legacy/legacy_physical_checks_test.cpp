@@ -1,7 +1,8 @@
 // Physical checks of deck values where the deck gives them (E0512, E0507 at the card and
 // columns): each of the seated occupant's cards with one value made impossible is refused at that
 // card, not converted into a scenario that `sled check` then refuses (E0402, E0403, E0409, E0410,
-// E0412, E0420, E0421). And two H.1 points on one segment, which ATB allows, become two columns.
+// E0412, E0420, E0421). Two H.1 points on one segment, which ATB allows, become two columns; fields
+// that were left out without a word (Euler stops, print controls) are refused or warned.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -31,9 +32,15 @@ Converted ConvertEdited(std::string_view prefix, Edit edit, std::size_t* line = 
   return ConvertText(Join(lines), options);
 }
 
+// The lines of tests/legacy/corpus/NAME.ain.
+std::vector<std::string> CorpusDeck(const std::string& name) {
+  return Lines(
+      ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/" + name + ".ain"));
+}
+
 // `text` right-aligned in columns first..last (1-based) of `line`.
 void Put(std::string& line, int first, int last, const std::string& text) {
-  const std::size_t width = static_cast<std::size_t>(last - first + 1);
+  const std::size_t width = static_cast<std::size_t>(last) - static_cast<std::size_t>(first) + 1;
   if (line.size() < static_cast<std::size_t>(last))
     line.resize(static_cast<std::size_t>(last), ' ');
   line.replace(static_cast<std::size_t>(first - 1), width,
@@ -156,18 +163,10 @@ TEST(LegacyPhysicalChecks, TwoPointsOnOneSegmentAreTwoColumnsAndCheckClean) {
   EXPECT_TRUE(compiled.ok()) << compiled.Render();
 }
 
-}  // namespace
-}  // namespace sled::lang::legacy
-
-namespace sled::lang::legacy {
-namespace {
-
 // An Euler joint's torsion and spin stops, which sled's one `stop` cannot hold, were left out
 // without a word: they are refused at their columns.
 TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
-  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
-  std::vector<std::string> lines =
-      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
   const std::size_t b4a = LineStarting(lines, "    2.    0.    0.    0.         60.");
   lines[b4a - 1] += "         40.";
   lines[b4a] = "   0.5    0.    0.    0.         30.   10.    0.    0.";
@@ -181,17 +180,9 @@ TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
       << c.All();
 }
 
-}  // namespace
-}  // namespace sled::lang::legacy
-
-namespace sled::lang::legacy {
-namespace {
-
 // G.2's IREF4 names a frame with prescribed motion (ATB stops otherwise, STOP 223).
 TEST(LegacyPhysicalChecks, Iref4OfABodySegmentIsRefusedAtG2) {
-  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
-  std::vector<std::string> lines =
-      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
   const std::size_t g2 = LineStarting(lines, "       0.5        0.      -0.8");
   lines[g2 - 1].replace(63, 3, "  1");
   const Converted c = ConvertText(Join(lines));
@@ -202,18 +193,10 @@ TEST(LegacyPhysicalChecks, Iref4OfABodySegmentIsRefusedAtG2) {
       << c.All();
 }
 
-}  // namespace
-}  // namespace sled::lang::legacy
-
-namespace sled::lang::legacy {
-namespace {
-
 // B.5.a's VISC(3), the rate of full Coulomb friction: ATB stops when it is not above zero for a
 // joint with a proximal segment (STOP 294); with Coulomb friction it converts, approximated.
 TEST(LegacyPhysicalChecks, FullCoulombRateIsRequiredAndItsRampApproximated) {
-  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
-  const std::vector<std::string> deck =
-      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain"));
+  const std::vector<std::string> deck = CorpusDeck("two_segments");
   std::vector<std::string> lines = deck;
   const std::size_t b5 = LineStarting(lines, "    2.    0.    1.");
   lines[b5 - 1].replace(12, 6, "    0.");
@@ -234,9 +217,7 @@ TEST(LegacyPhysicalChecks, FullCoulombRateIsRequiredAndItsRampApproximated) {
 // An Euler joint's B.5.b and B.5.c damp its second and third axes (INPUT_JOINTS): sled's one
 // `viscous` holds them only when they equal B.5.a's.
 TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
-  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
-  std::vector<std::string> lines =
-      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/head_and_ball.ain"));
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
   const std::size_t b5a = LineStarting(lines, "  0.05    0.    1.");
   lines[b5a].replace(0, 6, "   0.1");
   const Converted c = ConvertText(Join(lines));
@@ -244,18 +225,10 @@ TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
       << c.All();
 }
 
-}  // namespace
-}  // namespace sled::lang::legacy
-
-namespace sled::lang::legacy {
-namespace {
-
 // A.5: NPRT(4) < 0 asks ATB for a post-processing run that simulates nothing (refused); the
 // other print controls are left out with one warning at the card.
 TEST(LegacySilentlyDropped, PrintControlsAreWarnedAndAPostProcessingRunRefused) {
-  using namespace deck_testing;  // NOLINT(google-build-using-namespace): the deck helpers
-  const std::vector<std::string> deck =
-      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain"));
+  const std::vector<std::string> deck = CorpusDeck("two_segments");
   const std::size_t a5 = LineStarting(deck, "   0  20") + 1;
   std::vector<std::string> lines = deck;
   lines[a5 - 1] = " 1";
