@@ -149,7 +149,9 @@ bool Rosenbrock::TryStep(double h, double* error) {
   // misses a stiff element that turns, such as a tether on a swinging ball: 1.3e-3 off at 1e-6
   // with A up to 20 steps old, 5e-5 with a fresh one). f_t, one evaluation, a difference A, n of
   // them, and a kinematic one (no stiff terms: the 60-link chain) are reused.
-  const bool stiff_terms = source_.valid() && source_.structured() && source_.jacobian().rank() > 0;
+  // (From what a checkpoint restores: the system's rank and the Jacobian in hand.)
+  const bool stiff_terms =
+      system().StructuredRank() > 0 && source_.valid() && source_.jacobian().rank() > 0;
   const long max_age = stiff_terms ? 1 : kMaxJacobianAge;
   if (source_.MustForm(h, max_age, kJacobianGrowth, true) ||
       time_derivative_age_ >= kMaxJacobianAge) {
