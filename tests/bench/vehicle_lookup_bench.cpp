@@ -46,8 +46,10 @@ void RunVehicleAt(benchmark::State& state, bool turning) {
   const runtime::Model model = SixDofModel(state.range(0), turning);
   // 97 times spread over the table, off the rows.
   const double span = 1e-4 * static_cast<double>(state.range(0) - 1);
-  std::vector<double> times;
-  for (int k = 0; k < 97; ++k) times.push_back(span * (k + 0.37) / 97.0);
+  std::vector<double> times(97);
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    times[k] = span * (static_cast<double>(k) + 0.37) / static_cast<double>(times.size());
+  }
   std::size_t next = 0;
   for (auto _ : state) {
     const runtime::VehicleState vehicle = runtime::VehicleAt(model, 0, times[next]);

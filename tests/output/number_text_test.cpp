@@ -1,10 +1,10 @@
 // Numbers as the CSV writer spells them (output/number_text.h): the text fmt's "{}" gives, which
 // the files had before, and the same double when read back, for edge values and for random bit
 // patterns and magnitudes.
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <random>
 #include <string>
@@ -29,7 +29,7 @@ void ExpectAsFmtAndExact(double value) {
   if (!std::isfinite(value)) return;
   double back = 0.0;
   std::from_chars(text.data(), text.data() + text.size(), back);
-  EXPECT_EQ(std::memcmp(&back, &value, sizeof value), 0) << text;
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(value)) << text;
 }
 
 TEST(NumberText, EdgeValues) {
@@ -67,9 +67,7 @@ TEST(NumberText, RandomValues) {
   std::mt19937_64 random(14);
   std::uniform_real_distribution<double> decades(-8.0, 18.0);
   for (int k = 0; k < 100000; ++k) {
-    std::uint64_t bits = random();
-    double value = 0.0;
-    std::memcpy(&value, &bits, sizeof value);
+    const auto value = std::bit_cast<double>(static_cast<std::uint64_t>(random()));
     ExpectAsFmtAndExact(value);
     const double magnitude = std::pow(10.0, decades(random));
     ExpectAsFmtAndExact(magnitude);

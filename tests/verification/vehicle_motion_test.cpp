@@ -238,7 +238,7 @@ TEST_P(FreeBodyOnATurningVehicle, MovesInAStraightLineInTheGroundFrame) {
   for (int k = 0; k < 3; ++k) {
     model.q0[static_cast<std::size_t>(k)] = r[k];
     model.v0[static_cast<std::size_t>(k)] = -w0[k];
-    model.v0[static_cast<std::size_t>(k + 3)] = relative[k];
+    model.v0[static_cast<std::size_t>(k) + 3] = relative[k];
   }
   runtime::Data data = runtime::MakeData(model);
   ASSERT_TRUE(runtime::Forward(model, data, nullptr));
