@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "output/atomic_file.h"
+#include "output/number_text.h"
 
 namespace sled::runtime {
 namespace {
@@ -163,16 +164,16 @@ bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::
   std::string header = "time [s]";
   for (const std::string& name : series.names) header += ',' + name;
   out << header << "\n";
-  std::string line;
+  // Each row written into one buffer with room for every value, a comma and the newline.
+  std::string line(series.columns * (kShortestMaxChars + 1), '\0');
   for (std::size_t row = 0; row < series.rows(); ++row) {
-    line.clear();
+    char* end = line.data();
     for (std::size_t column = 0; column < series.columns; ++column) {
-      if (column > 0) line += ',';
-      // Shortest text that reads back to the same double.
-      line += fmt::format("{}", series.values[row * series.columns + column]);
+      if (column > 0) *end++ = ',';
+      end = WriteShortest(end, series.values[row * series.columns + column]);
     }
-    line += '\n';
-    out << line;
+    *end++ = '\n';
+    out << std::string_view(line.data(), static_cast<std::size_t>(end - line.data()));
   }
   return out.Commit(error);
 }

@@ -86,6 +86,20 @@ struct Data {
   ContactState contacts;
   // Belts and harnesses (restraint/belts.h).
   BeltState belts;
+  // What UpdateBeltRates (restraint/belt_events.h) moves for its central differences and puts
+  // back: the kinematics and the belts' last evaluation, copied into storage sized once by
+  // SetUpBelts rather than evaluated a third time.
+  struct BeltRatesCopy {
+    std::vector<VehicleState> vehicle;
+    std::vector<Mat3> rotation;
+    std::vector<Vec3> position;
+    std::vector<Transform> parent_to_child;
+    std::vector<MotionSubspace> subspace;
+    std::vector<std::int16_t> subspace_locked;
+    std::vector<Vec6> velocity;
+    std::vector<Vec6> bias_acceleration;
+    BeltState belts;
+  } belt_rates_copy;
   // Airbags: pressure, volume, flows and contact forces of the last evaluation.
   AirbagState airbags;
 

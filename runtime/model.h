@@ -69,6 +69,11 @@ struct VehicleMotion {
   double fall = 0.0;
   std::vector<std::array<double, 2>> table;    // (t, a)
   std::vector<std::array<double, 7>> six_dof;  // t, linear (3), angular (3)
+  // Derived from `table` or `six_dof` when the Model is made (IntegrateMotionRows, vehicle.h):
+  // at each row, the velocity (3) and the displacement (3) its linear accelerations have given
+  // by the row's time, per axis (a tabulated pulse fills the first of each), so the motion at a
+  // time is found by a binary search for its row.
+  std::vector<std::array<double, 6>> row_gain;
 };
 
 // A point of a turning vehicle's path relative to its starting pose (TabulateVehiclePath):

@@ -4,7 +4,10 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
+
+#include "runtime/row_search.h"
 
 namespace sled::runtime {
 namespace {
@@ -36,25 +39,71 @@ Gain HalfSineGain(double delta_v, double duration, double t) {
   return gain;
 }
 
-// Piecewise-linear acceleration through `count` points (time_of(k), value_of(k)), zero before
-// the first and after the last: exact velocity and displacement. No allocation.
-template <typename Time, typename Value>
-Gain PiecewiseLinearGain(std::size_t count, Time time_of, Value value_of, double t) {
+// The velocity and the displacement that a piecewise-linear acceleration through `count` points
+// (time_of(k), value_of(k)), zero before the first, has given by each point, exactly: gain(k,
+// velocity, displacement) is called for every k in order.
+template <typename Time, typename Value, typename Gains>
+void IntegratePoints(std::size_t count, Time time_of, Value value_of, Gains gain) {
+  double velocity = 0.0, displacement = 0.0;
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k > 0) {
+      const double t0 = time_of(k - 1), h = time_of(k) - t0;
+      const double a0 = value_of(k - 1);
+      const double slope = (value_of(k) - a0) / h;
+      displacement += velocity * h + a0 * h * h / 2 + slope * h * h * h / 6;
+      velocity += a0 * h + slope * h * h / 2;
+    }
+    gain(k, velocity, displacement);
+  }
+}
+
+// The points of a piecewise-linear acceleration, read through accessors, with the velocity and
+// displacement gained by each point (IntegratePoints).
+template <typename Time, typename Value, typename Velocity, typename Displacement>
+struct PiecewiseLinear {
+  std::size_t count;
+  Time time_of;
+  Value value_of;
+  Velocity velocity_of;
+  Displacement displacement_of;
+};
+template <typename Time, typename Value, typename Velocity, typename Displacement>
+PiecewiseLinear(std::size_t, Time, Value, Velocity, Displacement)
+    -> PiecewiseLinear<Time, Value, Velocity, Displacement>;
+
+// Exact acceleration, velocity and displacement at t of a piecewise-linear acceleration, zero
+// before the first point and after the last, right-continuous at the points: the point before t
+// by binary search, then its piece in closed form. No allocation.
+template <typename Points>
+Gain PiecewiseLinearGain(const Points& p, double t) {
+  const std::size_t rows = RowsUpTo(p.count, p.time_of, t);
+  if (rows == 0) return {};
+  const std::size_t k = rows - 1;
+  const double h = t - p.time_of(k);
   Gain gain;
-  for (std::size_t k = 0; k + 1 < count; ++k) {
-    const double t0 = time_of(k), t1 = time_of(k + 1);
-    if (t <= t0) break;
-    const double a0 = value_of(k);
-    const double slope = (value_of(k + 1) - a0) / (t1 - t0);
-    const double h = std::min(t, t1) - t0;
-    gain.displacement += gain.velocity * h + a0 * h * h / 2 + slope * h * h * h / 6;
-    gain.velocity += a0 * h + slope * h * h / 2;
-    if (t < t1) gain.acceleration = a0 + slope * h;
+  if (rows == p.count) {  // after the last point: no more acceleration
+    gain.velocity = p.velocity_of(k);
+    gain.displacement = p.displacement_of(k) + gain.velocity * h;
+    return gain;
   }
-  if (count > 0 && t > time_of(count - 1)) {
-    gain.displacement += gain.velocity * (t - time_of(count - 1));
-  }
+  const double a0 = p.value_of(k);
+  const double slope = (p.value_of(k + 1) - a0) / (p.time_of(k + 1) - p.time_of(k));
+  gain.displacement =
+      p.displacement_of(k) + (p.velocity_of(k) * h + a0 * h * h / 2 + slope * h * h * h / 6);
+  gain.velocity = p.velocity_of(k) + (a0 * h + slope * h * h / 2);
+  gain.acceleration = a0 + slope * h;
   return gain;
+}
+
+// The rows of a tabulated pulse or six-degree-of-freedom table (column 1 + axis) with their
+// velocity and displacement gains.
+template <std::size_t N>
+auto TableAxis(const std::vector<std::array<double, N>>& rows,
+               const std::vector<std::array<double, 6>>& row_gain, std::size_t axis) {
+  return PiecewiseLinear{rows.size(), [&rows](std::size_t k) { return rows[k][0]; },
+                         [&rows, axis](std::size_t k) { return rows[k][1 + axis]; },
+                         [&row_gain, axis](std::size_t k) { return row_gain[k][axis]; },
+                         [&row_gain, axis](std::size_t k) { return row_gain[k][3 + axis]; }};
 }
 
 std::array<std::array<double, 2>, 4> TrapezoidPoints(const VehicleMotion& m) {
@@ -62,37 +111,62 @@ std::array<std::array<double, 2>, 4> TrapezoidPoints(const VehicleMotion& m) {
       {{0.0, 0.0}, {m.rise, m.peak}, {m.rise + m.dwell, m.peak}, {m.rise + m.dwell + m.fall, 0.0}}};
 }
 
+Gain TrapezoidGain(const VehicleMotion& m, double t) {
+  const std::array<std::array<double, 2>, 4> points = TrapezoidPoints(m);
+  std::array<std::array<double, 6>, 4> gains{};
+  IntegratePoints(
+      points.size(), [&](std::size_t k) { return points[k][0]; },
+      [&](std::size_t k) { return points[k][1]; },
+      [&](std::size_t k, double velocity, double displacement) {
+        gains[k][0] = velocity;
+        gains[k][3] = displacement;
+      });
+  return PiecewiseLinearGain(
+      PiecewiseLinear{points.size(), [&](std::size_t k) { return points[k][0]; },
+                      [&](std::size_t k) { return points[k][1]; },
+                      [&](std::size_t k) { return gains[k][0]; },
+                      [&](std::size_t k) { return gains[k][3]; }},
+      t);
+}
+
+// The rows of a table must have been integrated (IntegrateMotionRows) before it is evaluated.
+void RequireRowGains(const VehicleMotion& m, std::size_t rows) {
+  if (m.row_gain.size() != rows) {
+    throw std::logic_error(
+        "sled::runtime vehicle motion: a table's rows are evaluated before IntegrateMotionRows");
+  }
+}
+
 Gain PulseGain(const VehicleMotion& m, double t) {
   switch (m.kind) {
     case VehicleMotion::Kind::kHalfSine:
       return HalfSineGain(m.delta_v, m.duration, t);
-    case VehicleMotion::Kind::kTrapezoid: {
-      const std::array<std::array<double, 2>, 4> points = TrapezoidPoints(m);
-      return PiecewiseLinearGain(
-          points.size(), [&](std::size_t k) { return points[k][0]; },
-          [&](std::size_t k) { return points[k][1]; }, t);
-    }
+    case VehicleMotion::Kind::kTrapezoid:
+      return TrapezoidGain(m, t);
     case VehicleMotion::Kind::kTable:
-      return PiecewiseLinearGain(
-          m.table.size(), [&](std::size_t k) { return m.table[k][0]; },
-          [&](std::size_t k) { return m.table[k][1]; }, t);
+      RequireRowGains(m, m.table.size());
+      return PiecewiseLinearGain(TableAxis(m.table, m.row_gain, 0), t);
     default:
       return {};
   }
 }
 
-// The value at t of the linear piece through `count` points that holds time `piece` (zero
-// outside the points). Choosing the piece by a time inside the step, not by t itself, gives a
-// step that starts or ends on a kink the one-sided limits it needs.
+// The row (of `count`, times from time_of) that starts the linear piece holding time `piece`,
+// or `count` when none does (before the first row, from the last on). Choosing the piece by a
+// time inside the step, not by the evaluation time itself, gives a step that starts or ends on
+// a kink the one-sided limits it needs.
+template <typename Time>
+std::size_t PieceRow(std::size_t count, Time time_of, double piece) {
+  const std::size_t rows = RowsUpTo(count, time_of, piece);
+  return rows == 0 || rows == count ? count : rows - 1;
+}
+
+// The value at t of the linear piece through rows k and k + 1 (zero when k is no piece's row).
 template <typename Time, typename Value>
-double LinearPieceValue(std::size_t count, Time time_of, Value value_of, double t, double piece) {
-  for (std::size_t k = 0; k + 1 < count; ++k) {
-    const double t0 = time_of(k), t1 = time_of(k + 1);
-    if (piece >= t0 && piece < t1) {
-      return value_of(k) + (value_of(k + 1) - value_of(k)) * (t - t0) / (t1 - t0);
-    }
-  }
-  return 0.0;
+double LinearPieceValue(std::size_t count, Time time_of, Value value_of, std::size_t k, double t) {
+  if (k + 1 >= count) return 0.0;
+  const double t0 = time_of(k), t1 = time_of(k + 1);
+  return value_of(k) + (value_of(k + 1) - value_of(k)) * (t - t0) / (t1 - t0);
 }
 
 // The accelerations of a vehicle in vehicle axes at time `local` from its motion's start, on
@@ -105,14 +179,17 @@ struct BodyAcceleration {
 BodyAcceleration BodyAccelerationAt(const VehicleMotion& m, double local, double piece) {
   BodyAcceleration out;
   switch (m.kind) {
-    case VehicleMotion::Kind::kSixDof:
+    case VehicleMotion::Kind::kSixDof: {
+      const std::size_t count = m.six_dof.size();
+      auto time_of = [&](std::size_t i) { return m.six_dof[i][0]; };
+      const std::size_t row = PieceRow(count, time_of, piece);
       for (std::size_t k = 0; k < 6; ++k) {
         const double value = LinearPieceValue(
-            m.six_dof.size(), [&](std::size_t i) { return m.six_dof[i][0]; },
-            [&](std::size_t i) { return m.six_dof[i][1 + k]; }, local, piece);
+            count, time_of, [&](std::size_t i) { return m.six_dof[i][1 + k]; }, row, local);
         (k < 3 ? out.linear : out.angular)[static_cast<Eigen::Index>(k % 3)] = value;
       }
       break;
+    }
     case VehicleMotion::Kind::kHalfSine:
       if (piece >= 0 && piece < m.duration) {
         out.linear = m.axis * HalfSineGain(m.delta_v, m.duration, local).acceleration;
@@ -120,16 +197,21 @@ BodyAcceleration BodyAccelerationAt(const VehicleMotion& m, double local, double
       break;
     case VehicleMotion::Kind::kTrapezoid: {
       const std::array<std::array<double, 2>, 4> points = TrapezoidPoints(m);
+      auto time_of = [&](std::size_t i) { return points[i][0]; };
+      const std::size_t row = PieceRow(points.size(), time_of, piece);
       out.linear = m.axis * LinearPieceValue(
-                                points.size(), [&](std::size_t i) { return points[i][0]; },
-                                [&](std::size_t i) { return points[i][1]; }, local, piece);
+                                points.size(), time_of, [&](std::size_t i) { return points[i][1]; },
+                                row, local);
       break;
     }
-    case VehicleMotion::Kind::kTable:
+    case VehicleMotion::Kind::kTable: {
+      auto time_of = [&](std::size_t i) { return m.table[i][0]; };
+      const std::size_t row = PieceRow(m.table.size(), time_of, piece);
       out.linear = m.axis * LinearPieceValue(
-                                m.table.size(), [&](std::size_t i) { return m.table[i][0]; },
-                                [&](std::size_t i) { return m.table[i][1]; }, local, piece);
+                                m.table.size(), time_of,
+                                [&](std::size_t i) { return m.table[i][1]; }, row, local);
       break;
+    }
     case VehicleMotion::Kind::kNone:
       break;
   }
@@ -137,6 +219,24 @@ BodyAcceleration BodyAccelerationAt(const VehicleMotion& m, double local, double
 }
 
 }  // namespace
+
+void IntegrateMotionRows(VehicleMotion& motion) {
+  motion.row_gain.clear();
+  auto integrate = [&](const auto& rows, std::size_t axes) {
+    motion.row_gain.assign(rows.size(), {});
+    for (std::size_t axis = 0; axis < axes; ++axis) {
+      IntegratePoints(
+          rows.size(), [&](std::size_t k) { return rows[k][0]; },
+          [&](std::size_t k) { return rows[k][1 + axis]; },
+          [&](std::size_t k, double velocity, double displacement) {
+            motion.row_gain[k][axis] = velocity;
+            motion.row_gain[k][3 + axis] = displacement;
+          });
+    }
+  };
+  if (motion.kind == VehicleMotion::Kind::kTable) integrate(motion.table, 1);
+  if (motion.kind == VehicleMotion::Kind::kSixDof) integrate(motion.six_dof, 3);
+}
 
 std::vector<double> MotionBreakpoints(const VehicleMotion& m) {
   std::vector<double> times = {0.0};
@@ -306,10 +406,10 @@ VehicleState VehicleAt(const Model& model, std::size_t vehicle, double t) {
   Vec3 velocity = Vec3::Zero(), displacement = Vec3::Zero(), acceleration = Vec3::Zero();
   if (m.kind == VehicleMotion::Kind::kSixDof) {
     // A table without angular acceleration: each vehicle axis in closed form.
+    RequireRowGains(m, m.six_dof.size());
     for (int axis = 0; axis < 3; ++axis) {
       const Gain g = PiecewiseLinearGain(
-          m.six_dof.size(), [&](std::size_t k) { return m.six_dof[k][0]; },
-          [&](std::size_t k) { return m.six_dof[k][1 + static_cast<std::size_t>(axis)]; }, local);
+          TableAxis(m.six_dof, m.row_gain, static_cast<std::size_t>(axis)), local);
       velocity[axis] = g.velocity;
       displacement[axis] = g.displacement;
       acceleration[axis] = g.acceleration;

@@ -29,6 +29,12 @@ std::vector<VehiclePathSample> TabulateVehiclePath(const VehicleMotion& motion,
                                                    const Mat3& orientation,
                                                    const Vec3& angular_velocity);
 
+// Fills motion.row_gain: the velocity and displacement a tabulated pulse's or six-degree-of-
+// freedom table's linear accelerations have given by each row (empty for the other kinds). Once,
+// when the Model is made, in one pass over the rows; VehicleAt then finds the row before a time
+// by binary search. VehicleAt refuses (std::logic_error) a table whose rows were not integrated.
+void IntegrateMotionRows(VehicleMotion& motion);
+
 // Times (from the motion's start) where the accelerations have kinks or jumps: the pulse's
 // start and corners, a table's rows. The turning path is tabulated on each of them, and the
 // integrators stop on them (runtime/input_discontinuities.h).

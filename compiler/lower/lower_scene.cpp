@@ -45,6 +45,7 @@ runtime::VehicleMotion LowerMotion(const Motion& motion) {
   out.fall = motion.fall;
   out.table = motion.table;
   out.six_dof = motion.six_dof;
+  runtime::IntegrateMotionRows(out);
   return out;
 }
 

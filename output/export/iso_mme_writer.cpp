@@ -8,6 +8,7 @@
 
 #include "output/atomic_file.h"
 #include "output/export/iso_mme_codes.h"
+#include "output/number_text.h"
 #include "output/post/channel_filters.h"
 
 namespace sled::runtime {
@@ -19,7 +20,10 @@ std::string Field(const std::string& name, const std::string& value) {
 }
 
 std::string Number(double value) {
-  return std::isfinite(value) ? fmt::format("{}", value) : std::string("NOVALUE");
+  if (!std::isfinite(value)) return "NOVALUE";
+  std::string text;
+  AppendShortest(text, value);
+  return text;
 }
 
 bool WriteFile(const std::filesystem::path& path, const std::string& text, std::string* error) {

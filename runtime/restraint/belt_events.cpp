@@ -37,7 +37,24 @@ double Extended(const Model& model, const BeltState& state, std::size_t span) {
   return SpanForceAt(model, state, span, state.rest_length[span]).extended;
 }
 
+// The fields of `data` the central differences move (ComputeKinematics, EvaluateBelts), to and
+// from `copy`: same sizes both ways, so no allocation after the first (SetUpBelts).
+template <typename From, typename To>
+void CopyEvaluation(From& from, To& to) {
+  to.vehicle = from.vehicle;
+  to.rotation = from.rotation;
+  to.position = from.position;
+  to.parent_to_child = from.parent_to_child;
+  to.subspace = from.subspace;
+  to.subspace_locked = from.subspace_locked;
+  to.velocity = from.velocity;
+  to.bias_acceleration = from.bias_acceleration;
+  to.belts = from.belts;
+}
+
 }  // namespace
+
+void SizeBeltRatesCopy(Data& data) { CopyEvaluation(data, data.belt_rates_copy); }
 
 std::vector<BeltEvent> BeltEvents(const Model& model, const Data& data) {
   (void)model;
@@ -78,6 +95,8 @@ void UpdateBeltRates(const Model& model, Data& data) {
   // half step back and ahead along the motion (q +- h/2 qdot, the vehicles at those times);
   // then back where Forward left them.
   const double t = data.time;
+  Data::BeltRatesCopy& copy = data.belt_rates_copy;
+  CopyEvaluation(data, copy);
   std::copy(data.q.begin(), data.q.end(), state.rate_q.begin());
   PositionDerivative(model, data.q, data.v, data.locked, state.rate_dq);
   for (const double sign : {-1.0, 1.0}) {
@@ -104,10 +123,13 @@ void UpdateBeltRates(const Model& model, Data& data) {
                                     : (state.strain_rate[span] + Strain(state, span)) / kRateStep;
     }
   }
+  // Back to Forward's evaluation, with the rates just found (and the solver's iteration count).
   std::copy(state.rate_q.begin(), state.rate_q.end(), data.q.begin());
   data.time = t;
-  ComputeKinematics(model, data);
-  EvaluateBelts(model, data);
+  std::swap(copy.belts.slip_rate, state.slip_rate);
+  std::swap(copy.belts.strain_rate, state.strain_rate);
+  copy.belts.slip_iterations = state.slip_iterations;
+  CopyEvaluation(copy, data);
 }
 
 double BeltEventFunction(const Model& model, const Data& data, const BeltEvent& event) {

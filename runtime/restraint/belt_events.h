@@ -37,8 +37,11 @@ std::vector<BeltEvent> BeltEvents(const Model& model, const Data& data);
 
 // After Forward at data's state: the transfer and strain rates the event functions need, when
 // one needs them (a junction slips, a hysteretic span loads). Leaves data's kinematics and belts
-// as Forward left them (they are evaluated again there).
+// as Forward left them (copied before the differences and back after, in data.belt_rates_copy).
 void UpdateBeltRates(const Model& model, Data& data);
+
+// Sizes data.belt_rates_copy (SetUpBelts), so that UpdateBeltRates allocates nothing.
+void SizeBeltRatesCopy(Data& data);
 
 // The event's function at data's state (after Forward and UpdateBeltRates); 1 while the event
 // cannot happen in the junction's or span's present mode.

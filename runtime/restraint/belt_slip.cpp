@@ -257,6 +257,8 @@ void ResolveSlip(const Model& model, BeltState& state) {
         if (state.solve_index[j] >= 0)
           state.solve_trial[Index(state.solve_index[j])] = state.transfer[j];
       }
+      // Each trial fills the Jacobian too (the solve left the matrix factored, so nothing is
+      // lost): the last one, where the line search stops, is the next step's.
       double scale = 1.0;
       double trial_norm = norm;
       for (int halving = 0; halving < kMaxHalvings; ++halving, scale *= 0.5) {
@@ -267,12 +269,11 @@ void ResolveSlip(const Model& model, BeltState& state) {
                 state.solve_trial[Index(unknown)] + scale * state.solve_step[Index(unknown)];
           }
         }
-        trial_norm = ResidualNorm(model, state, unknowns, nullptr);
+        trial_norm = ResidualNorm(model, state, unknowns, state.solve_matrix.data());
         if (trial_norm < norm || trial_norm <= 1.0) break;
       }
-      // The Jacobian at the accepted point, for the next step.
-      norm = ResidualNorm(model, state, unknowns, state.solve_matrix.data());
-      if (scale < 1e-10 && !(trial_norm < norm)) break;  // no further progress: rounding
+      norm = trial_norm;
+      if (scale < 1e-10) break;  // no further progress: rounding
     }
     // Where the equations' kinks (a span going slack) stall Newton's method: nonlinear
     // Gauss-Seidel on the junctions one by one, each solved exactly.

@@ -66,7 +66,8 @@ Vec2 TangentPoint(const Vec2& p, bool from_side) {
 
 }  // namespace
 
-Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, const Vec3& side_hint) {
+Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, const Vec3& side_hint,
+              bool measure_arc) {
   Wrap wrap;
   const Vec3& c = surface.centre;
   Vec3 along = to - from;
@@ -135,7 +136,7 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
   wrap.entry = world(section.FromCircle(entry));
   wrap.exit = world(section.FromCircle(exit));
   const double mid = phi_exit + 0.5 * sweep;
-  wrap.arc = SectionArc(section, phi_exit + sweep, phi_exit);
+  if (measure_arc) wrap.arc = SectionArc(section, phi_exit + sweep, phi_exit);
   // Turning: from the tangent at the entry to the tangent at the exit, clockwise. A linear map
   // keeps a half turn a half turn, so a sweep under pi turns under pi (rounding aside).
   const Vec2 t_in = section.Clockwise(phi_entry), t_out = section.Clockwise(phi_exit);
@@ -145,8 +146,14 @@ Wrap WrapOver(const WrapSurface& surface, const Vec3& from, const Vec3& to, cons
   wrap.middle = world(section.FromCircle(Vec2(std::cos(mid), std::sin(mid))));
   const Vec2 t_mid = section.Clockwise(mid);
   wrap.tangent = (t_mid.x() * along + t_mid.y() * side).normalized();
-  wrap.section = {true, c, along, side, section.l00, section.l10, section.l11, mid};
+  wrap.section = {
+      true, c, along, side, section.l00, section.l10, section.l11, mid, phi_exit + sweep, phi_exit};
   return wrap;
+}
+
+double WrapArc(const WrapSection& s) {
+  if (!s.valid) return 0.0;
+  return SectionArc(Section{s.l00, s.l10, s.l11}, s.phi_entry, s.phi_exit);
 }
 
 double ArcFromMiddle(const WrapSection& s, const Vec3& point) {

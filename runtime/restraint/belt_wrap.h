@@ -42,6 +42,7 @@ struct WrapSection {
   Eigen::Vector3d side = Eigen::Vector3d::UnitY();   // unit: across it, toward the body's side
   double l00 = 1.0, l10 = 0.0, l11 = 1.0;            // the section is the unit circle of y = L^T x
   double phi_middle = 0.0;                           // the arc's middle, as an angle on that circle
+  double phi_entry = 0.0, phi_exit = 0.0;  // the arc: clockwise from phi_entry to phi_exit
 };
 
 struct Wrap {
@@ -61,9 +62,15 @@ struct Wrap {
 
 // `side_hint`: the side the webbing lay on before (any vector with a positive component toward
 // it); it decides which way round the body the webbing goes, and the plane when the centre lies
-// on the line from `from` to `to`.
+// on the line from `from` to `to`. Without `measure_arc`, `arc` is left 0 (WrapArc measures it
+// from the section): a caller that moves the ends until the tangent points settle needs the arc
+// of the last wrap only.
 Wrap WrapOver(const WrapSurface& surface, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
-              const Eigen::Vector3d& side_hint);
+              const Eigen::Vector3d& side_hint, bool measure_arc = true);
+
+// The length along the surface from entry to exit of the wrap whose section this is (Wrap::arc,
+// bit for bit); 0 without a section.
+double WrapArc(const WrapSection& section);
 
 // The length along the section from the wrap's middle to `point` projected onto the section's
 // plane and seen from its centre (positive ahead, toward `to`): how far a body point has moved

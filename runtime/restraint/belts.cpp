@@ -8,6 +8,7 @@
 #include "runtime/dynamics.h"
 #include "runtime/forces.h"
 #include "runtime/functions.h"
+#include "runtime/restraint/belt_events.h"
 #include "runtime/restraint/belt_slip.h"
 #include "runtime/restraint/belt_wrap.h"
 #include "runtime/table_range.h"
@@ -71,12 +72,11 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
       if (!table.point_wraps[k]) continue;
       const auto s = Index(table.point_frame[k].index);
       const Wrap wrap = WrapOver(SurfaceOf(table, data, k), state.exit[k - 1], state.entry[k + 1],
-                                 data.rotation[s] * state.side_in_segment[k]);
+                                 data.rotation[s] * state.side_in_segment[k], false);
       change = std::max(
           {change, (wrap.entry - state.entry[k]).norm(), (wrap.exit - state.exit[k]).norm()});
       state.entry[k] = wrap.entry;
       state.exit[k] = wrap.exit;
-      state.arc[k] = wrap.arc;
       state.turning[k] = wrap.turning;
       state.contact[k] = wrap.contact ? 1 : 0;
       state.reach[k] = wrap.reach;
@@ -86,6 +86,10 @@ void BeltGeometry(const Model& model, Data& data, std::size_t b) {
       state.section[k] = wrap.section;
     }
     if (change <= kWrapTolerance) break;
+  }
+  // The arcs of the last sweep's wraps (they do not enter the sweeps).
+  for (std::size_t k = first + 1; k + 1 < first + count; ++k) {
+    if (table.point_wraps[k]) state.arc[k] = WrapArc(state.section[k]);
   }
   const auto first_span = Index(table.first_span(b));
   for (std::size_t i = 0; i + 1 < count; ++i) {
@@ -320,6 +324,7 @@ void SetUpBelts(const Model& model, Data& data) {
   }
   EvaluateBelts(model, data);
   for (std::size_t j = 0; j < junctions; ++j) AnchorJunction(model, data, j);
+  SizeBeltRatesCopy(data);
 }
 
 void ComputeBeltForces(const Model& model, Data& data) {

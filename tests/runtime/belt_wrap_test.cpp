@@ -65,6 +65,24 @@ TEST(BeltWrap, OffCentreSphere) {
   EXPECT_NEAR((wrap.exit - q).dot(wrap.exit - c), 0.0, 1e-14);
 }
 
+TEST(BeltWrap, TheArcMeasuredLaterIsTheArcMeasuredAtOnce) {
+  // BeltGeometry wraps without the arc while the tangent points settle, then measures the last
+  // wrap's: the same length, to the bit, and nothing else changes.
+  const Vec3 c(0.5, 0, 0.3), p(-2, 0, 0), q(3, 0, 0);
+  WrapSurface surface = Sphere(c, 1.0);
+  surface.semi_axes = Vec3(1.0, 0.7, 1.3);
+  const Wrap measured = WrapOver(surface, p, q, Vec3::UnitZ());
+  const Wrap later = WrapOver(surface, p, q, Vec3::UnitZ(), false);
+  ASSERT_TRUE(measured.contact);
+  EXPECT_GT(measured.arc, 0.0);
+  EXPECT_EQ(later.arc, 0.0);
+  EXPECT_EQ(WrapArc(later.section), measured.arc);
+  EXPECT_EQ(later.entry, measured.entry);
+  EXPECT_EQ(later.exit, measured.exit);
+  EXPECT_EQ(later.turning, measured.turning);
+  EXPECT_EQ(WrapArc(WrapSection{}), 0.0);
+}
+
 TEST(BeltWrap, CentreBeyondTheLineWrapsTheFarSide) {
   // A lap belt: anchors below and behind, the body above the line; the webbing lies over it.
   const Vec3 c(0, 0, 0.5), p(-2, 0, 0), q(2, 0, 0);

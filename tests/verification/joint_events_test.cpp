@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "runtime/vehicle.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
 
@@ -95,6 +96,7 @@ TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
   motion.kind = runtime::VehicleMotion::Kind::kTable;
   motion.axis = Vec3::UnitZ();
   motion.table = {{0.0, 0.0}, {10.0, c * 10.0}};
+  runtime::IntegrateMotionRows(motion);
   model.vehicle_motion = {motion};
   model.vehicle_position = {Vec3::Zero()};
   model.vehicle_orientation = {runtime::Mat3::Identity()};

@@ -2,11 +2,15 @@
 // an initial angular velocity against closed-form answers, and a free body on a turning vehicle
 // that must move in a straight line in the ground frame (the base frame's Euler, Coriolis and
 // centrifugal terms all have to be right for that).
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "runtime/input_discontinuities.h"
 #include "runtime/vehicle.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
@@ -37,6 +41,7 @@ VehicleMotion SixDof(std::vector<std::array<double, 7>> rows) {
   VehicleMotion motion;
   motion.kind = VehicleMotion::Kind::kSixDof;
   motion.six_dof = std::move(rows);
+  runtime::IntegrateMotionRows(motion);
   return motion;
 }
 
@@ -94,6 +99,118 @@ TEST(VehicleMotion, ATableWithoutAngularAccelerationStaysInClosedForm) {
   EXPECT_NEAR(state.position.x() - 1, -1000 * 0.001 / 3, 1e-12);
 }
 
+// A zigzag acceleration, 0 at the even rows and A at the odd ones, h apart: every row a kink.
+// Its velocity and displacement in closed form: v = A t / 2 + P(r) and x = A t^2 / 4 + Q(r),
+// r = t mod 2h, with P(r) = A r (r - h) / (2 h) and Q(r) = A (r^3 / 3 - h r^2 / 2) / (2 h) on
+// [0, h], P(r) = -P(2h - r) and Q(r) = Q(2h - r) on [h, 2h].
+struct Zigzag {
+  double amplitude, h;
+  std::size_t rows;
+  double End() const { return h * static_cast<double>(rows - 1); }
+  double Acceleration(double t) const {
+    if (t < 0 || t >= End()) return 0.0;
+    const double r = std::fmod(t, 2 * h);
+    return amplitude * (r <= h ? r / h : (2 * h - r) / h);
+  }
+  double Velocity(double t) const {
+    const double u = std::clamp(t, 0.0, End()), r = std::fmod(u, 2 * h);
+    const double p =
+        r <= h ? amplitude * r * (r - h) / (2 * h) : -amplitude * (2 * h - r) * (h - r) / (2 * h);
+    return amplitude * u / 2 + p;
+  }
+  double Displacement(double t) const {
+    const double u = std::clamp(t, 0.0, End()), r = std::fmod(u, 2 * h);
+    const double s = r <= h ? r : 2 * h - r;
+    const double q = amplitude * (s * s * s / 3 - h * s * s / 2) / (2 * h);
+    return amplitude * u * u / 4 + q + Velocity(End()) * std::max(t - End(), 0.0);
+  }
+  double Row(std::size_t k) const { return k % 2 == 1 ? amplitude : 0.0; }
+  // Rounding over the rows' sums: 1e-12 of the largest velocity and displacement.
+  double VelocityTolerance() const { return 1e-12 * std::abs(Velocity(End())); }
+  double DisplacementTolerance() const { return 1e-12 * std::abs(Displacement(End() + 0.05)); }
+};
+
+// Times on rows, between rows, before the first and after the last.
+std::vector<double> ProbeTimes(const Zigzag& z) {
+  std::vector<double> times = {-0.01, 0.0, z.End(), z.End() + 0.05};
+  for (std::size_t k = 0; k < 40; ++k) {
+    const double t = z.End() * static_cast<double>(k) / 39.0;
+    times.push_back(z.h * std::round(t / z.h));  // a row
+    times.push_back(t + 0.37 * z.h);
+  }
+  return times;
+}
+
+TEST(VehicleMotion, ATabulatedPulseWithAKinkAtEveryRowIsIntegratedExactly) {
+  const Zigzag z{150.0, 1e-4, 3003};
+  VehicleMotion motion;
+  motion.kind = VehicleMotion::Kind::kTable;
+  motion.axis = -Vec3::UnitX();
+  for (std::size_t k = 0; k < z.rows; ++k) {
+    motion.table.push_back({z.h * static_cast<double>(k), z.Row(k)});
+  }
+  runtime::IntegrateMotionRows(motion);
+  const runtime::Model model = VehicleModel(motion, Mat3::Identity(), Vec3::Zero());
+  for (const double t : ProbeTimes(z)) {
+    const runtime::VehicleState state = runtime::VehicleAt(model, 0, t);
+    EXPECT_NEAR(state.acceleration.x(), -z.Acceleration(t), 1e-9 * z.amplitude) << t;
+    EXPECT_NEAR(state.velocity.x(), -z.Velocity(t), z.VelocityTolerance()) << t;
+    EXPECT_NEAR(state.position.x() - 1, -z.Displacement(t), z.DisplacementTolerance()) << t;
+  }
+}
+
+TEST(VehicleMotion, TheSameMotionAsASixDegreeOfFreedomTable) {
+  // Three zigzags of three amplitudes on the three axes, no angular acceleration: each axis in
+  // closed form.
+  const Zigzag x{150.0, 1e-4, 3003}, y{-40.0, 1e-4, 3003}, zed{7.0, 1e-4, 3003};
+  std::vector<std::array<double, 7>> rows;
+  for (std::size_t k = 0; k < x.rows; ++k) {
+    rows.push_back({x.h * static_cast<double>(k), x.Row(k), y.Row(k), zed.Row(k), 0, 0, 0});
+  }
+  const runtime::Model model = VehicleModel(SixDof(rows), Mat3::Identity(), Vec3::Zero());
+  ASSERT_TRUE(model.vehicle_path[0].empty());
+  for (const double t : ProbeTimes(x)) {
+    const runtime::VehicleState state = runtime::VehicleAt(model, 0, t);
+    const Zigzag* axes[3] = {&x, &y, &zed};
+    for (int a = 0; a < 3; ++a) {
+      const Zigzag& w = *axes[a];
+      EXPECT_NEAR(state.acceleration[a], w.Acceleration(t), 1e-9 * std::abs(w.amplitude)) << t;
+      EXPECT_NEAR(state.velocity[a], w.Velocity(t), w.VelocityTolerance()) << t;
+      EXPECT_NEAR(state.position[a] - model.vehicle_position[0][a], w.Displacement(t),
+                  w.DisplacementTolerance())
+          << t;
+    }
+  }
+}
+
+TEST(VehicleMotion, ATableWhoseRowsWereNotIntegratedIsRefused) {
+  VehicleMotion motion;
+  motion.kind = VehicleMotion::Kind::kTable;
+  motion.table = {{0.0, 1.0}, {1.0, 1.0}};
+  const runtime::Model model = VehicleModel(motion, Mat3::Identity(), Vec3::Zero());
+  EXPECT_THROW(runtime::VehicleAt(model, 0, 0.5), std::logic_error);
+}
+
+TEST(VehicleMotion, EveryRowOfATableIsADiscontinuityTheStepsStopAt) {
+  // The rows of a delayed 3,003-row table, inside the run's span, each once.
+  const Zigzag z{150.0, 1e-4, 3003};
+  std::vector<std::array<double, 7>> rows;
+  for (std::size_t k = 0; k < z.rows; ++k) {
+    rows.push_back({z.h * static_cast<double>(k), z.Row(k), 0, 0, 0, 0, 0});
+  }
+  VehicleMotion motion = SixDof(rows);
+  motion.start = 0.002;
+  runtime::Model model = VehicleModel(motion, Mat3::Identity(), Vec3::Zero());
+  model.start_time = 0.0;
+  model.end_time = 0.25;
+  const std::vector<double> stops = runtime::InputDiscontinuities(model);
+  std::vector<double> expected;
+  for (const auto& row : rows) {
+    if (motion.start + row[0] < model.end_time) expected.push_back(motion.start + row[0]);
+  }
+  EXPECT_EQ(stops, expected);
+}
+
 class FreeBodyOnATurningVehicle : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(FreeBodyOnATurningVehicle, MovesInAStraightLineInTheGroundFrame) {
@@ -121,7 +238,7 @@ TEST_P(FreeBodyOnATurningVehicle, MovesInAStraightLineInTheGroundFrame) {
   for (int k = 0; k < 3; ++k) {
     model.q0[static_cast<std::size_t>(k)] = r[k];
     model.v0[static_cast<std::size_t>(k)] = -w0[k];
-    model.v0[static_cast<std::size_t>(k + 3)] = relative[k];
+    model.v0[static_cast<std::size_t>(k) + 3] = relative[k];
   }
   runtime::Data data = runtime::MakeData(model);
   ASSERT_TRUE(runtime::Forward(model, data, nullptr));
