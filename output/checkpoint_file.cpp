@@ -10,8 +10,8 @@
 #include <fmt/format.h>
 
 #include "output/atomic_file.h"
-#include "runtime/archive.h"
-#include "runtime/fnv1a.h"
+#include "runtime/run/archive.h"
+#include "runtime/run/fnv1a.h"
 
 namespace sled::output {
 namespace {

@@ -1,11 +1,11 @@
 // Checkpoint files (`sled run --checkpoint-every`, `--resume`): the format, reading and writing,
 // and the sink that writes a run's checkpoints into a folder. What a checkpoint holds and how it
-// is matched to a Model is the runtime's (runtime/checkpoint.h).
+// is matched to a Model is the runtime's (runtime/run/checkpoint.h).
 #pragma once
 
 #include <string>
 
-#include "runtime/checkpoint.h"
+#include "runtime/run/checkpoint.h"
 
 namespace sled::output {
 

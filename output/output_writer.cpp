@@ -241,7 +241,7 @@ bool WriteSummaryJson(const std::string& path, const Model& model, const TimeSer
       number("energy_balance.relative_residual", e.relative()));
   out << "  },\n";
   if (summary.settle.settled) {
-    // How the scene settled before the run (runtime/settle.h): the convergence test's measures
+    // How the scene settled before the run (runtime/run/settle.h): the convergence test's measures
     // at its last check, against its tolerances.
     const SettleSummary& settle = summary.settle;
     const Model::Settle& want = model.settle;

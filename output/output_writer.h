@@ -9,8 +9,8 @@
 
 #include "output/post/channel_peaks.h"
 #include "output/post/criterion_value.h"
-#include "runtime/run.h"
-#include "runtime/table_range.h"
+#include "runtime/forces/table_range.h"
+#include "runtime/run/run.h"
 
 namespace sled::runtime {
 

@@ -2,12 +2,12 @@
 
 #include <type_traits>
 
-#include "runtime/archive.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 namespace {
 
-// Every field, once, for both directions (runtime/archive.h). A field added to RunSummary,
+// Every field, once, for both directions (runtime/run/archive.h). A field added to RunSummary,
 // Failure or TimeSeries must be added here: the size checks below fail until it is.
 static_assert(std::is_trivially_copyable_v<IntegratorStats>);
 static_assert(std::is_trivially_copyable_v<EnergySummary>);

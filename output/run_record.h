@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 
 namespace sled::runtime {
 

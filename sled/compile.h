@@ -20,7 +20,7 @@
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/diagnostics/render.h"
 #include "lang/source/source_manager.h"
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 
 namespace sled {
 

@@ -26,7 +26,7 @@ install(TARGETS ${SLED_INSTALLED_LIBRARIES} EXPORT sledTargets
 install(TARGETS sled RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
 
 # Headers: the API's in include/sled, each library's under include/sled/<folder> as the sources
-# include them ("runtime/model.h"). The driver's and the report's stay private.
+# include them ("runtime/model/model.h"). The driver's and the report's stay private.
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/sled/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/sled"
         FILES_MATCHING PATTERN "*.h")
 foreach(folder lang compiler runtime output)

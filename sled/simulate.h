@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "output/post/criterion_value.h"
-#include "runtime/checkpoint.h"
-#include "runtime/data.h"
-#include "runtime/model.h"
-#include "runtime/run.h"
-#include "runtime/table_range.h"
+#include "runtime/forces/table_range.h"
+#include "runtime/model/data.h"
+#include "runtime/model/model.h"
+#include "runtime/run/checkpoint.h"
+#include "runtime/run/run.h"
 
 namespace sled {
 
@@ -34,7 +34,7 @@ struct RunResult {
   // never pass (CriterionValue::incomplete).
   std::vector<runtime::post::CriterionValue> criteria;
   // The elements whose argument left their table function's rows, once each, when and how far
-  // (runtime/table_range.h); each is also among the warnings.
+  // (runtime/forces/table_range.h); each is also among the warnings.
   std::vector<runtime::TableExtrapolation> extrapolations;
   // What the user should know, one line each: the run's notes (a resume's changes) and the
   // groups the filters left unfiltered.

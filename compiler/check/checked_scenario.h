@@ -349,7 +349,7 @@ enum class Symmetry { kNone, kPlanar, kMirror };
 // until the run ends, so a million rows of a full occupant already take about a gigabyte.
 inline constexpr double kMaxOutputRows = 1e6;
 
-// A `settle` block: the damped pre-simulation before the run (runtime/settle.h); SI units.
+// A `settle` block: the damped pre-simulation before the run (runtime/run/settle.h); SI units.
 struct SettleSettings {
   double duration = 0.0;
   double damping = 10.0;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "compiler/check/checked_scenario.h"
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::compiler {
 

@@ -19,7 +19,7 @@
 #include "compiler/driver/report_command.h"
 #include "output/checkpoint_file.h"
 #include "output/post/criterion_value.h"
-#include "runtime/checkpoint.h"
+#include "runtime/run/checkpoint.h"
 #include "sled/output_folder.h"
 #include "sled/simulate.h"
 

@@ -19,7 +19,7 @@
 #include "output/report/svg_plot.h"
 #include "output/run_record.h"
 #include "runtime/integrate/ode.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "sled/simulate.h"
 
 namespace sled::driver {

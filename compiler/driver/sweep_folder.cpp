@@ -11,7 +11,7 @@
 
 #include "lang/source/source_manager.h"
 #include "output/atomic_file.h"
-#include "runtime/fnv1a.h"
+#include "runtime/run/fnv1a.h"
 
 namespace sled::driver {
 namespace {

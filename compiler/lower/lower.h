@@ -8,7 +8,7 @@
 #include "compiler/check/checked_scenario.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/source/source_manager.h"
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 
 namespace sled::compiler {
 

@@ -7,7 +7,7 @@
 
 #include "compiler/check/schema.h"
 #include "compiler/lower/lowering.h"
-#include "runtime/mirror.h"
+#include "runtime/dynamics/mirror.h"
 
 namespace sled::compiler::lowering {
 namespace {

@@ -7,9 +7,9 @@
 
 #include "compiler/check/schema.h"
 #include "compiler/lower/lowering.h"
-#include "runtime/mirror.h"
-#include "runtime/relative_motion.h"
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/mirror.h"
+#include "runtime/dynamics/vehicle.h"
+#include "runtime/run/relative_motion.h"
 
 namespace sled::compiler::lowering {
 namespace {
@@ -319,7 +319,7 @@ void LowerOutputs(Lowering& lowering) {
         false,
         0};
     if (output.relative_to) {
-      // A right twin's frame is its left twin's, mirrored (runtime/relative_motion.h).
+      // A right twin's frame is its left twin's, mirrored (runtime/run/relative_motion.h).
       FrameRef frame = *output.relative_to;
       lowered.frame_mirrored = lowering.Dropped(frame);
       if (lowered.frame_mirrored) {

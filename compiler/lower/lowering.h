@@ -12,7 +12,7 @@
 #include "compiler/check/initial_pose.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/source/source_manager.h"
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 
 namespace sled::compiler::lowering {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "output/post/channel_filters.h"
-#include "runtime/outputs.h"
+#include "runtime/run/outputs.h"
 
 namespace sled::runtime {
 namespace {

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include "output/atomic_file.h"
-#include "runtime/constraints.h"
-#include "runtime/forces.h"
-#include "runtime/joint.h"
+#include "runtime/dynamics/constraints.h"
+#include "runtime/dynamics/joint.h"
+#include "runtime/forces/forces.h"
 
 namespace sled::runtime {
 namespace {

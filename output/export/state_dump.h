@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/outputs.h"
+#include "runtime/run/outputs.h"
 
 namespace sled::runtime::post {
 

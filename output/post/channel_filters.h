@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "output/post/j211_filter.h"
-#include "runtime/model.h"
-#include "runtime/time_series.h"
+#include "runtime/model/model.h"
+#include "runtime/run/time_series.h"
 
 namespace sled::runtime::post {
 

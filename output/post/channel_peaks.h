@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/time_series.h"
+#include "runtime/run/time_series.h"
 
 namespace sled::runtime::post {
 

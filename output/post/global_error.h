@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "output/post/criterion_value.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 
 namespace sled::runtime::post {
 

@@ -5,7 +5,7 @@
 #include <limits>
 #include <map>
 
-#include "runtime/outputs.h"
+#include "runtime/run/outputs.h"
 
 namespace sled::runtime::post {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "output/post/criterion_value.h"
-#include "runtime/model.h"
-#include "runtime/time_series.h"
+#include "runtime/model/model.h"
+#include "runtime/run/time_series.h"
 
 namespace sled::runtime::post {
 

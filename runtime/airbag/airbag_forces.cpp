@@ -8,9 +8,9 @@
 #include "runtime/airbag/gas.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_geometry.h"
-#include "runtime/forces.h"
-#include "runtime/frame_motion.h"
-#include "runtime/functions.h"
+#include "runtime/dynamics/frame_motion.h"
+#include "runtime/forces/forces.h"
+#include "runtime/forces/functions.h"
 
 namespace sled::runtime {
 namespace {

@@ -7,7 +7,7 @@
 // data.wdot. The model: docs/runtime.md, "Airbags".
 #pragma once
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

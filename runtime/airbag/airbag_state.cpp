@@ -1,7 +1,7 @@
 #include "runtime/airbag/airbag_state.h"
 
 #include "runtime/airbag/airbag_forces.h"
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

@@ -1,13 +1,13 @@
-// What changes during a run for the airbags of a Model (runtime/data.h holds one AirbagState):
-// the results of the last evaluation, which outputs read, and the warm starts of the contact
-// searches. The gas state itself (mass, internal energy) is integrated: it lives in Data::w.
-// Sized once by SizeAirbagState (after Data::w is set); nothing in a step allocates.
+// What changes during a run for the airbags of a Model (runtime/model/data.h holds one
+// AirbagState): the results of the last evaluation, which outputs read, and the warm starts of the
+// contact searches. The gas state itself (mass, internal energy) is integrated: it lives in
+// Data::w. Sized once by SizeAirbagState (after Data::w is set); nothing in a step allocates.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 
@@ -40,7 +40,7 @@ struct AirbagState {
   // The bag whose gas the segments inside it left no volume at the last evaluation; -1: none.
   int failed_bag = -1;
 
-  // Every field, for checkpoints (runtime/archive.h): the modes, and the last evaluation's
+  // Every field, for checkpoints (runtime/run/archive.h): the modes, and the last evaluation's
   // values (warm starts, the envelope scale that starts its Newton iteration, outputs).
   template <class Archive>
   void Serialize(Archive& a) {

@@ -1,6 +1,6 @@
-// The airbags of a Model (runtime/model.h holds one AirbagTable): uniform-pressure ellipsoidal
-// bags, each fixed in a frame, fed by an inflator, venting through an orifice, and pushed in by
-// the contact ellipsoids of the segments they may touch. Filled by compiler::Lower
+// The airbags of a Model (runtime/model/model.h holds one AirbagTable): uniform-pressure
+// ellipsoidal bags, each fixed in a frame, fed by an inflator, venting through an orifice, and
+// pushed in by the contact ellipsoids of the segments they may touch. Filled by compiler::Lower
 // (compiler/lower/lower_airbags.cpp); evaluated by runtime/airbag/airbag_forces.cpp. The gas
 // state of each bag (its mass and internal energy) is part of the integrated state, as two
 // auxiliary states (Model::nw). Semantics: docs/runtime.md, "Airbags".
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 

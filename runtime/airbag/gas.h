@@ -3,7 +3,7 @@
 // plane. docs/runtime.md, "Airbags", gives the formulas.
 #pragma once
 
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 

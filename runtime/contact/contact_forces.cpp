@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "runtime/contact/contact_reach.h"
-#include "runtime/dynamics.h"
-#include "runtime/energy.h"
-#include "runtime/force_deflection.h"
-#include "runtime/forces.h"
-#include "runtime/mirror.h"
-#include "runtime/table_range.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/dynamics/mirror.h"
+#include "runtime/forces/force_deflection.h"
+#include "runtime/forces/forces.h"
+#include "runtime/forces/table_range.h"
+#include "runtime/run/energy.h"
 
 namespace sled::runtime {
 namespace {

@@ -8,8 +8,8 @@
 #include <span>
 
 #include "runtime/contact/contact_geometry.h"
-#include "runtime/data.h"
-#include "runtime/frame_motion.h"
+#include "runtime/dynamics/frame_motion.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 
@@ -26,7 +26,7 @@ void SetUpContacts(const Model& model, Data& data);
 void TurnContactHistory(const Model& model, Data& data, std::size_t k);
 
 // With data's kinematics and surfaces current (after an accepted step or at an output row):
-// records each tabulated contact's deflection past its table's rows (runtime/table_range.h).
+// records each tabulated contact's deflection past its table's rows (runtime/forces/table_range.h).
 void WatchContactTables(const Model& model, Data& data);
 
 // World poses of the contact surfaces from the current kinematics (into data.contacts).

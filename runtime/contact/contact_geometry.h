@@ -6,7 +6,7 @@
 
 #include <utility>
 
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 

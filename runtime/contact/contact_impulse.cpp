@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "runtime/contact/contact_forces.h"
-#include "runtime/dynamics.h"
-#include "runtime/forces.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/forces/forces.h"
 
 namespace sled::runtime {
 namespace {

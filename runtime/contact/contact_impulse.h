@@ -4,7 +4,7 @@
 // joints carry it), so momentum is kept; a prescribed side (vehicle, ground) is not changed.
 #pragma once
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

@@ -2,7 +2,7 @@
 // ellipsoids touching one surface gives several pairs).
 #pragma once
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

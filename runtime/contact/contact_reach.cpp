@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "runtime/contact/contact_forces.h"
-#include "runtime/frame_motion.h"
+#include "runtime/dynamics/frame_motion.h"
 
 namespace sled::runtime {
 namespace {

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/data.h"
-#include "runtime/model.h"
+#include "runtime/model/data.h"
+#include "runtime/model/model.h"
 
 namespace sled::runtime {
 

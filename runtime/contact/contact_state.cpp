@@ -1,7 +1,7 @@
 #include "runtime/contact/contact_state.h"
 
-#include "runtime/force_deflection.h"
-#include "runtime/model.h"
+#include "runtime/forces/force_deflection.h"
+#include "runtime/model/model.h"
 
 namespace sled::runtime {
 

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/force_deflection.h"
-#include "runtime/model_types.h"
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/force_deflection.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 
@@ -41,7 +41,7 @@ struct ContactState {
   // derivative while the pair is loading (beyond its largest deflection so far), else 0.
   std::vector<double> rate;
 
-  // --- Per pair, changed only at events (runtime/system.h): the largest deflection and its
+  // --- Per pair, changed only at events (runtime/run/system.h): the largest deflection and its
   // unloading curve, set where the deflection turns (the event's function is `rate` while the
   // pair loads), so the integrators' error control sees every force between two turns.
   std::vector<LoadingHistory> history;
@@ -68,7 +68,7 @@ struct ContactState {
   std::vector<double> response;
   std::vector<double> saved_v;
 
-  // What carries from one evaluation to the next, for checkpoints (runtime/archive.h): the
+  // What carries from one evaluation to the next, for checkpoints (runtime/run/archive.h): the
   // committed histories, and the last evaluation's values (warm starts, outputs).
   template <class Archive>
   void Serialize(Archive& a) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/model_types.h"
+#include "runtime/model/model_types.h"
 
 namespace sled::runtime {
 

@@ -1,6 +1,6 @@
 #include "runtime/integrate/adaptive_integrator.h"
 
-#include "runtime/archive.h"
+#include "runtime/run/archive.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "runtime/archive.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 

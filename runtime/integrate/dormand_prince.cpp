@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 namespace {

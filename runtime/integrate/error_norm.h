@@ -45,7 +45,7 @@ class StepSizeController {
   // Forgets the error history (after an event or an external state change).
   void Restart();
 
-  // Its memory of the last error, for checkpoints (runtime/archive.h).
+  // Its memory of the last error, for checkpoints (runtime/run/archive.h).
   template <class Archive>
   void Serialize(Archive& archive) {
     archive.Field(previous_error_);

@@ -57,7 +57,7 @@ class EventLocator {
   // No event in the step: the end values become the next step's start values.
   void Advance();
 
-  // What it carries between steps, for checkpoints (runtime/archive.h).
+  // What it carries between steps, for checkpoints (runtime/run/archive.h).
   template <class Archive>
   void Serialize(Archive& archive) {
     archive.Field(g_start_);

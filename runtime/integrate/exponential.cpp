@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "runtime/archive.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 

@@ -13,7 +13,7 @@
 
 namespace sled::runtime {
 
-class Archive;              // runtime/archive.h
+class Archive;              // runtime/run/archive.h
 struct StructuredJacobian;  // runtime/integrate/structured_jacobian.h
 
 // y' = f(t, y), with events g_k(t, y) whose sign changes the integrator must locate.

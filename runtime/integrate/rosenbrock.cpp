@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 
-#include "runtime/archive.h"
 #include "runtime/integrate/error_norm.h"
+#include "runtime/run/archive.h"
 
 namespace sled::runtime {
 namespace {

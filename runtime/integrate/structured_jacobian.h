@@ -73,7 +73,7 @@ struct StructuredJacobian {
   // True when N^2 = 0 holds by pattern: no row of an entry is the column of another.
   bool NilpotentByPattern() const;
 
-  // Writes or reads (a checkpoint, runtime/archive.h) the entries and columns; the reader must
+  // Writes or reads (a checkpoint, runtime/run/archive.h) the entries and columns; the reader must
   // have been Reserved for the same size and rank.
   template <class Archive>
   void Serialize(Archive& archive) {

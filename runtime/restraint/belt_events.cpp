@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "runtime/dynamics.h"
-#include "runtime/joint.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/dynamics/joint.h"
 #include "runtime/restraint/belt_slip.h"
 #include "runtime/restraint/belts.h"
 

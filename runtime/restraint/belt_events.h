@@ -20,7 +20,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

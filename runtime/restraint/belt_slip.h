@@ -25,7 +25,7 @@
 // its webbing arbitrarily), and the tensions themselves are never negative.
 #pragma once
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 

@@ -1,6 +1,6 @@
-// What the belts of a Model carry in a Data (runtime/data.h holds one BeltState): the junctions
-// where webbing passes between spans and their stick or slip, the webbing each span holds, the
-// loading histories, and the results of the last evaluation. Sized once by SetUpBelts.
+// What the belts of a Model carry in a Data (runtime/model/data.h holds one BeltState): the
+// junctions where webbing passes between spans and their stick or slip, the webbing each span
+// holds, the loading histories, and the results of the last evaluation. Sized once by SetUpBelts.
 //
 // Nothing here changes between two events except the last evaluation's results: a junction's
 // mode (stick, slip one way or the other), the webbing it held when it last stuck, the body
@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "runtime/force_deflection.h"
+#include "runtime/forces/force_deflection.h"
 #include "runtime/restraint/belt_wrap.h"
 
 namespace sled::runtime {
@@ -102,7 +102,7 @@ struct BeltState {
   std::vector<std::int32_t> solve_index;  // per junction: its unknown, or -1
   std::vector<double> solve_residual, solve_step, solve_matrix, solve_trial;
 
-  // What changes during a run, for checkpoints (runtime/archive.h): the event-time state, and
+  // What changes during a run, for checkpoints (runtime/run/archive.h): the event-time state, and
   // the last evaluation's values.
   template <class Archive>
   void Serialize(Archive& a) {

@@ -1,4 +1,4 @@
-// The belts and harnesses of a Model (runtime/model.h holds one BeltTable). Flat arrays in SI
+// The belts and harnesses of a Model (runtime/model/model.h holds one BeltTable). Flat arrays in SI
 // units, filled by compiler::Lower and never resized.
 //
 // A belt is a path of points: an anchor fixed in a frame (ground, vehicle or segment), then one
@@ -20,7 +20,7 @@
 
 namespace sled::runtime {
 
-struct FrameRef;  // runtime/model.h; complete before a BeltTable is made or used
+struct FrameRef;  // runtime/model/model.h; complete before a BeltTable is made or used
 
 struct BeltTable {
   // --- Per belt.

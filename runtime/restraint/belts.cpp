@@ -5,14 +5,14 @@
 
 #include <fmt/format.h>
 
-#include "runtime/dynamics.h"
-#include "runtime/forces.h"
-#include "runtime/functions.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/forces.h"
+#include "runtime/forces/functions.h"
+#include "runtime/forces/table_range.h"
 #include "runtime/restraint/belt_events.h"
 #include "runtime/restraint/belt_slip.h"
 #include "runtime/restraint/belt_wrap.h"
-#include "runtime/table_range.h"
-#include "runtime/vehicle.h"
 
 namespace sled::runtime {
 namespace {
@@ -163,7 +163,7 @@ void WatchBeltTables(const Model& model, Data& data) {
   for (std::size_t span = 0; span < state.rest_length.size(); ++span) {
     const double strain = state.length[span] / state.rest_length[span] - 1.0;
     const std::size_t belt = Index(state.span_belt[span]);
-    // Taut webbing past its table's rows runs on the extrapolation (runtime/table_range.h).
+    // Taut webbing past its table's rows runs on the extrapolation (runtime/forces/table_range.h).
     if (strain > 0) {
       RecordTableArgument(model.functions, table.function[belt], data.time, strain,
                           data.table_watch.belt[belt]);

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 
@@ -28,7 +28,7 @@ void ComputeBeltForces(const Model& model, Data& data);
 void EvaluateBelts(const Model& model, Data& data);
 
 // After EvaluateBelts at an accepted step's end: records each taut span's strain past its
-// webbing table's rows (runtime/table_range.h). A report only; nothing feeds back.
+// webbing table's rows (runtime/forces/table_range.h). A report only; nothing feeds back.
 void WatchBeltTables(const Model& model, Data& data);
 
 // The length along the surface of junction j's wrap from the webbing's middle to the body point

@@ -46,10 +46,10 @@
 
 #include "output/post/injury_criteria.h"
 #include "output/post/series_error.h"
-#include "runtime/dynamics.h"
-#include "runtime/outputs.h"
-#include "runtime/run.h"
-#include "runtime/system.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/run/outputs.h"
+#include "runtime/run/run.h"
+#include "runtime/run/system.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/numerics_suite.h"
 

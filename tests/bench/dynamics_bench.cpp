@@ -24,7 +24,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "runtime/dynamics.h"
+#include "runtime/dynamics/dynamics.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/tree_models.h"
 

@@ -13,7 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/vehicle.h"
 
 namespace sled::bench {
 namespace {

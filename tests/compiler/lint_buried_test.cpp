@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "lang/diagnostics/diagnostic.h"
-#include "runtime/dynamics.h"
+#include "runtime/dynamics/dynamics.h"
 #include "sled/compile.h"
 
 namespace sled::compiler {

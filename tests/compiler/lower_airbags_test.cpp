@@ -7,7 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 #include "tests/verification/compile.h"
 
 namespace sled::compiler {

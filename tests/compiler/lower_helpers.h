@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 #include "sled/compile.h"
 
 namespace sled::compiler::lower_test {

@@ -1,7 +1,7 @@
 // compiler::Lower: springs, outputs, contacts and belts of the scene, the model dump, and the
 // golden runner, which lowers every tests/golden/model/*.sled and compares runtime::DumpModel with
 // the .model file next to it (set SLED_UPDATE_GOLDEN=1 to write them). Expected values come from
-// the rules in runtime/model.h, worked out by hand, not from earlier output.
+// the rules in runtime/model/model.h, worked out by hand, not from earlier output.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 #include "sled/compile.h"
 #include "tests/compiler/lower_helpers.h"
 #include "tests/compiler/sled_process.h"

@@ -1,6 +1,6 @@
 // compiler::Lower: the checked scenario to the runtime's Model: the joint tree, symmetry,
 // geometry, functions and the initial state (scene elements, contacts, belts and the golden
-// model dumps: lower_scene_test.cpp). Expected values come from the rules in runtime/model.h,
+// model dumps: lower_scene_test.cpp). Expected values come from the rules in runtime/model/model.h,
 // worked out by hand or by an independent computation (forward kinematics of the lowered model
 // against the checker's initial poses), not from earlier output.
 #include <cmath>
@@ -14,7 +14,7 @@
 #include <Eigen/Geometry>
 
 #include "compiler/check/initial_pose.h"
-#include "runtime/model.h"
+#include "runtime/model/model.h"
 #include "sled/compile.h"
 #include "tests/compiler/lower_helpers.h"
 

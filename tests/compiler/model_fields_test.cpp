@@ -1,5 +1,5 @@
-// The one list of the Model's fields (runtime/model_fields.h): every field of every example and
-// golden scene, corrupted in turn, is refused by ValidateModel with a message naming it, and
+// The one list of the Model's fields (runtime/model/model_fields.h): every field of every example
+// and golden scene, corrupted in turn, is refused by ValidateModel with a message naming it, and
 // changes the checkpoint fingerprint's part of its role (the dump too). Also FinalizeModel's
 // derived structure and the check that a Data belongs to its Model.
 #include <algorithm>
@@ -17,11 +17,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "runtime/checkpoint.h"
-#include "runtime/data.h"
-#include "runtime/model_fields.h"
-#include "runtime/model_structure.h"
-#include "runtime/run.h"
+#include "runtime/model/data.h"
+#include "runtime/model/model_fields.h"
+#include "runtime/model/model_structure.h"
+#include "runtime/run/checkpoint.h"
+#include "runtime/run/run.h"
 #include "sled/compile.h"
 
 namespace sled::runtime {

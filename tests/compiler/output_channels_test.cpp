@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/outputs.h"
+#include "runtime/run/outputs.h"
 #include "tests/verification/compile.h"
 
 namespace sled::compiler {

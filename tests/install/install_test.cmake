@@ -32,7 +32,7 @@ file(MAKE_DIRECTORY "${WORK_DIR}")
 set(prefix "${WORK_DIR}/prefix")
 run("cmake --install" "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/installed")
 file(RENAME "${WORK_DIR}/installed" "${prefix}")
-foreach(file bin/sled include/sled/sled.h include/sled/runtime/model.h
+foreach(file bin/sled include/sled/sled.h include/sled/runtime/model/model.h
              include/sled/lang/diagnostics/diagnostic_kinds.def lib/cmake/sled/sledConfig.cmake
              share/sled/stdlib/humans/male50.sled)
   if(NOT EXISTS "${prefix}/${file}")

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "legacy_test_deck.h"
-#include "runtime/functions.h"
+#include "runtime/forces/functions.h"
 #include "sled/compile.h"
 #include "sled/simulate.h"
 

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "runtime/integrate/make_integrator.h"
-#include "runtime/system.h"
+#include "runtime/run/system.h"
 #include "tests/runtime/model_fixtures.h"
 
 namespace {

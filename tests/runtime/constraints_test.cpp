@@ -8,12 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/constraints.h"
-#include "runtime/dynamics.h"
-#include "runtime/forces.h"
-#include "runtime/joint.h"
-#include "runtime/mass_matrix.h"
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/constraints.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/dynamics/joint.h"
+#include "runtime/dynamics/mass_matrix.h"
+#include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/forces.h"
 #include "tests/runtime/model_fixtures.h"
 
 namespace sled::runtime {

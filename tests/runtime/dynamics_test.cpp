@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/dynamics.h"
-#include "runtime/forces.h"
+#include "runtime/dynamics/dynamics.h"
+#include "runtime/forces/forces.h"
 #include "tests/runtime/model_fixtures.h"
 
 namespace sled::runtime {

@@ -1,12 +1,12 @@
-// Loading and unloading (runtime/force_deflection.h): integrals of the function forms worked out
-// by hand, and the energy an unloading returns, integrated by Simpson's rule, against the
+// Loading and unloading (runtime/forces/force_deflection.h): integrals of the function forms worked
+// out by hand, and the energy an unloading returns, integrated by Simpson's rule, against the
 // fraction 1 - energy_loss of the loading energy.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "runtime/force_deflection.h"
-#include "runtime/functions.h"
+#include "runtime/forces/force_deflection.h"
+#include "runtime/forces/functions.h"
 #include "tests/runtime/model_fixtures.h"
 
 namespace sled::runtime {

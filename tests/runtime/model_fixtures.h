@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime::testing {
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/row_search.h"
+#include "runtime/forces/row_search.h"
 
 namespace sled::runtime {
 namespace {

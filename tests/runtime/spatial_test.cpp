@@ -1,11 +1,11 @@
-// The blockwise spatial transforms (runtime/spatial.h) against the plain 6x6 products with the
-// transform's matrix X: X m, X^T f and X^T I X, for random rotations, offsets and symmetric
+// The blockwise spatial transforms (runtime/dynamics/spatial.h) against the plain 6x6 products with
+// the transform's matrix X: X m, X^T f and X^T I X, for random rotations, offsets and symmetric
 // inertias.
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "runtime/spatial.h"
+#include "runtime/dynamics/spatial.h"
 
 namespace sled::runtime {
 namespace {

@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "output/post/injury_criteria.h"
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 

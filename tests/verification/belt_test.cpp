@@ -19,8 +19,8 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "runtime/forces.h"
-#include "runtime/outputs.h"
+#include "runtime/forces/forces.h"
+#include "runtime/run/outputs.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "output/post/channel_filters.h"
-#include "runtime/outputs.h"
+#include "runtime/run/outputs.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {

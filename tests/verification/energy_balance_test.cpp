@@ -1,4 +1,4 @@
-// The energy balance (runtime/energy.h). At single instants: the rate of change of kinetic and
+// The energy balance (runtime/run/energy.h). At single instants: the rate of change of kinetic and
 // potential energy, computed from the accelerations the dynamics produced, equals the power the
 // force elements, joint characteristics and constraints deliver to the segments; no integration
 // is involved, so the identity holds to rounding, and it fails if a force is applied at the
@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/energy.h"
+#include "runtime/run/energy.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/vehicle.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
 

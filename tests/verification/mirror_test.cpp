@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/dynamics.h"
+#include "runtime/dynamics/dynamics.h"
 #include "tests/verification/tree_models.h"
 
 namespace sled::verification {

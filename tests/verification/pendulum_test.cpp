@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/constraints.h"
+#include "runtime/dynamics/constraints.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
 

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/vehicle.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {

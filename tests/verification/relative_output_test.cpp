@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/relative_motion.h"
+#include "runtime/run/relative_motion.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {
@@ -147,7 +147,7 @@ TEST(RelativeOutputs, MatchTheClosedFormsSeenFromASpinningVehicleAndASpinningBod
   EXPECT_LT(worst, 1e-7);
 }
 
-// The formulas of runtime/relative_motion.h at one instant against a hand computation: a point
+// The formulas of runtime/run/relative_motion.h at one instant against a hand computation: a point
 // at rest in the ground at (1, 0, 0), seen from a frame spinning at 2 rad/s about z at the origin,
 // moves backwards round a circle: velocity (0, -2, 0), acceleration 4 towards the centre.
 TEST(RelativeOutputs, APointAtRestSeenFromASpinningFrameCirclesBackwards) {

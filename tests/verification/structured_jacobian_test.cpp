@@ -1,5 +1,5 @@
-// The multibody system's structured Jacobian (runtime/multibody_jacobian.h) against the dense
-// Jacobian of its derivative by central differences, an independent reference: on scenes with
+// The multibody system's structured Jacobian (runtime/dynamics/multibody_jacobian.h) against the
+// dense Jacobian of its derivative by central differences, an independent reference: on scenes with
 // loaded contacts, belts, joint stops, damping and an airbag, at states taken from a dopri5 run,
 // the remainder J - A must be non-stiff: its spectral radius far below J's where J is stiff, and
 // small against the step A was formed for (the terms A leaves out are those too soft for it).
@@ -13,7 +13,7 @@
 
 #include "runtime/integrate/dormand_prince.h"
 #include "runtime/integrate/structured_jacobian.h"
-#include "runtime/system.h"
+#include "runtime/run/system.h"
 #include "tests/verification/compile.h"
 
 namespace sled::verification {

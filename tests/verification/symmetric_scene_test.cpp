@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "runtime/run.h"
+#include "runtime/run/run.h"
 #include "tests/verification/compile.h"
 #include "tests/verification/verification.h"
 

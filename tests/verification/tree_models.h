@@ -25,7 +25,7 @@
 
 #include <mujoco/mujoco.h>
 
-#include "runtime/data.h"
+#include "runtime/model/data.h"
 
 namespace sled::verification {
 

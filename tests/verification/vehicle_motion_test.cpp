@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "runtime/input_discontinuities.h"
-#include "runtime/vehicle.h"
+#include "runtime/dynamics/vehicle.h"
+#include "runtime/run/input_discontinuities.h"
 #include "tests/runtime/model_fixtures.h"
 #include "tests/verification/verification.h"
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "runtime/dynamics.h"
+#include "runtime/dynamics/dynamics.h"
 #include "runtime/integrate/make_integrator.h"
-#include "runtime/system.h"
+#include "runtime/run/system.h"
 
 namespace sled::verification {
 

@@ -1,0 +1,23 @@
+// The forward dynamics of a Model: kinematics down the trees, forces, then the articulated-body
+// recursion for the accelerations (O(n) in the number of segments) and the joint wrenches.
+#pragma once
+
+#include "runtime/model/data.h"
+
+namespace sled::runtime {
+
+// Poses, velocities and motion subspaces from data.q, data.v and data.locked.
+void ComputeKinematics(const Model& model, Data& data);
+
+// Accelerations (data.vdot, data.acceleration) and joint wrenches from the forces in
+// data.external and data.generalized_force. False when an articulated inertia is singular or
+// not finite; `failure` then says which segment.
+bool ComputeAccelerations(const Model& model, Data& data, Failure* failure);
+
+// Kinematics, forces and accelerations at data.time.
+bool Forward(const Model& model, Data& data, Failure* failure);
+
+// The spatial inertia of a segment about its centre of mass, in its frame.
+Mat6 SpatialInertia(const Model& model, std::size_t segment);
+
+}  // namespace sled::runtime

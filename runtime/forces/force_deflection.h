@@ -1,0 +1,52 @@
+// The CVS force-deflection model with loading and unloading, for any function of the Model
+// that has unloading parameters (energy_loss G, permanent_set p): contact force against
+// deflection (runtime/contact/) and webbing force against strain (runtime/restraint/).
+//
+// Loading (the deflection beyond the largest so far, x_max) follows the function f. Below x_max
+// the force follows an unloading curve from (x_max, f(x_max)) down to zero force at the
+// permanent deflection x_p, and reloading climbs the same curve back to x_max:
+//
+//   F(x) = F_max ((x - x_p) / (x_max - x_p))^n   for x_p < x < x_max,   0 for x <= x_p.
+//
+// x_p = p x_max when p is given; otherwise the x_p at which a straight unloading line returns
+// the fraction 1 - G of the loading energy E = integral of f from 0 to x_max:
+// x_max - x_p = 2 (1 - G) E / F_max (not below zero). The exponent n makes the returned energy,
+// F_max (x_max - x_p) / (n + 1), exactly (1 - G) E, so a full unloading dissipates G E; with
+// only p given the curve is the straight line (n = 1). G = p = 0: elastic, unloading along f.
+//
+// The history (x_max and the curve) changes only at events, where the deflection turns while it
+// loads (runtime/run/system.h, runtime/restraint/belt_events.h), so every evaluation is a function
+// of the state and the events so far.
+#pragma once
+
+#include <cstdint>
+
+#include "runtime/model/model.h"
+
+namespace sled::runtime {
+
+struct LoadingHistory {
+  double max_deflection = 0.0;  // x_max
+  double max_force = 0.0;       // f(x_max)
+  double permanent = 0.0;       // x_p
+  double exponent = 1.0;        // n
+};
+
+// F(x) under the committed history.
+double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, double x,
+                             const LoadingHistory& history);
+
+// dF/dx under the history.
+double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, double x,
+                             const LoadingHistory& history);
+
+// At a deflection x that turns (an event, or the start): a new largest deflection loads further
+// and moves the unloading curve.
+void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
+                          LoadingHistory& history);
+
+// True when the function's unloading differs from its loading (an energy loss or a permanent
+// set): only such force elements keep a history.
+bool HasHysteresis(const FunctionTable& functions, std::int32_t id);
+
+}  // namespace sled::runtime
