@@ -4,6 +4,7 @@
 
 #include "runtime/constraints.h"
 #include "runtime/contact/contact_forces.h"
+#include "runtime/joint_hysteresis.h"
 #include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
@@ -51,6 +52,8 @@ Data MakeData(const Model& model) {
   data.spring_force.assign(model.nspring(), 0.0);
   SizeTableWatch(model, data.table_watch);
   SizeContactState(model, data.contacts);
+  SizeJointHistories(model, data.joint_histories);
+  SetUpJointHistories(model, data);
   SizeAirbagState(model, data);
   SetUpConstraints(model, data);
   SetUpBelts(model, data);

@@ -12,6 +12,7 @@
 #include "runtime/airbag/airbag_state.h"
 #include "runtime/contact/contact_state.h"
 #include "runtime/energy_balance.h"
+#include "runtime/joint_hysteresis.h"
 #include "runtime/model.h"
 #include "runtime/restraint/belt_state.h"
 #include "runtime/spatial.h"
@@ -82,6 +83,8 @@ struct Data {
   // Elements whose argument left their table's rows: when and how far (runtime/table_range.h).
   TableWatch table_watch;
 
+  // Joint axes whose torque functions unload otherwise than they load: their loading histories.
+  JointHistories joint_histories;
   // Contacts: per pair deflection, force and point, the loading history and work arrays.
   ContactState contacts;
   // Belts and harnesses (restraint/belts.h).

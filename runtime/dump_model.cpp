@@ -167,8 +167,13 @@ std::string FunctionText(const FunctionTable& f, std::size_t i) {
       out += "]";
       break;
   }
-  return out + fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
-                           Get(f.permanent_set, i));
+  out += fmt::format(" energy_loss {} permanent_set {}", Get(f.energy_loss, i),
+                     Get(f.permanent_set, i));
+  // Only when given, so the dumps of functions without it stay as they were.
+  if (i < f.unload_slope.size() && f.unload_slope[i] > 0) {
+    out += fmt::format(" unload_slope {}", f.unload_slope[i]);
+  }
+  return out;
 }
 
 // One line per airbag and per contact ellipsoid, and the auxiliary states' initial values.
@@ -253,11 +258,14 @@ std::string DumpModel(const Model& m) {
                   m.nsegment(), m.nq, m.nv, m.nvehicle(), m.functions.size(), m.nspring(),
                   m.nconstraint(), m.output_kind.size()));
   for (std::size_t s = 0; s < m.nsegment(); ++s) {
+    // The dummy type after the source: a checkpoint's physics fingerprint drops the source and
+    // what follows it, and the dummy type only names channels (runtime/checkpoint.cpp).
     line(fmt::format("segment {} {} parent {} base {} mass {} inertia {} source {}", s,
                      m.segment_name[s], Get(m.segment_parent, s),
                      s < m.segment_base.size() ? Text(m.segment_base[s]) : std::string("-"),
                      Get(m.segment_mass, s), Text(Get(m.segment_inertia, s)),
-                     Text(Get(m.segment_source, s))));
+                     Text(Get(m.segment_source, s))) +
+         (s < m.segment_dummy.size() ? " dummy " + m.segment_dummy[s] : std::string()));
     const JointKind kind = Get(m.joint_kind, s);
     std::string joint =
         fmt::format("joint {} {} {} q {}+{} v {}+{}", s,
