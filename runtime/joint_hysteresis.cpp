@@ -10,6 +10,12 @@
 namespace sled::runtime {
 namespace {
 
+// Turns within this of the largest angle so far (rad, or m for a slip joint) are no events: the
+// axis loads and unloads elastically over that span. Without it an axis resting at an angle
+// (most often zero, between its two sides) turns at every step on the integrator's noise, and
+// each turn stops the step.
+constexpr double kTurnResolution = 1e-6;
+
 // An axis's angle (a ball joint's flexure: its size) and its rate, for the histories.
 struct AxisMotion {
   double angle = 0.0;
@@ -115,7 +121,7 @@ double JointTurnFunction(const Model& model, const Data& data, std::size_t h) {
   const AxisMotion motion = MotionOfAxis(model, data, s, histories.axis[h]);
   const double largest = motion.angle >= 0 ? histories.positive[h].max_deflection
                                            : histories.negative[h].max_deflection;
-  if (motion.locked || !(std::abs(motion.angle) > largest)) return 1.0;
+  if (motion.locked || !(std::abs(motion.angle) > largest + kTurnResolution)) return 1.0;
   return motion.angle >= 0 ? motion.rate : -motion.rate;
 }
 
