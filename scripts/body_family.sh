@@ -13,7 +13,7 @@ out="${1:-$root/stdlib/humans}"
 scale() { python3 "$root/scripts/scale_body.py" "$@"; }
 nhtsa_family="the family table of NHTSA's Hybrid III page"
 
-scale --name female05 --stature 59.1in --mass 108.03lb \
+scale --name female05 --dummy hybrid3_5f --stature 59.1in --mass 108.03lb \
   --segment-mass head=8.23lb --segment-mass neck=2.0lb --segment-mass upper_torso=26.5lb \
   --segment-mass lower_torso=29.2lb --segment-mass upper_arms=5.2lb \
   --segment-mass lower_arms=5.2lb --segment-mass upper_legs=13.8lb \

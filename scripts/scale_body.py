@@ -156,6 +156,9 @@ def main():
     parser.add_argument("--mass", required=True, help="total mass, e.g. 48.99kg")
     parser.add_argument("--segment-mass", action="append", default=[], metavar="GROUP=MASS")
     parser.add_argument("--head-length", help="published head length, e.g. 172.7mm")
+    parser.add_argument("--dummy", default="human",
+                        help="the dummy the body stands for in ISO-MME codes (`dummy = ...` of a "
+                             "body in docs/language.md); default human, code 00")
     parser.add_argument("--title", default="", help="what the body is, for the header")
     parser.add_argument("--source", action="append", default=[], help="a source line for the header")
     parser.add_argument("--reference", default=str(REFERENCE), help=argparse.SUPPRESS)
@@ -302,6 +305,9 @@ def main():
             if m:
                 segment, joint, joint_child = None, m.group(1), m.group(3)
             new = line
+            m = re.match(r"(\s*dummy = )\w+$", new)
+            if m:
+                new = m.group(1) + args.dummy
             m = re.search(r"mass = (" + NUMBER + r") kg", new)
             if m and segment:
                 new = new.replace(m.group(0), f"mass = {fmt(masses[segment])} kg")

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "compiler/check/checkers.h"
+#include "runtime/model/dummy_types.h"
 
 namespace sled::compiler::internal {
 namespace {
@@ -42,6 +43,7 @@ void BodyChecker::CheckBodyDeclarations(Scope& scope, const ast::Statement& body
     current_body_ = saved;
     pending.reference = One(bound, "reference");
     pending.h_point = One(bound, "h_point");
+    pending.dummy = One(bound, "dummy");
   }
   bodies_.push_back(pending);
 }
@@ -270,8 +272,28 @@ void BodyChecker::CheckBodyDetails() {
         body.h_point = ExpectVector(*pending.scope, *value, dim::kLength, "h_point");
       }
     }
+    if (pending.dummy) body.dummy = ReadDummy(*pending.dummy);
     CheckTopology(body, pending.index);
   }
+}
+
+// `dummy = WORD` of a body: the ISO/TS 13499 dummy type of the word (runtime/model/dummy_types.h);
+// empty when the word is none of them (reported).
+std::string CheckContext::ReadDummy(const ast::Statement& statement) {
+  const ast::Expr* value = SingleValue(statement);
+  if (!value) return {};
+  const std::string word = value->kind == ast::ExprKind::kPath ? value->PathText() : "";
+  std::vector<std::string> words;
+  std::string listed;
+  for (const runtime::DummyType& type : runtime::kDummyTypes) {
+    if (type.word == word) return std::string(type.iso_code);
+    words.emplace_back(type.word);
+    listed += (listed.empty() ? "`" : ", `") + words.back() + "`";
+  }
+  Report(DiagnosticKind::kInvalidEnumValue, value->range,
+         fmt::format("`dummy` names a crash-test dummy: {}", listed), "not a dummy type",
+         lang::DidYouMean(word, words));
+  return {};
 }
 
 // The characteristics a joint's block (or an `override` of it) gives: only what the block

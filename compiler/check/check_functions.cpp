@@ -3,6 +3,7 @@
 // use expects (flexure: angle -> torque, contact force: deflection -> force, ...).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -155,14 +156,34 @@ std::optional<FunctionId> CheckContext::ExpectFunction(Scope& scope,
              "table rows need `table(x -> y)`", "rows without a table",
              "put the rows in the block of `table(x -> y) { ... }`");
     }
-    function.energy_loss = ReadQuantity(scope, bound, BlockKind::kTable, "energy_loss").value_or(0);
-    function.permanent_set =
-        ReadQuantity(scope, bound, BlockKind::kTable, "permanent_set").value_or(0);
-    function.unload_slope = ReadQuantity(scope, bound, BlockKind::kTable, "unload_slope");
+    ReadUnloading(scope, bound, function);
   }
   scenario_.functions.push_back(std::move(function));
   function_valid_.push_back(true);
   return static_cast<FunctionId>(scenario_.functions.size() - 1);
+}
+
+void CheckContext::ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function) {
+  function.energy_loss = ReadQuantity(scope, bound, BlockKind::kTable, "energy_loss").value_or(0);
+  function.permanent_set =
+      ReadQuantity(scope, bound, BlockKind::kTable, "permanent_set").value_or(0);
+  function.unload_slope = ReadQuantity(scope, bound, BlockKind::kTable, "unload_slope");
+  if (!function.unload_slope) return;
+  // A straight unloading line of the given slope decides both the permanent deflection and the
+  // energy returned: a permanent set or an energy loss besides would contradict it.
+  const std::pair<const char*, const ast::Statement*> others[] = {
+      {"energy_loss", One(bound, "energy_loss")}, {"permanent_set", One(bound, "permanent_set")}};
+  for (const auto& [other, given] : others) {
+    if (given == nullptr) continue;
+    Report(DiagnosticKind::kOverdeterminedUnloading, given->range,
+           fmt::format("`{}` and `unload_slope` both describe the unloading line", other),
+           "given with `unload_slope`",
+           fmt::format("keep one: `unload_slope = s` unloads along a straight line of s times the "
+                       "loading slope (its permanent set is 1 - 1/s of the largest deflection); "
+                       "`{}` describes the curve otherwise",
+                       other));
+    function.unload_slope.reset();
+  }
 }
 
 bool CheckContext::BuildFunction(Scope& scope, const ast::Statement& statement,
@@ -231,10 +252,7 @@ bool CheckContext::BuildFunction(Scope& scope, const ast::Statement& statement,
   // Rows and unloading attributes live in the statement's block.
   BoundBlock bound;
   if (statement.block) bound = Bind(BlockKind::kTable, statement.block.get(), statement.range);
-  function.energy_loss = ReadQuantity(scope, bound, BlockKind::kTable, "energy_loss").value_or(0);
-  function.permanent_set =
-      ReadQuantity(scope, bound, BlockKind::kTable, "permanent_set").value_or(0);
-  function.unload_slope = ReadQuantity(scope, bound, BlockKind::kTable, "unload_slope");
+  ReadUnloading(scope, bound, function);
   if (form != "table" && !bound.rows.empty()) {
     Report(DiagnosticKind::kMisplacedStatement, bound.rows[0]->range,
            fmt::format("table rows given to `{}`", form), "rows need `table(x -> y)`",

@@ -366,15 +366,14 @@ void RestraintChecker::CheckRestraints() {
         Bind(BlockKind::kConstraint, pending.statement->block.get(), pending.statement->range);
     const ast::Clause* colon = pending.statement->FindClause(":");
     const ast::Expr* call = colon ? &colon->value : nullptr;
+    // `rolling` is read to be refused (E0422) with its reason; the others are the kinds.
     static const std::vector<std::string> kKinds = {"fixed_point", "fixed_distance", "rolling",
                                                     "sliding"};
     if (!call || call->kind != ast::ExprKind::kCall || call->arguments.size() != 1 ||
         !call->arguments[0].name.empty()) {
       Report(DiagnosticKind::kMalformedStatement, call ? call->range : pending.statement->range,
-             "write `constraint NAME : fixed_point(A -> B) { ... }` (or fixed_distance, rolling, "
-             "sliding)",
-             "not a constraint kind",
-             "constraint kinds: fixed_point, fixed_distance, rolling, sliding");
+             "write `constraint NAME : fixed_point(A -> B) { ... }` (or fixed_distance, sliding)",
+             "not a constraint kind", "constraint kinds: fixed_point, fixed_distance, sliding");
       continue;
     }
     const std::string kind = call->PathText();
@@ -386,6 +385,18 @@ void RestraintChecker::CheckRestraints() {
       continue;
     }
     constraint.kind = static_cast<Constraint::Kind>(found - kKinds.begin());
+    if (constraint.kind == Constraint::Kind::kRolling) {
+      // Two points cannot roll on each other: rolling without slipping needs the shape that
+      // rolls (where the contact point is on it), which a constraint's `at` points do not give.
+      Report(DiagnosticKind::kRollingConstraint, call->range,
+             fmt::format("constraint `{}`: a point cannot roll; rolling needs the surface that "
+                         "rolls and the one it rolls on",
+                         constraint.name),
+             "rolling of two points",
+             "for a wheel or a foot on a floor, give its ellipsoid a `contact` with `friction` "
+             "(it rolls where friction holds it); `sliding` keeps a point on a line, "
+             "`fixed_point` pins it");
+    }
     auto frames = ReadConnection(scope, *pending.statement, *call->arguments[0].value);
     if (!frames) continue;
     constraint.first = (*frames)[0];

@@ -111,6 +111,9 @@ struct Body {
   std::vector<int> joints;
   std::vector<int> reference_segments;  // the root of each tree (null joints start new ones)
   std::optional<Vec3> h_point;          // in the (first) reference segment's frame
+  // The dummy it stands for, as its ISO/TS 13499 dummy type ("H3"; runtime/model/dummy_types.h);
+  // empty when it names none.
+  std::string dummy;
   SourceRange range;
 };
 

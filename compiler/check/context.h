@@ -152,6 +152,8 @@ class CheckContext {
                                            Dimension result, std::string_view what);
   // Fills the function reserved at `index` from `function NAME = table(...) { rows }`.
   void DefineFunction(Scope& scope, const ast::Statement& statement, int index);
+  // `dummy = WORD` of a body: its ISO/TS 13499 dummy type; empty after reporting a bad word.
+  std::string ReadDummy(const ast::Statement& statement);
   // Checks a declared function against the signature a use site expects.
   bool MatchSignature(FunctionId id, Dimension argument, Dimension result, SourceRange use);
   bool CheckRange(const AttributeSpec& spec, double value, SourceRange range);
@@ -164,6 +166,9 @@ class CheckContext {
     std::vector<const ast::Statement*> rows;
   };
   BoundBlock Bind(BlockKind kind, const ast::Block* block, SourceRange owner_range);
+  // The unloading attributes of a function's block (energy_loss, permanent_set, unload_slope)
+  // into `function`: an unloading slope with either of the others is E0423.
+  void ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function);
   const ast::Statement* One(const BoundBlock& bound, AttributeKey name) const;
   // A statement that must be `keyword = value` (one value, no target or clauses).
   const ast::Expr* SingleValue(const ast::Statement& statement);
@@ -255,6 +260,7 @@ class CheckContext {
     int index;
     const ast::Statement* reference = nullptr;  // `reference = segment`
     const ast::Statement* h_point = nullptr;    // `h_point = (x, y, z) mm`
+    const ast::Statement* dummy = nullptr;      // `dummy = hybrid3_50m`
   };
   std::vector<PendingBody> bodies_;
   std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,

@@ -81,9 +81,7 @@ std::vector<BlockSpec> MakeSpecs() {
       {"load", BlockKind::kLoad,
        "an applied force or torque, a function of time, on a segment or across a joint"},
       {"tension", BlockKind::kSpring, "a tension-only element between two frames"},
-      {"constraint", BlockKind::kConstraint,
-       "a fixed-point, fixed-distance, rolling or sliding "
-       "constraint"},
+      {"constraint", BlockKind::kConstraint, "a fixed-point, fixed-distance or sliding constraint"},
       {"initial", BlockKind::kInitial, "initial position, orientation, velocity or joint angles"},
       {"override", BlockKind::kOverride,
        "changes the characteristics of a joint of an imported body"},
@@ -126,7 +124,11 @@ std::vector<BlockSpec> MakeSpecs() {
                               "the reference segment; default: the root of the "
                               "joint tree"),
                     Vector("h_point", d::kLength,
-                           "the H-point (hip-joint centre) in the reference segment's frame")},
+                           "the H-point (hip-joint centre) in the reference segment's frame"),
+                    Typed("dummy", V::kWord,
+                          "the crash-test dummy the body stands for, as ISO-MME channel codes "
+                          "name it: hybrid3_50m, hybrid3_5f, thor, thor_hybrid3_legs, es2, "
+                          "es2re, sid2s or human")},
                    {{"segment", BlockKind::kSegment, "a rigid segment"},
                     {"joint", BlockKind::kJoint, "a joint: ball, pin, euler, slip or null"},
                     {"ellipsoid", BlockKind::kEllipsoid, "an extra contact ellipsoid on a segment"},

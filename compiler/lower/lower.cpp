@@ -34,14 +34,28 @@ std::int32_t Lowering::Function(FunctionId id) {
   if (id < 0) return -1;
   const std::size_t old = At(id, scenario_.functions.size(), "function");
   if (function_map_.empty()) function_map_.assign(scenario_.functions.size(), -1);
-  if (function_map_[old] >= 0) return function_map_[old];
-  const compiler::Function& f = scenario_.functions[old];
+  if (function_map_[old] < 0) {
+    const compiler::Function& f = scenario_.functions[old];
+    function_map_[old] = AppendFunction(f, f.energy_loss);
+  }
+  return function_map_[old];
+}
+
+std::int32_t Lowering::TorqueFunction(FunctionId id, double joint_energy_loss) {
+  if (id < 0) return -1;
+  const compiler::Function& f = scenario_.functions[At(id, scenario_.functions.size(), "function")];
+  const bool own_unloading = f.energy_loss > 0 || f.permanent_set > 0 || f.unload_slope;
+  if (!(joint_energy_loss > 0) || own_unloading) return Function(id);
+  return AppendFunction(f, joint_energy_loss);
+}
+
+std::int32_t Lowering::AppendFunction(const compiler::Function& f, double energy_loss) {
   runtime::FunctionTable& table = model_.functions;
   const auto id_in_model = static_cast<std::int32_t>(table.size());
-  function_map_[old] = id_in_model;
   table.constant.push_back(f.kind == compiler::Function::Kind::kConstant ? f.constant : 0.0);
-  table.energy_loss.push_back(f.energy_loss);
+  table.energy_loss.push_back(energy_loss);
   table.permanent_set.push_back(f.permanent_set);
+  table.unload_slope.push_back(f.unload_slope.value_or(0.0));
   switch (f.kind) {
     case compiler::Function::Kind::kConstant:
       table.kind.push_back(runtime::FunctionTable::Kind::kConstant);
@@ -64,12 +78,6 @@ std::int32_t Lowering::Function(FunctionId id) {
       table.coefficients.insert(table.coefficients.end(), f.coefficients.begin(),
                                 f.coefficients.end());
       break;
-  }
-  if (f.unload_slope) {
-    AddNote(lang::DiagnosticKind::kNotSimulatedYet, f.range,
-            fmt::format("the unloading slope of function {} is not simulated yet; it unloads "
-                        "by its energy loss and permanent set only",
-                        f.name.empty() ? "here" : fmt::format("`{}`", f.name)));
   }
   return id_in_model;
 }

@@ -1,5 +1,5 @@
-// Vehicles, spring–dampers, constraints, run settings and output requests; and the notes for
-// the features the Model does not hold yet.
+// Vehicles, spring–dampers, constraints, run settings and output requests; and the notes of
+// what the Model leaves out.
 #include <stdexcept>
 #include <string>
 
@@ -138,13 +138,6 @@ void LowerConstraints(Lowering& lowering) {
     // A constraint that became a root's joint to its base is no loop.
     if (lowering.constraint_is_base_joint[c]) continue;
     const Constraint& constraint = lowering.scenario().constraints[c];
-    // Rolling needs the surface it rolls on, which comes with the contact milestone.
-    if (constraint.kind == Constraint::Kind::kRolling) {
-      lowering.AddNote(
-          lang::DiagnosticKind::kNotSimulatedYet, constraint.range,
-          fmt::format("rolling constraint `{}` is not simulated yet; left out", constraint.name));
-      continue;
-    }
     model.constraint_name.push_back(constraint.name);
     model.constraint_source.push_back(lowering.Position(constraint.range));
     switch (constraint.kind) {
@@ -155,8 +148,7 @@ void LowerConstraints(Lowering& lowering) {
         model.constraint_kind.push_back(Model::ConstraintKind::kFixedDistance);
         break;
       case Constraint::Kind::kRolling:
-        model.constraint_kind.push_back(Model::ConstraintKind::kRolling);
-        break;
+        throw std::logic_error("compiler::Lower: the checker refuses rolling constraints (E0422)");
       case Constraint::Kind::kSliding:
         model.constraint_kind.push_back(Model::ConstraintKind::kSliding);
         break;

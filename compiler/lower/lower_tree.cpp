@@ -1,11 +1,13 @@
 // Segments in tree order and the joints above them: for each body, its reference segments first,
 // then each tree depth first with children in the order their joints were declared.
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "compiler/lower/lowering.h"
+#include "runtime/model/dummy_types.h"
 
 namespace sled::compiler::lowering {
 namespace {
@@ -85,6 +87,21 @@ void OrderSegments(Lowering& lowering) {
   }
 }
 
+// Each segment's ISO/TS 13499 dummy type, its body's (runtime::kNoDummyCode when the body names
+// none); left empty when no body names one.
+void LowerDummyTypes(Lowering& lowering) {
+  const CheckedScenario& scenario = lowering.scenario();
+  const auto named = [](const Body& body) { return !body.dummy.empty(); };
+  if (std::none_of(scenario.bodies.begin(), scenario.bodies.end(), named)) return;
+  runtime::Model& model = lowering.model();
+  for (const int old : lowering.old_index) {
+    const int body = lowering.segment(old).body;
+    const std::string& dummy =
+        body >= 0 ? scenario.bodies[static_cast<std::size_t>(body)].dummy : std::string();
+    model.segment_dummy.push_back(dummy.empty() ? std::string(runtime::kNoDummyCode) : dummy);
+  }
+}
+
 }  // namespace
 
 void LowerTree(Lowering& lowering) {
@@ -158,13 +175,13 @@ void LowerTree(Lowering& lowering) {
         axis = (frame_in_parent.transpose() * ToEigen(joint.axis)).normalized();
       }
       model.joint_axis.push_back(axis);
+      // The joint's energy loss unloads each torque function that has no unloading of its own.
+      auto torque = [&](FunctionId id) { return lowering.TorqueFunction(id, joint.energy_loss); };
       if (kind == JointKind::kEuler) {
-        model.joint_function.push_back({lowering.Function(joint.precession),
-                                        lowering.Function(joint.nutation),
-                                        lowering.Function(joint.spin)});
-      } else {
         model.joint_function.push_back(
-            {lowering.Function(joint.flexure), lowering.Function(joint.twist), -1});
+            {torque(joint.precession), torque(joint.nutation), torque(joint.spin)});
+      } else {
+        model.joint_function.push_back({torque(joint.flexure), torque(joint.twist), -1});
       }
       model.joint_viscous.push_back(joint.viscous);
       model.joint_coulomb.push_back(joint.coulomb);
@@ -176,12 +193,6 @@ void LowerTree(Lowering& lowering) {
       model.joint_lock_below.push_back(joint.lock_below.value_or(-1.0));
       model.joint_unlock_above.push_back(joint.unlock_above.value_or(-1.0));
       model.joint_source.push_back(lowering.Position(joint.range));
-      if (joint.energy_loss != 0.0) {
-        lowering.AddNote(lang::DiagnosticKind::kNotSimulatedYet, joint.range,
-                         fmt::format("the energy loss of joint `{}` is not simulated yet; its "
-                                     "torque functions load and unload alike",
-                                     joint.name));
-      }
     }
     if (lowering.scenario().run.symmetry == Symmetry::kPlanar) RestrictToPlane(lowering, s);
     ApplyMirrorSymmetry(lowering, s);
@@ -195,6 +206,7 @@ void LowerTree(Lowering& lowering) {
   }
   model.nq = nq;
   model.nv = nv;
+  LowerDummyTypes(lowering);
 }
 
 }  // namespace sled::compiler::lowering

@@ -67,6 +67,9 @@ class Lowering {
 
   // The Model's id of a checked function, copying it into the table on first use; -1 for -1.
   std::int32_t Function(FunctionId id);
+  // A joint's torque function: the checked function, or, when the joint has an energy loss and
+  // the function no unloading of its own, a copy that unloads with the joint's energy loss.
+  std::int32_t TorqueFunction(FunctionId id, double joint_energy_loss);
   runtime::FrameRef Frame(const FrameRef& frame) const;
   // A point given in a frame, in world coordinates at t = 0.
   runtime::Vec3 WorldPoint(const FrameRef& frame, const Vec3& point) const;
@@ -102,6 +105,8 @@ class Lowering {
   const lang::SourceManager& sources_;
   runtime::Model& model_;
   std::vector<std::int32_t> function_map_;
+  // Appends a checked function to the Model's table with the given energy loss.
+  std::int32_t AppendFunction(const compiler::Function& f, double energy_loss);
   std::vector<Note> notes_;
 };
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "output/post/channel_filters.h"
+#include "runtime/model/dummy_types.h"
 #include "runtime/run/outputs.h"
 
 namespace sled::runtime {
@@ -125,21 +126,34 @@ Location LocationOf(const std::string& label, std::size_t skip = 0) {
 class Positions {
  public:
   explicit Positions(const Model& model) {
-    for (const std::string& name : model.segment_name) {
+    for (std::size_t s = 0; s < model.nsegment(); ++s) {
+      const std::string& name = model.segment_name[s];
       const std::string body = name.substr(0, name.find('.'));
-      if (std::find(bodies_.begin(), bodies_.end(), body) == bodies_.end()) bodies_.push_back(body);
+      if (std::find(bodies_.begin(), bodies_.end(), body) != bodies_.end()) continue;
+      bodies_.push_back(body);
+      dummies_.emplace_back(s < model.segment_dummy.size() ? model.segment_dummy[s]
+                                                           : std::string(kNoDummyCode));
     }
   }
   char Of(const std::string& label) const {
-    const std::string first = label.substr(0, label.find('.'));
-    const auto at = std::find(bodies_.begin(), bodies_.end(), first);
-    if (at == bodies_.end()) return '0';
-    const auto place = at - bodies_.begin() + 1;
-    return place <= 9 ? static_cast<char>('0' + place) : '0';
+    const std::size_t at = Find(label);
+    if (at == bodies_.size()) return '0';
+    return at < 9 ? static_cast<char>('1' + at) : '0';
+  }
+  // Fine location 3: the dummy type of the label's body (00 for none, and for no body).
+  std::string_view DummyOf(const std::string& label) const {
+    const std::size_t at = Find(label);
+    return at == bodies_.size() ? kNoDummyCode : std::string_view(dummies_[at]);
   }
 
  private:
+  std::size_t Find(const std::string& label) const {
+    const std::string first = label.substr(0, label.find('.'));
+    return static_cast<std::size_t>(std::find(bodies_.begin(), bodies_.end(), first) -
+                                    bodies_.begin());
+  }
   std::vector<std::string> bodies_;
+  std::vector<std::string> dummies_;
 };
 
 struct Quantity {
@@ -233,10 +247,6 @@ std::string Code(char position, const Location& location, std::string_view fine2
                      dimension, direction, filter);
 }
 
-// Fine location 3, the dummy type: sled's Model does not know which dummy a body stands for,
-// so 00 (no dummy type), which labs' tools match as any.
-constexpr std::string_view kDummy = "00";
-
 // Criterion values as labs' tools look them up (ISO/TS 13499 RED B 1.6.2's calculation codes,
 // as pyisomme's Euro NCAP and UN reports read them): HIC from the head's resultant acceleration,
 // the 3 ms value as a cumulative (3C) or single-peak (3S) clip, Nij in position (IP) with its
@@ -303,7 +313,7 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
     const Quantity quantity = QuantityOf(kind, mechanism);
     const int cfc = k < model.output_filter_class.size() ? model.output_filter_class[k] : 0;
     char position = positions.Of(label);
-    const std::string_view dummy = kDummy;
+    std::string_view dummy = positions.DummyOf(label);
     Location location = LocationOf(label);
     const bool contact = kind == Model::OutputKind::kContactForce ||
                          kind == Model::OutputKind::kContactPoint ||
@@ -332,6 +342,7 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
                               static_cast<std::size_t>(i)];
         if (frame.kind == FrameRef::Kind::kSegment) {
           position = positions.Of(model.segment_name[static_cast<std::size_t>(frame.index)]);
+          dummy = positions.DummyOf(model.segment_name[static_cast<std::size_t>(frame.index)]);
         }
       }
     }
@@ -428,8 +439,8 @@ IsoMmeCodes MapIsoMmeCodes(const Model& model, const TimeSeries& raw, const Time
       fine2 = value.variant.substr(1);
     }
     IsoMmeChannel channel;
-    channel.code = book.Take(
-        Code(positions.Of(value.target), location, fine2, kDummy, dimension, direction, 'X'));
+    channel.code = book.Take(Code(positions.Of(value.target), location, fine2,
+                                  positions.DummyOf(value.target), dimension, direction, 'X'));
     channel.name = fmt::format("{}({}){}", value.name, value.target,
                                value.variant.empty() ? "" : " " + value.variant);
     channel.unit = value.unit.empty() ? "1" : value.unit;  // an index has unit one

@@ -12,8 +12,9 @@
 //   9-10  fine location 2: 00, a belt span or anchor ordinal, the HIC window (15, 36), 3C/3S
 //         (3 ms clip, cumulative / single peak), Nij's quadrant (TE, TF, CE, CF), TN/CO (neck
 //         tension / compression); an ordinal 01..99 when the code is already taken
-//   11-12 fine location 3 (dummy type): 00 (the Model does not say which dummy a body stands
-//         for; labs' tools match 00 as any)
+//   11-12 fine location 3 (dummy type): the body's `dummy` (Model::segment_dummy: H3 for a
+//         Hybrid III 50th male, HF, TH, T3, E2, ER, S2; runtime/model/dummy_types.h), 00 for a body
+//         that names none and for channels of no body
 //   13-14 physical dimension: AC, VE, DS, AA, AV, AN, FO, MO, PR, VU, MA, TE, MF, 00
 //   15    direction: X, Y, Z in SAE J211's axes (x forward, y right, z down: sled's y and z,
 //         which point left and up, are negated in the data), R for a resultant, 0 for a
@@ -22,7 +23,7 @@
 //         1000/600/180/60, X for a computed criterion
 //
 // Every three-axis acceleration also gets its resultant (direction R), raw and filtered: the
-// channel labs read HIC and 3 ms values from (11HEAD000000ACRA).
+// channel labs read HIC and 3 ms values from (11HEAD0000H3ACRA for a Hybrid III).
 #pragma once
 
 #include <string>

@@ -1,6 +1,7 @@
 // The CVS force-deflection model with loading and unloading, for any function of the Model
-// that has unloading parameters (energy_loss G, permanent_set p): contact force against
-// deflection (runtime/contact/) and webbing force against strain (runtime/restraint/).
+// that has unloading parameters (energy_loss G, permanent_set p, unload_slope s): contact force
+// against deflection (runtime/contact/), webbing force against strain (runtime/restraint/) and a
+// joint's torque against its angle (runtime/forces/joint_hysteresis.h).
 //
 // Loading (the deflection beyond the largest so far, x_max) follows the function f. Below x_max
 // the force follows an unloading curve from (x_max, f(x_max)) down to zero force at the
@@ -8,11 +9,17 @@
 //
 //   F(x) = F_max ((x - x_p) / (x_max - x_p))^n   for x_p < x < x_max,   0 for x <= x_p.
 //
-// x_p = p x_max when p is given; otherwise the x_p at which a straight unloading line returns
-// the fraction 1 - G of the loading energy E = integral of f from 0 to x_max:
-// x_max - x_p = 2 (1 - G) E / F_max (not below zero). The exponent n makes the returned energy,
-// F_max (x_max - x_p) / (n + 1), exactly (1 - G) E, so a full unloading dissipates G E; with
-// only p given the curve is the straight line (n = 1). G = p = 0: elastic, unloading along f.
+// With s given, the curve is the straight line (n = 1) of slope s times the loading slope, the
+// secant F_max / x_max: x_p = x_max (1 - 1 / s). Otherwise x_p = p x_max when p is given, or
+// the x_p at which a straight unloading line returns the fraction 1 - G of the loading energy
+// E = integral of f from 0 to x_max: x_max - x_p = 2 (1 - G) E / F_max; and the exponent n makes
+// the returned energy, F_max (x_max - x_p) / (n + 1), exactly (1 - G) E, so a full unloading
+// dissipates G E (with only p given, n = 1). G = p = 0 and no s: elastic, unloading along f.
+// No curve returns more than E or ends below zero deflection (x_p >= 0).
+//
+// A law on the negative side of a function (a joint angle below zero, when the function's table
+// covers negative angles) reads it mirrored, F(x) = -f(-x) for the deflection x = -angle: the
+// `mirror` argument (-1) does that; 1 reads f as written.
 //
 // The history (x_max and the curve) changes only at events, where the deflection turns while it
 // loads (runtime/run/system.h, runtime/restraint/belt_events.h), so every evaluation is a function
@@ -34,19 +41,23 @@ struct LoadingHistory {
 
 // F(x) under the committed history.
 double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, double x,
-                             const LoadingHistory& history);
+                             const LoadingHistory& history, double mirror = 1.0);
 
 // dF/dx under the history.
 double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, double x,
-                             const LoadingHistory& history);
+                             const LoadingHistory& history, double mirror = 1.0);
 
 // At a deflection x that turns (an event, or the start): a new largest deflection loads further
 // and moves the unloading curve.
 void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
-                          LoadingHistory& history);
+                          LoadingHistory& history, double mirror = 1.0);
 
-// True when the function's unloading differs from its loading (an energy loss or a permanent
-// set): only such force elements keep a history.
+// True when the function's unloading differs from its loading (an energy loss, a permanent set
+// or an unloading slope): only such force elements keep a history.
 bool HasHysteresis(const FunctionTable& functions, std::int32_t id);
+
+// The function's unloading slope relative to its loading slope; 0 when it has none (a Model
+// built by hand may leave FunctionTable::unload_slope empty).
+double UnloadSlope(const FunctionTable& functions, std::int32_t id);
 
 }  // namespace sled::runtime

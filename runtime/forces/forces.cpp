@@ -8,6 +8,7 @@
 #include "runtime/dynamics/joint.h"
 #include "runtime/dynamics/vehicle.h"
 #include "runtime/forces/functions.h"
+#include "runtime/forces/joint_hysteresis.h"
 #include "runtime/restraint/belts.h"
 
 namespace sled::runtime {
@@ -22,7 +23,6 @@ double SmoothSign(double x) { return std::tanh(x / kCoulombRate); }
 void JointTorques(const Model& model, Data& data, std::size_t s) {
   const auto qa = static_cast<std::size_t>(model.q_address[s]);
   const auto va = static_cast<std::size_t>(model.v_address[s]);
-  const auto& functions = model.functions;
   const auto& f = model.joint_function[s];
   const double viscous = model.joint_viscous[s];
   const double coulomb = model.joint_coulomb[s];
@@ -35,14 +35,14 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
     case JointKind::kSlip: {
       const double angle = data.q[qa], rate = data.v[va];
       tau[0] =
-          RestoringTorque(functions, f[0], angle) - viscous * rate - coulomb * SmoothSign(rate);
+          JointSpringTorque(model, data, s, 0, angle) - viscous * rate - coulomb * SmoothSign(rate);
       return;
     }
     case JointKind::kEuler:
       for (std::size_t k = 0; k < 3; ++k) {
         const double angle = data.q[qa + k], rate = data.v[va + k];
-        tau[k] =
-            RestoringTorque(functions, f[k], angle) - viscous * rate - coulomb * SmoothSign(rate);
+        tau[k] = JointSpringTorque(model, data, s, k, angle) - viscous * rate -
+                 coulomb * SmoothSign(rate);
       }
       return;
     case JointKind::kBall: {
@@ -54,8 +54,8 @@ void JointTorques(const Model& model, Data& data, std::size_t s) {
       const Mat3 rotation = QuaternionAt(data.q, qa).normalized().toRotationMatrix();
       // Flexure acts about the swing axis (parent joint frame), twist about the child's z.
       const Vec3 flexure_torque =
-          angles.flexure_axis * RestoringTorque(functions, f[0], angles.flexure);
-      const Vec3 twist_torque = Vec3::UnitZ() * RestoringTorque(functions, f[1], angles.twist);
+          angles.flexure_axis * JointSpringTorque(model, data, s, 0, angles.flexure);
+      const Vec3 twist_torque = Vec3::UnitZ() * JointSpringTorque(model, data, s, 1, angles.twist);
       const Vec3 w(data.v[va], data.v[va + 1], data.v[va + 2]);
       const double speed = w.norm();
       Vec3 torque =

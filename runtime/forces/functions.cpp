@@ -102,12 +102,16 @@ double IntegrateFunction(const FunctionTable& functions, std::int32_t id, double
   return 0.0;
 }
 
+bool CoversNegative(const FunctionTable& functions, std::int32_t id) {
+  if (id < 0) return false;
+  const auto f = static_cast<std::size_t>(id);
+  return functions.kind[f] == FunctionTable::Kind::kTable &&
+         functions.points_x[static_cast<std::size_t>(functions.first[f])] < 0;
+}
+
 double RestoringTorque(const FunctionTable& functions, std::int32_t id, double x) {
   if (id < 0) return 0.0;
-  const auto f = static_cast<std::size_t>(id);
-  const bool covers_negative = functions.kind[f] == FunctionTable::Kind::kTable &&
-                               functions.points_x[static_cast<std::size_t>(functions.first[f])] < 0;
-  if (covers_negative) return -EvaluateFunction(functions, id, x);
+  if (CoversNegative(functions, id)) return -EvaluateFunction(functions, id, x);
   const double magnitude = EvaluateFunction(functions, id, std::abs(x));
   return x >= 0 ? -magnitude : magnitude;
 }

@@ -20,4 +20,8 @@ double IntegrateFunction(const FunctionTable& functions, std::int32_t id, double
 // the motion both ways; a table that covers negative x is used as written.
 double RestoringTorque(const FunctionTable& functions, std::int32_t id, double x);
 
+// True for a table whose first row is at a negative argument: RestoringTorque reads it as
+// written on both sides of zero.
+bool CoversNegative(const FunctionTable& functions, std::int32_t id);
+
 }  // namespace sled::runtime

@@ -5,6 +5,7 @@
 
 #include "runtime/contact/contact_forces.h"
 #include "runtime/dynamics/constraints.h"
+#include "runtime/forces/joint_hysteresis.h"
 #include "runtime/model/model_structure.h"
 #include "runtime/restraint/belts.h"
 
@@ -48,6 +49,8 @@ Data MakeData(const Model& model) {
   data.spring_force.assign(model.nspring(), 0.0);
   SizeTableWatch(model, data.table_watch);
   SizeContactState(model, data.contacts);
+  SizeJointHistories(model, data.joint_histories);
+  SetUpJointHistories(model, data);
   SizeAirbagState(model, data);
   SetUpConstraints(model, structure->constraints, data);
   SetUpBelts(model, data);

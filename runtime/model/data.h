@@ -13,6 +13,7 @@
 #include "runtime/contact/contact_state.h"
 #include "runtime/dynamics/spatial.h"
 #include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/joint_hysteresis.h"
 #include "runtime/forces/table_range.h"
 #include "runtime/model/model.h"
 #include "runtime/restraint/belt_state.h"
@@ -83,6 +84,8 @@ struct Data {
   // (runtime/forces/table_range.h).
   TableWatch table_watch;
 
+  // Joint axes whose torque functions unload otherwise than they load: their loading histories.
+  JointHistories joint_histories;
   // Contacts: per pair deflection, force and point, the loading history and work arrays.
   ContactState contacts;
   // Belts and harnesses (restraint/belts.h).

@@ -16,6 +16,8 @@ const char* CountName(ModelCount count) {
       return "joint";
     case ModelCount::kMirror:
       return "mirror";
+    case ModelCount::kSegmentDummy:
+      return "segment_dummy";
     case ModelCount::kPosition:
       return "position";
     case ModelCount::kVelocity:
@@ -26,6 +28,8 @@ const char* CountName(ModelCount count) {
       return "vehicle";
     case ModelCount::kFunction:
       return "function";
+    case ModelCount::kFunctionUnload:
+      return "function_unload";
     case ModelCount::kFunctionPoint:
       return "function_point";
     case ModelCount::kCoefficient:
@@ -85,6 +89,7 @@ std::size_t CountOf(const Model& m, ModelCount count) {
     case ModelCount::kSegment:
     case ModelCount::kJoint:
     case ModelCount::kMirror:
+    case ModelCount::kSegmentDummy:
       return m.segment_name.size();
     case ModelCount::kPosition:
       return static_cast<std::size_t>(std::max(m.nq, 0));
@@ -95,6 +100,7 @@ std::size_t CountOf(const Model& m, ModelCount count) {
     case ModelCount::kVehicle:
       return m.vehicle_name.size();
     case ModelCount::kFunction:
+    case ModelCount::kFunctionUnload:
       return m.functions.kind.size();
     case ModelCount::kFunctionPoint:
       return m.functions.points_x.size();
@@ -147,7 +153,8 @@ std::size_t CountOf(const Model& m, ModelCount count) {
 }
 
 bool CountMayBeEmpty(ModelCount count) {
-  return count == ModelCount::kMirror || count == ModelCount::kOutputMirror ||
+  return count == ModelCount::kMirror || count == ModelCount::kSegmentDummy ||
+         count == ModelCount::kFunctionUnload || count == ModelCount::kOutputMirror ||
          count == ModelCount::kOutputFrame || count == ModelCount::kOutputFilter;
 }
 

@@ -25,40 +25,42 @@ namespace sled::runtime {
 
 // What an array's size must equal, or what an index refers to.
 enum class ModelCount : std::uint8_t {
-  kNone,           // a scalar, or not an index
-  kSegment,        // segment_name
-  kJoint,          // the joint above each segment: nsegment
-  kMirror,         // per segment, or empty without mirror symmetry
-  kPosition,       // nq
-  kVelocity,       // nv
-  kAuxiliary,      // nw
-  kVehicle,        // vehicle_name
-  kFunction,       // functions.kind
-  kFunctionPoint,  // functions.points_x
-  kCoefficient,    // functions.coefficients
-  kSpring,         // spring_name
-  kEllipsoid,      // contacts.ellipsoid_name
-  kPlane,          // contacts.plane_name
-  kPair,           // contacts.pair_kind
-  kContactGroup,   // contacts.group_first
-  kGroupPair,      // contacts.group_pairs
-  kBelt,           // belts.name
-  kBeltPoint,      // belts.point_wraps
-  kHarness,        // belts.harness_name
-  kTie,            // belts.tie_points
-  kAirbag,         // airbags.name
-  kAirbagContact,  // airbags.contact_segment
-  kLoad,           // loads.name
-  kShape,          // shape_name
-  kConstraint,     // constraint_name
-  kOutput,         // output_kind
-  kOutputMirror,   // per output, or empty without mirror symmetry
-  kOutputFrame,    // per output, or empty when no output has a frame
-  kOutputFilter,   // per output, or empty when nothing is filtered
-  kCriterion,      // criterion_kind
-  kRun,            // scalars: the run settings
-  kSettle,         // scalars: settling
-  kScene,          // scalars: the scene
+  kNone,            // a scalar, or not an index
+  kSegment,         // segment_name
+  kJoint,           // the joint above each segment: nsegment
+  kMirror,          // per segment, or empty without mirror symmetry
+  kSegmentDummy,    // per segment, or empty when no body names a dummy type
+  kPosition,        // nq
+  kVelocity,        // nv
+  kAuxiliary,       // nw
+  kVehicle,         // vehicle_name
+  kFunction,        // functions.kind
+  kFunctionUnload,  // per function, or empty when no function has an unloading slope
+  kFunctionPoint,   // functions.points_x
+  kCoefficient,     // functions.coefficients
+  kSpring,          // spring_name
+  kEllipsoid,       // contacts.ellipsoid_name
+  kPlane,           // contacts.plane_name
+  kPair,            // contacts.pair_kind
+  kContactGroup,    // contacts.group_first
+  kGroupPair,       // contacts.group_pairs
+  kBelt,            // belts.name
+  kBeltPoint,       // belts.point_wraps
+  kHarness,         // belts.harness_name
+  kTie,             // belts.tie_points
+  kAirbag,          // airbags.name
+  kAirbagContact,   // airbags.contact_segment
+  kLoad,            // loads.name
+  kShape,           // shape_name
+  kConstraint,      // constraint_name
+  kOutput,          // output_kind
+  kOutputMirror,    // per output, or empty without mirror symmetry
+  kOutputFrame,     // per output, or empty when no output has a frame
+  kOutputFilter,    // per output, or empty when nothing is filtered
+  kCriterion,       // criterion_kind
+  kRun,             // scalars: the run settings
+  kSettle,          // scalars: settling
+  kScene,           // scalars: the scene
 };
 
 enum class FieldRole : std::uint8_t { kPhysics, kSettings, kRecords, kUnhashed };
@@ -73,6 +75,7 @@ enum FieldCheck : unsigned {
 // clang-format off
 #define SLED_MODEL_ARRAYS(X)                                                              \
   X(Segment, segment_name, Physics, None, kPlain)                                          \
+  X(SegmentDummy, segment_dummy, Records, None, kPlain)                                     \
   X(Segment, segment_parent, Physics, Segment, kOrNone)                                    \
   X(Segment, segment_base, Physics, None, kPlain)                                          \
   X(Segment, segment_mass, Physics, None, kNonNegative)                                    \
@@ -119,6 +122,7 @@ enum FieldCheck : unsigned {
   X(Function, functions.count, Physics, None, kPlain)                                      \
   X(Function, functions.energy_loss, Physics, None, kPlain)                                \
   X(Function, functions.permanent_set, Physics, None, kPlain)                              \
+  X(FunctionUnload, functions.unload_slope, Physics, None, kNonNegative)                   \
   X(FunctionPoint, functions.points_x, Physics, None, kPlain)                              \
   X(FunctionPoint, functions.points_y, Physics, None, kPlain)                              \
   X(Coefficient, functions.coefficients, Physics, None, kPlain)                            \

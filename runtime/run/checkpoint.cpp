@@ -39,6 +39,7 @@ void SerializeData(Archive& archive, Data& data) {
   archive.Field(data.v);
   archive.Field(data.w);
   archive.Field(data.locked);
+  data.joint_histories.Serialize(archive);
   data.contacts.Serialize(archive);
   data.belts.Serialize(archive);
   data.airbags.Serialize(archive);

@@ -168,6 +168,7 @@ SettleSummary Settle(const Model& model, Data& data) {
   system.CommitStep(integrator->time(), integrator->state());
   data.q = settling.q;
   data.locked = settling.locked;
+  data.joint_histories = settling.joint_histories;
   data.contacts = settling.contacts;
   data.belts = settling.belts;
   RestoreInitialVelocities(model, data);

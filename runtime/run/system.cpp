@@ -14,6 +14,7 @@
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/joint.h"
 #include "runtime/forces/forces.h"
+#include "runtime/forces/joint_hysteresis.h"
 #include "runtime/forces/state_owner.h"
 #include "runtime/restraint/belts.h"
 #include "runtime/run/energy.h"
@@ -36,6 +37,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
         (model.joint_lock_below[s] >= 0 || model.joint_unlock_above[s] >= 0)) {
       events_.push_back({EventKind::kLock, s});
     }
+  }
+  for (std::size_t h = 0; h < data.joint_histories.size(); ++h) {
+    events_.push_back({EventKind::kJointTurn, h});
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     // First touch and separation: the force law starts (and ends) with a kink that no step
@@ -293,6 +297,10 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
                                                                                : 1.0;
       continue;
     }
+    if (events_[k].kind == EventKind::kJointTurn) {
+      g[k] = JointTurnFunction(model_, data_, events_[k].segment);
+      continue;
+    }
     if (events_[k].kind == EventKind::kAirbagFull) {
       g[k] = AirbagFullnessEvent(model_, data_, events_[k].segment);
       continue;
@@ -332,6 +340,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       case EventKind::kContactImpulse:
       case EventKind::kContactTouch:
       case EventKind::kContactTurn:
+      case EventKind::kJointTurn:
       case EventKind::kBelt:
       case EventKind::kAirbagFull:
       case EventKind::kAirbagInflow:
@@ -416,6 +425,13 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     }
     return EventEffect::kModeChanged;
   }
+  if (events_[k].kind == EventKind::kJointTurn) {
+    if (direction < 0 && Evaluate(t, y)) {
+      TurnJointHistory(model_, data_, events_[k].segment);
+      Invalidate();
+    }
+    return EventEffect::kModeChanged;
+  }
   if (events_[k].kind == EventKind::kContactImpulse && direction > 0) {
     data_.contacts.engaged[events_[k].segment] = 0;  // apart: the next touch is an impact
     return EventEffect::kModeChanged;
@@ -490,6 +506,7 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
     case EventKind::kContactImpulse:
     case EventKind::kContactTouch:
     case EventKind::kContactTurn:
+    case EventKind::kJointTurn:
     case EventKind::kBelt:
     case EventKind::kAirbagFull:
     case EventKind::kAirbagInflow:

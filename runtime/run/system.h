@@ -65,6 +65,7 @@ class MultibodySystem : public OdeSystem {
   // kContactTurn: a hysteretic contact pair's deflection turns while it loads (its largest
   // deflection, and with it the unloading curve, is set there). kBelt: a belt's junction sticks
   // or slips, a wrap re-anchors, a span's strain turns (runtime/restraint/belt_events.h).
+  // kJointTurn: a hysteretic joint axis's angle turns while it loads (runtime/forces/joint_hysteresis.h).
   enum class EventKind {
     kStop,
     kTwistStop,
@@ -72,6 +73,7 @@ class MultibodySystem : public OdeSystem {
     kContactImpulse,
     kContactTouch,
     kContactTurn,
+    kJointTurn,
     kBelt,
     kAirbagFull,
     kAirbagInflow
@@ -79,7 +81,7 @@ class MultibodySystem : public OdeSystem {
   struct Event {
     EventKind kind;
     std::size_t segment;  // the joint's (child) segment; for the contact events the pair; for
-                          // kBelt the index into belt_events_;
+                          // kBelt the index into belt_events_; for kJointTurn the history;
                           // for the airbag events the bag
     double time = 0.0;    // kAirbagInflow
   };

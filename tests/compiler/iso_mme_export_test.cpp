@@ -33,8 +33,6 @@ using testing::ReadText;
 using testing::SledResult;
 using testing::WriteText;
 
-using IsoMmeExport = testing::SledProcessTest;
-
 // One ISO-MME file: the `Name(28 characters):value` header lines (a name may repeat), then the
 // lines after the header (a channel's samples).
 struct IsoFile {
@@ -63,6 +61,24 @@ IsoFile ReadIsoFile(const fs::path& path) {
   }
   return file;
 }
+
+class IsoMmeExport : public testing::SledProcessTest {
+ protected:
+  // `sled run --format iso-mme` of the scene written as NAME.sled in the test's folder: the
+  // codes its channel index lists.
+  std::set<std::string> RunCodes(const std::string& name) {
+    const fs::path out = temp() / "out";
+    const SledResult result = Sled(
+        {"run", (temp() / (name + ".sled")).string(), "-o", out.string(), "--format", "iso-mme"});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    const IsoFile index = ReadIsoFile(out / "iso-mme" / "Channel" / (name + ".chn"));
+    std::set<std::string> codes;
+    for (const auto& [field, value] : index.fields) {
+      if (field.rfind("Name of channel", 0) == 0) codes.insert(value.substr(0, 16));
+    }
+    return codes;
+  }
+};
 
 // The unit ISO-MME writes for a CSV column's unit.
 std::string IsoUnit(const std::string& csv_name) {
@@ -213,20 +229,20 @@ TEST_F(IsoMmeExport, TheFlagshipSetReadsBackWithItsCodesUnitsAndValues) {
   // The documented mapping (docs/outputs.md) for channels a crash engineer looks for first.
   // (pyisomme's Euro NCAP and UN R137 reports look them up as `?pHEAD??00??ACRA`,
   // `?pHICR0015??00RX`, `?pHEAD003C??ACRX`, `?pNECKUP00??FOZ?`.)
-  EXPECT_EQ(code_of["occupant.head.acceleration.x/raw"], "11HEAD000000ACXP");
-  EXPECT_EQ(code_of["occupant.head.acceleration.x/filtered"], "11HEAD000000ACXA");
-  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/raw"], "11HEAD000000ACRP");
-  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/filtered"], "11HEAD000000ACRA");
-  EXPECT_EQ(code_of["occupant.thorax.acceleration.z/filtered"], "11CHST000000ACZA");
-  EXPECT_EQ(code_of["occupant.neck_upper.joint_force.z/filtered"], "11NECKUP0000FOZA");
-  EXPECT_EQ(code_of["occupant.neck_upper.joint_torque.y/filtered"], "11NECKUP0000MOYB");
+  EXPECT_EQ(code_of["occupant.head.acceleration.x/raw"], "11HEAD0000H3ACXP");
+  EXPECT_EQ(code_of["occupant.head.acceleration.x/filtered"], "11HEAD0000H3ACXA");
+  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/raw"], "11HEAD0000H3ACRP");
+  EXPECT_EQ(code_of["occupant.head.acceleration.resultant/filtered"], "11HEAD0000H3ACRA");
+  EXPECT_EQ(code_of["occupant.thorax.acceleration.z/filtered"], "11CHST0000H3ACZA");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_force.z/filtered"], "11NECKUP00H3FOZA");
+  EXPECT_EQ(code_of["occupant.neck_upper.joint_torque.y/filtered"], "11NECKUP00H3MOYB");
   EXPECT_EQ(code_of["occupant.upper_leg_l.buck.knee_bolster.contact_force.normal/raw"],
-            "11KNBOLE0000FO0P");
-  EXPECT_EQ(code_of["three_point.lap.belt_force.span1/raw"], "11SEBE000100FO0P");
-  EXPECT_EQ(code_of["hic15(occupant.head)"], "11HICR00150000RX");
-  EXPECT_EQ(code_of["nij(occupant.neck_upper)"], "11NIJCIP000000YX");
-  EXPECT_EQ(code_of["head_3ms(occupant.head) cumulative"], "11HEAD003C00ACRX");
-  EXPECT_EQ(code_of["head_3ms(occupant.head) continuous"], "11HEAD003S00ACRX");
+            "11KNBOLE00H3FO0P");
+  EXPECT_EQ(code_of["three_point.lap.belt_force.span1/raw"], "11SEBE0001H3FO0P");
+  EXPECT_EQ(code_of["hic15(occupant.head)"], "11HICR0015H300RX");
+  EXPECT_EQ(code_of["nij(occupant.neck_upper)"], "11NIJCIP00H300YX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) cumulative"], "11HEAD003CH3ACRX");
+  EXPECT_EQ(code_of["head_3ms(occupant.head) continuous"], "11HEAD003SH3ACRX");
   for (const auto& [name, code] : code_of) {
     EXPECT_EQ(code.find_first_of("123", 14), std::string::npos) << name << " " << code;
   }
@@ -251,18 +267,53 @@ TEST_F(IsoMmeExport, ABumpersForceOnALegIsCodedAsTheBumpers) {
   initial car { position = (0.06, 0, 0) m }
   output { contact_force walker.lower_leg_l with bumper }
 })");
-  const fs::path out = temp() / "out";
-  const SledResult result =
-      Sled({"run", (temp() / "bumper.sled").string(), "-o", out.string(), "--format", "iso-mme"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const IsoFile index = ReadIsoFile(out / "iso-mme" / "Channel" / "bumper.chn");
-  std::set<std::string> codes;
-  for (const auto& [field, value] : index.fields) {
-    if (field.rfind("Name of channel", 0) == 0) codes.insert(value.substr(0, 16));
-  }
+  const std::set<std::string> codes = RunCodes("bumper");
   EXPECT_TRUE(codes.count("11BUMPLE0000FOXP")) << ::testing::PrintToString(codes);
   EXPECT_TRUE(codes.count("11BUMPLE0000FO0P")) << ::testing::PrintToString(codes);
   for (const std::string& code : codes) EXPECT_EQ(code.find("TIBI"), std::string::npos) << code;
+}
+
+// Each body's `dummy` is fine location 3 of its channels' codes and its criteria's: a THOR's
+// are TH, a Hybrid III 5th female's HF, a body that names none 00.
+TEST_F(IsoMmeExport, EachBodysDummyTypeIsInItsCodes) {
+  WriteText(temp() / "dummies.sled", R"(scenario "dummies" {
+  gravity = (0, 0, 0) m/s^2
+  time { end = 5 ms  output_every = 0.1 ms }
+  vehicle car { velocity = (-10, 0, 0) m/s }
+  body walker {
+    dummy = thor
+    segment lower_leg_l {
+      mass = 3 kg
+      inertia = (0.04, 0.04, 0.004) kg*m^2
+      ellipsoid { semi_axes = (50, 50, 200) mm }
+    }
+  }
+  body small {
+    dummy = hybrid3_5f
+    segment head { mass = 4 kg  inertia = (0.02, 0.02, 0.02) kg*m^2 }
+  }
+  body plain {
+    segment head { mass = 4 kg  inertia = (0.02, 0.02, 0.02) kg*m^2 }
+  }
+  plane bumper on car { corners = (0, -1, -1) m, (0, -1, 1) m, (0, 1, -1) m }
+  contact walker.lower_leg_l with bumper { force = 100 kN/m }
+  initial car { position = (0.06, 0, 0) m }
+  initial small { position = (0, 1, 0) m }
+  initial plain { position = (0, 2, 0) m }
+  output {
+    contact_force walker.lower_leg_l with bumper
+    acceleration small.head at (0, 0, 0) mm
+    acceleration plain.head at (0, 0, 0) mm
+    criteria = hic15(small.head)
+  }
+})");
+  const std::set<std::string> codes = RunCodes("dummies");
+  const std::string all = ::testing::PrintToString(codes);
+  EXPECT_TRUE(codes.count("11BUMPLE00THFOXP")) << all;
+  EXPECT_TRUE(codes.count("12HEAD0000HFACXP")) << all;
+  EXPECT_TRUE(codes.count("12HEAD0000HFACRP")) << all;
+  EXPECT_TRUE(codes.count("13HEAD000000ACXP")) << all;
+  EXPECT_TRUE(codes.count("12HICR0015HF00RX")) << all;
 }
 
 }  // namespace

@@ -401,6 +401,45 @@ TEST(LowerFunctions, OnlyFunctionsTheModelUsesAreKept) {
   EXPECT_DOUBLE_EQ(m.functions.permanent_set[0], 0.1);
 }
 
+TEST(LowerFunctions, AJointsEnergyLossUnloadsItsTorqueFunctions) {
+  // `spring` serves two joints: the lossy one gets a copy with its energy loss, the other the
+  // function as written; `own` keeps its own unloading; `slope` carries its unloading slope.
+  const Result r = LowerText(Scene(fmt::format(R"(
+  function spring = polynomial(0 N*m, 2 N*m/deg)
+  function own = table(angle -> torque) {{ 0 deg -> 0 N*m  10 deg -> 5 N*m  energy_loss = 0.2 }}
+  function slope = table(angle -> torque) {{ 0 deg -> 0 N*m  10 deg -> 5 N*m  unload_slope = 4 }}
+  body b {{
+    segment a {{ {0} }}
+    segment c {{ {0} }}
+    segment d {{ {0} }}
+    segment e {{ {0} }}
+    joint lossy : ball(a -> c) {{
+      at a = (0, 0, -1) m  at c = (0, 0, 1) m  flexure = spring  twist = own  energy_loss = 0.6
+    }}
+    joint plain : pin(a -> d) {{ at a = (0, 0, 1) m  at d = (0, 0, -1) m  flexure = spring }}
+    joint sloped : pin(a -> e) {{ at a = (1, 0, 0) m  at e = (0, 0, 0) m  flexure = slope }}
+  }})",
+                                               kUnitInertia)));
+  ASSERT_CHECKED(r);
+  const runtime::Model& m = r.model();
+  ASSERT_EQ(m.nsegment(), 4u);
+  const auto [flexure, twist, none] = m.joint_function[1];
+  EXPECT_EQ(none, -1);
+  EXPECT_DOUBLE_EQ(m.functions.energy_loss[static_cast<std::size_t>(flexure)], 0.6);
+  EXPECT_DOUBLE_EQ(m.functions.energy_loss[static_cast<std::size_t>(twist)], 0.2);
+  const auto plain = static_cast<std::size_t>(m.joint_function[2][0]);
+  EXPECT_NE(plain, static_cast<std::size_t>(flexure));
+  EXPECT_EQ(m.functions.energy_loss[plain], 0.0);
+  EXPECT_EQ(m.functions.coefficients[static_cast<std::size_t>(m.functions.first[plain]) + 1],
+            m.functions.coefficients[static_cast<std::size_t>(m.functions.first[flexure]) + 1]);
+  const auto sloped = static_cast<std::size_t>(m.joint_function[3][0]);
+  ASSERT_EQ(m.functions.unload_slope.size(), m.functions.size());
+  EXPECT_EQ(m.functions.unload_slope[sloped], 4.0);
+  EXPECT_EQ(m.functions.unload_slope[plain], 0.0);
+  // No note: everything is simulated.
+  EXPECT_TRUE(r.notes().empty());
+}
+
 // --- Initial state -----------------------------------------------------------------------------
 
 TEST(LowerInitialState, RollOf90DegreesIsAQuaternionAboutX) {

@@ -182,7 +182,7 @@ TEST_F(LspProtocolTest, DefinitionGoesIntoTheStandardLibraryAndReferencesFindEve
   client_.AwaitDiagnostics(uri_);
   const Json pelvis = Request("textDocument/definition", At(7, 20))["result"];
   EXPECT_THAT(pelvis["uri"].get<std::string>(), HasSubstr("stdlib/humans/male50.sled"));
-  EXPECT_EQ(pelvis["range"]["start"]["line"], 78);  // `segment pelvis {` is line 79
+  EXPECT_EQ(pelvis["range"]["start"]["line"], 81);  // `segment pelvis {` is line 82
 
   const Json references = client_.Request("textDocument/references",
                                           {{"textDocument", {{"uri", uri_}}},

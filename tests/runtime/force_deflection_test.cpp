@@ -1,6 +1,7 @@
 // Loading and unloading (runtime/forces/force_deflection.h): integrals of the function forms worked
 // out by hand, and the energy an unloading returns, integrated by Simpson's rule, against the
 // fraction 1 - energy_loss of the loading energy.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -15,13 +16,14 @@ namespace {
 using testing::AddTableFunction;
 
 // The energy returned when unloading from the largest deflection to zero.
-double Returned(const FunctionTable& f, std::int32_t id, const LoadingHistory& history) {
+double Returned(const FunctionTable& f, std::int32_t id, const LoadingHistory& history,
+                double mirror = 1.0) {
   const int n = 20000;
   const double h = history.max_deflection / n;
   double sum = 0.0;
   for (int k = 0; k <= n; ++k) {
     const double w = (k == 0 || k == n) ? 1 : (k % 2 ? 4 : 2);
-    sum += w * LoadingUnloadingForce(f, id, k * h, history);
+    sum += w * LoadingUnloadingForce(f, id, k * h, history, mirror);
   }
   return sum * h / 3;
 }
@@ -138,6 +140,62 @@ TEST(ForceDeflection, UnloadingReturnsTheRestOfTheEnergy) {
       EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, 0, 0.045, history), EvaluateFunction(f, 0, 0.045));
     }
   }
+}
+
+TEST(ForceDeflection, AnUnloadSlopeEndsAtItsPermanentSet) {
+  // A straight line of s times the secant f(x_max) / x_max from (x_max, f(x_max)): it reaches
+  // zero at x_max (1 - 1/s), and returns the triangle it encloses, f(x_max) x_max / (2 s), unless
+  // that is more than the loading work E: then the line ends where it returns E, at
+  // x_max - 2 E / f(x_max) (the stiffening table at s = 1.5: E = 30 J of a 33.3 J triangle).
+  for (const double s : {1.5, 3.0, 10.0}) {
+    FunctionTable f;
+    const auto linear = AddTableFunction(f, {{0, 0}, {1, 1000}});
+    const auto stiffening = AddTableFunction(f, {{0, 0}, {0.05, 100}, {0.1, 1000}});
+    f.unload_slope = {s, s};
+    for (const auto id : {linear, stiffening}) {
+      LoadingHistory history;
+      UpdateLoadingHistory(f, id, 0.1, history);
+      const double peak = EvaluateFunction(f, id, 0.1);
+      const double energy = IntegrateFunction(f, id, 0.1);
+      const double permanent = std::max(0.1 * (1 - 1 / s), 0.1 - 2 * energy / peak);
+      EXPECT_NEAR(history.permanent, permanent, 1e-15) << s << " " << id;
+      EXPECT_EQ(history.exponent, 1.0);
+      const double halfway = 0.5 * (0.1 + permanent);
+      EXPECT_NEAR(LoadingUnloadingForce(f, id, halfway, history), 0.5 * peak, 1e-9 * peak);
+      EXPECT_NEAR(LoadingUnloadingSlope(f, id, halfway, history), peak / (0.1 - permanent),
+                  1e-9 * peak / 0.1);
+      EXPECT_NEAR(Returned(f, id, history), 0.5 * peak * (0.1 - permanent), 1e-6 * peak * 0.1);
+      EXPECT_LE(Returned(f, id, history), energy * (1 + 1e-9));
+    }
+    // The linear function's line is the slope's: its set is 1 - 1/s (s = 1.5 included).
+    LoadingHistory history;
+    UpdateLoadingHistory(f, linear, 0.1, history);
+    EXPECT_NEAR(history.permanent, 0.1 * (1 - 1 / s), 1e-15) << s;
+  }
+}
+
+TEST(ForceDeflection, AnUnloadSlopeNeverReturnsMoreThanTheLoadingWork) {
+  // s = 0.5 would end at -x_max: the line is bounded where it returns the loading work, the
+  // linear function's own line back to zero.
+  FunctionTable f;
+  const auto id = AddTableFunction(f, {{0, 0}, {1, 1000}});
+  f.unload_slope = {0.5};
+  LoadingHistory history;
+  UpdateLoadingHistory(f, id, 0.1, history);
+  EXPECT_EQ(history.permanent, 0.0);
+  EXPECT_NEAR(Returned(f, id, history), IntegrateFunction(f, id, 0.1), 1e-9);
+}
+
+TEST(ForceDeflection, AMirroredLawReadsTheFunctionOnItsNegativeSide) {
+  // A table over negative and positive x, read for the deflection -x: F(d) = -f(-d), and the
+  // loading energy is that of the negative side.
+  FunctionTable f;
+  const auto id = AddTableFunction(f, {{-1, -3000}, {0, 0}, {1, 1000}}, 0.5);
+  LoadingHistory history;
+  UpdateLoadingHistory(f, id, 0.1, history, -1.0);
+  EXPECT_DOUBLE_EQ(history.max_force, 300.0);
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.2, history, -1.0), 600.0);
+  EXPECT_NEAR(Returned(f, id, history, -1.0), 0.5 * 0.5 * 300 * 0.1, 1e-6);
 }
 
 }  // namespace

@@ -123,22 +123,30 @@ TEST(Compile, OverridesSetParameters) {
 }
 
 TEST(Compile, LoweringNotesAreRegisteredDiagnostics) {
+  // The arm hangs 2 m above the floor and reaches 0.15 m: the Model leaves its contact out.
   const Compilation compiled = Compile(Source::Text(R"(scenario "s" {
   time { end = 10 ms  output_every = 1 ms }
-  body b { segment s { mass = 1 kg  inertia = (1, 1, 1) kg*m^2 } }
-  constraint wheel : rolling(b.s -> ground) {
-    at b.s = (0, 0, -0.1) m
-    at ground = (0, 0, 0) m
+  plane floor { corners = (0, -1, 0) m, (1, -1, 0) m, (0, 1, 0) m }
+  body arm {
+    segment upper {
+      mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2
+      ellipsoid { semi_axes = (0.05, 0.05, 0.05) m  center = (0, 0, 0.1) m }
+    }
   }
+  constraint shoulder : fixed_point(ground -> arm.upper) {
+    at ground = (0, 0, 2) m  at arm.upper = (0, 0, 0.2) m
+  }
+  contact arm.upper with floor { force = 10 kN/m }
+  initial arm { position = (0, 0, 1.8) m }
 }
 )"),
                                        InTree());
   ASSERT_TRUE(compiled.ok()) << compiled.Render();
   ASSERT_EQ(compiled.diagnostics().size(), 1u);
-  EXPECT_EQ(compiled.diagnostics()[0].code(), "N0402");
+  EXPECT_EQ(compiled.diagnostics()[0].code(), "N0401");
   EXPECT_EQ(compiled.diagnostics()[0].severity, lang::Severity::kNote);
   EXPECT_THAT(compiled.Notes(),
-              ::testing::ElementsAre(HasSubstr("note[N0402]: rolling constraint")));
+              ::testing::ElementsAre(HasSubstr("note[N0401]: contact between `arm.upper`")));
 }
 
 TEST(Compile, ABuiltTreeCompilesWithDiagnosticsInTheCppFile) {
