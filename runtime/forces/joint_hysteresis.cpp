@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "runtime/model/data.h"
+#include "runtime/dynamics/joint.h"
 #include "runtime/forces/forces.h"
 #include "runtime/forces/functions.h"
-#include "runtime/dynamics/joint.h"
+#include "runtime/model/data.h"
 
 namespace sled::runtime {
 namespace {
@@ -70,8 +70,9 @@ AxisMotion MotionOfAxis(const Model& model, const Data& data, std::size_t s, std
   return {};
 }
 
-// The side of the angle (+1, -1), and how its function reads there (runtime/forces/force_deflection.h):
-// mirrored on the negative side of a table that covers negative angles.
+// The side of the angle (+1, -1), and how its function reads there
+// (runtime/forces/force_deflection.h): mirrored on the negative side of a table that covers
+// negative angles.
 struct Side {
   double sign = 1.0;
   double mirror = 1.0;

@@ -1,8 +1,8 @@
 // Joint torque functions that unload otherwise than they load: a joint's `energy_loss` (the
 // compiler gives each of its torque functions that energy loss) or a torque function's own
 // unloading attributes. Each such joint axis follows the force-deflection model of
-// runtime/forces/force_deflection.h, the angle's size as the deflection, with one loading history for
-// each side of the angle (a ball joint's flexure angle is a size: one side), so a joint bent
+// runtime/forces/force_deflection.h, the angle's size as the deflection, with one loading history
+// for each side of the angle (a ball joint's flexure angle is a size: one side), so a joint bent
 // forward and released unloads along a curve that returns 1 - energy_loss of its spring energy,
 // and bending it the other way loads afresh.
 //

@@ -94,8 +94,8 @@ struct Model {
 
   // --- Segments, in tree order: a segment's parent comes before it (nsegment entries).
   std::vector<std::string> segment_name;
-  // The ISO/TS 13499 dummy type of the segment's body ("H3", "00"; runtime/model/dummy_types.h), for
-  // the ISO-MME codes; empty when no body of the scene names a dummy.
+  // The ISO/TS 13499 dummy type of the segment's body ("H3", "00"; runtime/model/dummy_types.h),
+  // for the ISO-MME codes; empty when no body of the scene names a dummy.
   std::vector<std::string> segment_dummy;
   std::vector<std::int32_t> segment_parent;  // -1 for a root: a reference segment
   // For a root: the frame its joint attaches to. A floating reference segment has a kFree joint

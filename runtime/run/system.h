@@ -65,7 +65,8 @@ class MultibodySystem : public OdeSystem {
   // kContactTurn: a hysteretic contact pair's deflection turns while it loads (its largest
   // deflection, and with it the unloading curve, is set there). kBelt: a belt's junction sticks
   // or slips, a wrap re-anchors, a span's strain turns (runtime/restraint/belt_events.h).
-  // kJointTurn: a hysteretic joint axis's angle turns while it loads (runtime/forces/joint_hysteresis.h).
+  // kJointTurn: a hysteretic joint axis's angle turns while it loads
+  // (runtime/forces/joint_hysteresis.h).
   enum class EventKind {
     kStop,
     kTwistStop,

@@ -1,6 +1,6 @@
-// Joint energy loss (runtime/forces/joint_hysteresis.h) against closed forms. A disc on a joint with a
-// linear spring k and no gravity starts at zero angle with rate w0: it loads to the largest angle
-// a = w0 / sqrt(k / I) (the turn is an event), then unloads along the straight line to zero
+// Joint energy loss (runtime/forces/joint_hysteresis.h) against closed forms. A disc on a joint
+// with a linear spring k and no gravity starts at zero angle with rate w0: it loads to the largest
+// angle a = w0 / sqrt(k / I) (the turn is an event), then unloads along the straight line to zero
 // torque at G a (G the energy loss; an unloading slope s unloads likewise with G = 1 - 1/s),
 // which gives back (1 - G) of the spring energy E0 = I w0^2 / 2: between G a and zero the disc
 // turns freely at w0 sqrt(1 - G), and the energy account holds the dissipated G E0 there (nothing
