@@ -186,6 +186,27 @@ void CheckContext::ReadUnloading(Scope& scope, const BoundBlock& bound, Function
   }
 }
 
+void CheckContext::RefuseUnloading(std::optional<FunctionId> id, const BoundBlock& bound,
+                                   AttributeKey name, std::string_view element) {
+  if (!id) return;
+  const Function& function = scenario_.functions[static_cast<std::size_t>(*id)];
+  std::string given;
+  for (const auto& [attribute, value] :
+       {std::pair{"energy_loss", function.energy_loss},
+        std::pair{"permanent_set", function.permanent_set},
+        std::pair{"unload_slope", function.unload_slope.value_or(0.0)}}) {
+    if (value != 0.0) given += fmt::format("{}`{}`", given.empty() ? "" : ", ", attribute);
+  }
+  if (given.empty()) return;
+  const ast::Statement* statement = One(bound, name);
+  Report(DiagnosticKind::kUnloadingNotApplied, statement ? statement->range : function.range,
+         fmt::format("the `{}` of {} unloads as it loads; its function's {} would not apply",
+                     name.view(), element, given),
+         "a function with unloading",
+         "give this element a function without unloading attributes (contacts, belts and joint "
+         "torques unload by them)");
+}
+
 bool CheckContext::BuildFunction(Scope& scope, const ast::Statement& statement,
                                  const ast::Expr& call,
                                  std::optional<std::pair<Dimension, Dimension>> expected,

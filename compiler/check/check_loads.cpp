@@ -46,6 +46,8 @@ void LoadChecker::CheckLoads() {
     Entity* target = Resolve(scope, on->value, {EntityKind::kSegment, EntityKind::kJoint});
     const auto force = ReadFunction(scope, bound, BlockKind::kLoad, "force");
     const auto torque = ReadFunction(scope, bound, BlockKind::kLoad, "torque");
+    RefuseUnloading(force, bound, "force", "a load");
+    RefuseUnloading(torque, bound, "torque", "a load");
     if (!target) continue;
     load.across_joint = target->kind == EntityKind::kJoint;
     load.index = target->index;

@@ -315,6 +315,7 @@ void RestraintChecker::CheckRestraints() {
     bag.deploy_time = ReadQuantity(scope, bound, BlockKind::kAirbag, "deploy_at").value_or(0.0);
     if (auto inflow = ReadFunction(scope, bound, BlockKind::kAirbag, "inflow")) {
       bag.inflow = *inflow;
+      RefuseUnloading(inflow, bound, "inflow", "an airbag");
     }
     bag.vent_area = ReadQuantity(scope, bound, BlockKind::kAirbag, "vent_area").value_or(0.0);
     bag.ambient_pressure =
@@ -355,6 +356,7 @@ void RestraintChecker::CheckRestraints() {
     spring.point_in_second = points[1].value_or(Vec3{});
     if (auto stiffness = ReadFunction(scope, bound, BlockKind::kSpring, "stiffness")) {
       spring.stiffness = *stiffness;
+      RefuseUnloading(stiffness, bound, "stiffness", "a spring-damper");
     }
     spring.damping = ReadQuantity(scope, bound, BlockKind::kSpring, "damping").value_or(0.0);
     spring.free_length = ReadQuantity(scope, bound, BlockKind::kSpring, "free_length");

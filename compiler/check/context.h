@@ -169,6 +169,11 @@ class CheckContext {
   // The unloading attributes of a function's block (energy_loss, permanent_set, unload_slope)
   // into `function`: an unloading slope with either of the others is E0423.
   void ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function);
+  // Refuses (E0424) a function with unloading attributes as attribute `name` of an element that
+  // evaluates its function the same way loading and unloading (`element`: a spring-damper's
+  // stiffness, a load, an airbag's inflow), rather than ignoring them.
+  void RefuseUnloading(std::optional<FunctionId> id, const BoundBlock& bound, AttributeKey name,
+                       std::string_view element);
   const ast::Statement* One(const BoundBlock& bound, AttributeKey name) const;
   // A statement that must be `keyword = value` (one value, no target or clauses).
   const ast::Expr* SingleValue(const ast::Statement& statement);

@@ -22,8 +22,8 @@ std::optional<std::pair<std::string, std::string>> Refusal(int type) {
     return std::pair{fmt::format("KQTYPE {}: a constraint whose point and direction ATB takes "
                                  "from a contact (PLELP, SEGSEG) that D.6 does not name",
                                  type),
-                     std::string("write a `constraint ... : rolling(...)` or `sliding(...)` by "
-                                 "hand")};
+                     std::string("write a `constraint ... : sliding(...)` by hand where the point "
+                                 "slides; sled has no rolling constraint (E0422)")};
   }
   if (type == 5) {
     return std::pair{std::string("KQTYPE 5: a tension element, whose second D.6 card enters "

@@ -655,7 +655,7 @@ class DeckReader : public DeckFields {
     contact.output = r_.Integer(card, 41, 44, "NOUT, the output flag") != 0;
     if (contact.force.number == 0) {
       Refuse(card, 17, 20, "no force function (a rolling constraint)",
-             "write a `constraint ... : rolling(...)` by hand");
+             "give the contact a force function; sled has no rolling constraint (E0422)");
       return;
     }
     deck_.contacts.push_back(std::move(contact));
