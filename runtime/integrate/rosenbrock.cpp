@@ -6,76 +6,10 @@
 #include <limits>
 
 #include "runtime/integrate/error_norm.h"
+#include "runtime/integrate/rosenbrock_tableaus.h"
 #include "runtime/run/archive.h"
 
 namespace sled::runtime {
-namespace {
-
-constexpr int kS = Rosenbrock::kStages;
-using Square = std::array<std::array<double, kS>, kS>;
-using Row = std::array<double, kS>;
-
-// ROS34PW2 as published (see rosenbrock.h): alpha (strictly lower), Gamma (lower, gamma on the
-// diagonal), b and bhat.
-constexpr double kGamma = 4.3586652150845900e-01;
-constexpr Square kAlpha = {{{0.0, 0.0, 0.0, 0.0},
-                            {8.7173304301691801e-01, 0.0, 0.0, 0.0},
-                            {8.4457060015369423e-01, -1.1299064236484185e-01, 0.0, 0.0},
-                            {0.0, 0.0, 1.0, 0.0}}};
-constexpr Square kGammaMatrix = {
-    {{kGamma, 0.0, 0.0, 0.0},
-     {-8.7173304301691801e-01, kGamma, 0.0, 0.0},
-     {-9.0338057013044082e-01, 5.4180672388095326e-02, kGamma, 0.0},
-     {2.4212380706095346e-01, -1.2232505839045147e+00, 5.4526025533510214e-01, kGamma}}};
-constexpr Row kB = {2.4212380706095346e-01, -1.2232505839045147e+00, 1.5452602553351020e+00,
-                    kGamma};
-constexpr Row kBHat = {3.7810903145819369e-01, -9.6042292212423178e-02, 5.0e-01,
-                       2.1793326075422950e-01};
-
-// The W-free form (Hairer & Wanner II, (7.4)-(7.6)): with u = Gamma k,
-//   (1/(h gamma) I - W) u_i = f(t + alpha_i h, y0 + sum_j a_ij u_j) + sum_j (c_ij / h) u_j
-//                             + gamma_i h f_t,
-//   y1 = y0 + sum_j m_j u_j,  error = sum_j e_j u_j,
-// where a = alpha Gamma^-1, c = -Gamma^-1 below the diagonal, m = b Gamma^-1,
-// e = (b - bhat) Gamma^-1, alpha_i = sum_j alpha_ij and gamma_i = sum_j gamma_ij.
-struct Tableau {
-  Square a{};
-  Square c{};
-  Row m{};
-  Row e{};
-  Row alpha_sum{};
-  Row gamma_sum{};
-};
-
-constexpr Tableau MakeTableau() {
-  // Gamma^-1 by forward substitution (Gamma is lower triangular).
-  Square inverse{};
-  for (int col = 0; col < kS; ++col) {
-    for (int row = 0; row < kS; ++row) {
-      double value = row == col ? 1.0 : 0.0;
-      for (int k = 0; k < row; ++k) value -= kGammaMatrix[row][k] * inverse[k][col];
-      inverse[row][col] = value / kGammaMatrix[row][row];
-    }
-  }
-  Tableau t;
-  for (int i = 0; i < kS; ++i) {
-    for (int j = 0; j < kS; ++j) {
-      double a = 0.0;
-      for (int k = 0; k < kS; ++k) a += kAlpha[i][k] * inverse[k][j];
-      t.a[i][j] = j < i ? a : 0.0;
-      t.c[i][j] = j < i ? -inverse[i][j] : 0.0;
-      t.alpha_sum[i] += kAlpha[i][j];
-      t.gamma_sum[i] += kGammaMatrix[i][j];
-      t.m[j] += kB[i] * inverse[i][j];
-      t.e[j] += (kB[i] - kBHat[i]) * inverse[i][j];
-    }
-  }
-  return t;
-}
-
-constexpr Tableau kTableau = MakeTableau();
-
-}  // namespace
 
 void Rosenbrock::ResizeWorkspace(std::size_t size) {
   const auto n = static_cast<Eigen::Index>(size);
@@ -126,10 +60,16 @@ JacobianSource::Status Rosenbrock::FormJacobian(double h) {
   return JacobianSource::Status::kOk;
 }
 
+const RosenbrockTableau& Rosenbrock::MethodFor(double h) const {
+  return h * source_.jacobian().stiff_rate < kStiffStep ? kRahunanthanStanescu4 : kRos34pw2;
+}
+
 bool Rosenbrock::Factor(double h) {
   factored_step_ = 0.0;
-  if (!solver_.Factor(source_.jacobian(), 1.0 / (h * kGamma))) return false;
+  const double gamma = MethodFor(h).gamma;
+  if (!solver_.Factor(source_.jacobian(), 1.0 / (h * gamma))) return false;
   factored_step_ = h;
+  factored_gamma_ = gamma;
   return true;
 }
 
@@ -167,38 +107,39 @@ bool Rosenbrock::TryStep(double h, double* error) {
         return true;
     }
   }
-  if (factored_step_ != h) {
+  const RosenbrockTableau& method = MethodFor(h);
+  if (factored_step_ != h || factored_gamma_ != method.gamma) {
     ++mutable_stats().factorizations;
     if (!Factor(h)) return false;
   }
 
   const Eigen::Map<const Eigen::VectorXd> y0(y_.data(), static_cast<Eigen::Index>(n));
   const Eigen::Map<const Eigen::VectorXd> f0(f0_.data(), static_cast<Eigen::Index>(n));
-  for (int i = 0; i < kS; ++i) {
+  for (int i = 0; i < method.stages; ++i) {
     if (i == 0) {
       rhs_ = f0;
     } else {
       stage_ = y0;
       for (int j = 0; j < i; ++j) {
-        if (kTableau.a[i][j] != 0.0) stage_ += kTableau.a[i][j] * u_[j];
+        if (method.a[i][j] != 0.0) stage_ += method.a[i][j] * u_[j];
       }
-      if (!Evaluate(t_ + kTableau.alpha_sum[i] * h, std::span<const double>(stage_.data(), n),
+      if (!Evaluate(t_ + method.alpha_sum[i] * h, std::span<const double>(stage_.data(), n),
                     std::span<double>(f_stage_.data(), n))) {
         return false;
       }
       rhs_ = f_stage_;
-      for (int j = 0; j < i; ++j) rhs_ += (kTableau.c[i][j] / h) * u_[j];
+      for (int j = 0; j < i; ++j) rhs_ += (method.c[i][j] / h) * u_[j];
     }
-    if (kTableau.gamma_sum[i] != 0.0) rhs_ += (kTableau.gamma_sum[i] * h) * time_derivative_;
+    if (method.gamma_sum[i] != 0.0) rhs_ += (method.gamma_sum[i] * h) * time_derivative_;
     solver_.Solve(std::span<const double>(rhs_.data(), n), std::span<double>(u_[i].data(), n));
   }
 
   Eigen::Map<Eigen::VectorXd> y1(y1_.data(), static_cast<Eigen::Index>(n));
   y1 = y0;
   error_.setZero();
-  for (int j = 0; j < kS; ++j) {
-    y1 += kTableau.m[j] * u_[j];
-    error_ += kTableau.e[j] * u_[j];
+  for (int j = 0; j < method.stages; ++j) {
+    y1 += method.m[j] * u_[j];
+    error_ += method.e[j] * u_[j];
   }
   if (quadratures_ < n && !IntegrateQuadratures(h)) return false;
   *error = ErrorNorm(std::span<const double>(error_.data(), n));
@@ -230,8 +171,9 @@ bool Rosenbrock::IntegrateQuadratures(double h) {
   }
   for (std::size_t i = quadratures_; i < n; ++i) {
     const auto k = static_cast<Eigen::Index>(i);
-    y1_[i] = y_[i] + h / 6.0 * (f0_[i] + 4.0 * f_stage_(k) + f1_[i]);
-    error_(k) = 2.0 / 3.0 * h * (f_stage_(k) - 0.5 * (f0_[i] + f1_[i]));
+    const double simpson = y_[i] + h / 6.0 * (f0_[i] + 4.0 * f_stage_(k) + f1_[i]);
+    error_(k) = simpson - y1_[i];  // against the stages' own quadrature, also of order 4
+    y1_[i] = simpson;
   }
   return true;
 }

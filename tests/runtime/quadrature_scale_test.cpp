@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <span>
 #include <string>
@@ -105,10 +106,12 @@ TEST_P(QuadratureScaled, TheWorkIsRightToTheToleranceOfTheEnergyForFewExtraSteps
       const std::string where =
           GetParam() + " tol " + std::to_string(tolerance) + " x0 " + std::to_string(x0);
       ASSERT_TRUE(alone.ok && with_work.ok) << where;
-      // Measured: 0.06 (exponential) and 0.31 (Rosenbrock) tolerances of the energy at most.
+      std::printf("  %s: work error %.2f tolerances, %ld steps against %ld without the work\n",
+                  where.c_str(), with_work.work_error / tolerance, with_work.steps, alone.steps);
+      // Measured: 0.06 (exponential) and 1.21 (Rosenbrock) tolerances of the energy at most.
       EXPECT_LT(with_work.work_error, 10.0 * tolerance) << where;
       // Measured: 1.92x (exponential, whose steps on the motion alone are long: it is exact on
-      // the linear spring) and 1.27x (Rosenbrock).
+      // the linear spring) and 0.94x (Rosenbrock).
       EXPECT_LE(with_work.steps, 2.0 * static_cast<double>(alone.steps) + 2) << where;
     }
   }
