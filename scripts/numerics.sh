@@ -146,8 +146,9 @@ out, doc, plots, ladder, load_before, load_after, commit, root, order_tolerances
     sys.argv[1:11]
 LEVELS = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6]
 METHODS = ["auto", "exponential", "dopri5", "rosenbrock", "cvs"]
-# Theoretical orders (auto is dopri5 or the exponential method, step by step: no single order).
-ORDERS = {"exponential": 3, "dopri5": 5, "rosenbrock": 3, "cvs": 3}
+# Theoretical orders (auto is dopri5 or the exponential method, step by step: no single order;
+# rosenbrock's steps on the smooth cases are not stiff, so its order-4 method takes them).
+ORDERS = {"exponential": 3, "dopri5": 5, "rosenbrock": 4, "cvs": 3}
 STIFF_TARGET = ["viscous_damping", "joint_stops", "tension_tether", "contact_1e8", "contact_1e9",
                 "contact_1e10", "contact_1e11", "airbag_gas", "belt_restraint"]
 CONSERVATIVE = ["free_body", "spin_100", "pendulum_chain"]
