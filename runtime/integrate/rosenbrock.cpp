@@ -45,9 +45,13 @@ JacobianSource::Status Rosenbrock::FormJacobian(double h) {
   // system cannot be evaluated there we go on without it.
   const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   const double dt = sqrt_eps * std::max(std::abs(t_), h);
-  if (Evaluate(t_ + dt, y_, std::span<double>(f_stage_.data(), n)) && f_stage_.allFinite()) {
+  // f0_ may be the derivative before a projection (ToleratesProjectedStart): against a fresh one.
+  const bool fresh = ToleratesProjectedStart();
+  if ((!fresh || Evaluate(t_, y_, std::span<double>(rhs_.data(), n))) &&
+      Evaluate(t_ + dt, y_, std::span<double>(f_stage_.data(), n)) && f_stage_.allFinite()) {
     for (Eigen::Index i = 0; i < ni; ++i) {
-      time_derivative_(i) = (f_stage_(i) - f0_[static_cast<std::size_t>(i)]) / dt;
+      const double f = fresh ? rhs_(i) : f0_[static_cast<std::size_t>(i)];
+      time_derivative_(i) = (f_stage_(i) - f) / dt;
     }
   } else {
     time_derivative_.setZero();
