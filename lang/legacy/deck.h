@@ -24,6 +24,13 @@ struct Ref {
   std::string card;  // the card's label, for messages
 };
 
+// NF(3) and NF(4) of an F.x.b card: ATB's R factor (the share of the loading energy the
+// unloading curve gives back) and G factor (the permanent deflection as a share of the largest),
+// each a function of the largest deflection; number 0: none (R = 1, G = 0: elastic).
+struct UnloadingRefs {
+  Ref r_factor, g_factor;
+};
+
 struct DeckUnits {
   std::string length;  // sled unit symbols: "in", "lbf", "s"
   std::string force;
@@ -84,6 +91,7 @@ struct BeltCard {
   // From F.2.b.
   std::uint32_t contact_line = 0;
   Ref segment, force, friction;
+  UnloadingRefs unloading;
   bool output = false;
 };
 
@@ -135,6 +143,7 @@ struct HarnessPoint {
 struct HarnessBeltCard {
   std::uint32_t line = 0;  // F.8.c
   Ref force;
+  UnloadingRefs unloading;
   double slack = 0;  // XLONG
   std::vector<HarnessPoint> points;
 };
@@ -170,6 +179,7 @@ struct FunctionCard {
   std::string title;
   enum class Form { kConstant, kPolynomial, kTable } form = Form::kConstant;
   double constant = 0;
+  double first_part_end = 0;                      // E.2 |D1|: where ATB ends the first part
   std::vector<double> coefficients;               // A0..A5
   std::vector<std::pair<double, double>> points;  // (D, F(D))
 };
@@ -178,6 +188,7 @@ struct ContactCard {
   std::uint32_t line = 0;
   bool with_plane = false;  // F.1 (plane) or F.3 (segment)
   Ref segment, other, force, friction;
+  UnloadingRefs unloading;
   // F.3: MS_SEG(1) and MS_SEG(3), the ellipsoids of `segment` and `other` (0: the frame's own).
   Ref ellipsoid, other_ellipsoid;
   bool output = false;
@@ -192,9 +203,20 @@ struct InitialCard {
   int position_vehicle = -1;
 };
 
+// G.3.a: a segment's yaw, pitch and roll (degrees) from the frame ID4 names, and its angular
+// velocity in its own axes. A reference segment's turn from the ground; a jointed segment's
+// decide its joint's initial angles (the mapper computes them).
 struct OrientationCard {
   std::uint32_t line = 0;
   Vec3 angles{}, angular_velocity{};
+  enum class Reference {
+    kGround,     // ID4 0 or the ground's number
+    kFrame,      // ID4 > 0: the axes of segment or vehicle `frame` (ATB numbering)
+    kJointAxes,  // ID4 < 0: the proximal segment's joint axes (the joint's own angles)
+  } reference = Reference::kGround;
+  int frame = 0;
+  SourceRange angles_where;     // columns 1-30
+  SourceRange reference_where;  // columns 70-72
 };
 
 // H.1 to H.9: one time history. `frame` is KREF's frame when it names one; without it the

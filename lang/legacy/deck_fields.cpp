@@ -46,18 +46,31 @@ std::vector<int> DeckFields::CountsPerItem(const std::string& label, int items,
   return counts;
 }
 
-void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction) {
+void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction,
+                                     UnloadingRefs* unloading) {
   *force = Reference(card, first, first + 3, "the force-deflection function");
-  const char* names[] = {"the inertial-spike function", "the R-factor function",
-                         "the G-factor function"};
-  for (int i = 1; i <= 3; ++i) {
-    const int at = first + 4 * i;
-    const int value = r_.Integer(card, at, at + 3, names[i - 1]);
-    if (value != 0) {
-      Refuse(card, at, at + 3, fmt::format("{} is {}", names[i - 1], value),
-             "the meaning of these functions is not documented; sled's contacts take "
-             "`damping`, `impulse` and the unloading attributes of their force function instead");
-    }
+  const int spike = r_.Integer(card, first + 4, first + 7, "the inertial-spike function");
+  if (spike > 0) {
+    Refuse(card, first + 4, first + 7, fmt::format("the inertial-spike function is {}", spike),
+           "ATB adds this function to the loading force until the deflection passes the spike "
+           "function's E.2 D3 and then drops it (DEF_NEW_QUADRATIC, DEF_NEW_CUBIC); how the "
+           "spike enters the force at first contact is in FRCDFL, which the reference does not "
+           "have, so it cannot be converted; leave the field 0 and model the spike by hand");
+  }
+  Ref* factors[] = {&unloading->r_factor, &unloading->g_factor};
+  const char* names[] = {"the R-factor function", "the G-factor function"};
+  for (int i = 0; i < 2; ++i) {
+    const int at = first + 8 + 4 * i;
+    *factors[i] = Reference(card, at, at + 3, names[i]);
+  }
+  if (spike < 0 || unloading->r_factor.number < 0 || unloading->g_factor.number < 0) {
+    const int at = spike < 0 ? first + 4 : unloading->r_factor.number < 0 ? first + 8 : first + 12;
+    Refuse(card, at, at + 3, "a negative function number (ATB's rate-dependent force)",
+           "with negative numbers in NF(2) to NF(4) ATB adds F2(D) F3(D') + F4(D') to the force "
+           "(D' the deflection rate, FUNC_RATE_DEP); sled's contact force depends on the "
+           "deflection only: add its rate term by hand as the contact's `damping`");
+    unloading->r_factor.number = std::max(unloading->r_factor.number, 0);
+    unloading->g_factor.number = std::max(unloading->g_factor.number, 0);
   }
   *friction = Reference(card, first + 16, first + 19, "the friction function");
 }

@@ -34,8 +34,10 @@ class DeckFields {
   std::vector<int> CountsPerItem(const std::string& label, int items, std::string_view format,
                                  int per_card, bool one_read, std::string_view what, int limit);
   // Five function numbers from `first` (force-deflection, inertial spike, R factor, G factor,
-  // friction, 4 columns each): the three whose meaning is not documented are refused when set.
-  void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction);
+  // friction, 4 columns each): the spike and negative numbers (ATB's rate-dependent force) are
+  // refused; the R and G factors go to `unloading`, for the mapper to convert.
+  void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction,
+                           UnloadingRefs* unloading);
 
   // The frame ATB segment number `number` names (columns first..last of `card`): a body
   // segment, a vehicle or the ground. Airbags (between the vehicles and the ground, `bags` of

@@ -2,7 +2,8 @@
 // from the deck, numbers in the deck's units and a comment naming each declaration's card. Its
 // methods are defined by card group: deck_to_ast.cpp (the run, the body, vehicles, functions,
 // initial conditions), map_restraints.cpp (surfaces, belts, springs, airbags, constraints,
-// harnesses) and map_outputs.cpp (the H cards).
+// harnesses), map_unloading.cpp (ATB's R and G factors), map_posture.cpp (the joint angles of
+// G.3.a) and map_outputs.cpp (the H cards).
 #pragma once
 
 #include <map>
@@ -10,6 +11,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -41,8 +43,20 @@ class DeckMapper {
   // A joint of the body by deck number (B.3 order), or empty after reporting a bad number.
   std::string Joint(const Ref& ref);
   const FunctionCard* Function(const Ref& ref);
-  // The name under which a function is declared for one kind of use (its units depend on it).
-  std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use);
+  // The unloading attributes of a force function (map_unloading.cpp): none, or energy_loss and
+  // permanent_set from ATB's R and G factors.
+  struct FunctionUnloading {
+    double energy_loss = 0, permanent_set = 0;
+  };
+  // The name under which a function is declared for one kind of use (its units depend on it)
+  // and one unloading (ATB's R and G factors of the card that uses it).
+  std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use, const UnloadingRefs& factors = {});
+  // A constant factor function's value, `none` for no function; empty after a report (a factor
+  // that is not a constant).
+  std::optional<double> Factor(const Ref& ref, std::string_view what, double none);
+  // The unloading of `function` under a card's R and G factors; empty after a report.
+  std::optional<FunctionUnloading> Unloading(const FunctionCard& function,
+                                             const UnloadingRefs& refs);
   // E0512 at the function's E.1 card when it pushes the wrong way for `use` (as E0420 would).
   void CheckSign(const FunctionCard& function, const Ref& ref, Use use);
   // The largest friction coefficient the language takes (`friction`, 0 to 5).
@@ -81,8 +95,12 @@ class DeckMapper {
   // its tie points, each belt's friction from the points it wraps.
   void MapHarnesses(ast::Block& scenario);
   void MapFunctions(ast::Block& scenario);
-  ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name);
+  ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name,
+                                   const FunctionUnloading& unloading);
   void MapInitial(ast::Block& scenario);
+  // G.3.a of the segments that hang from joints (and B.4.b's Euler angles): `initial JOINT {
+  // angles = ... }` where the deck's orientations turn a joint (map_posture.cpp).
+  void MapPostures(ast::Block& scenario);
   void AddOrientation(ast::Statement& initial, std::size_t segment);
   // One H request. KREF 0 is each card's default: H.1 and H.4 in the segment's own axes (sled's
   // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.
@@ -95,6 +113,7 @@ class DeckMapper {
     const FunctionCard* function;
     Use use;
     std::string name;
+    FunctionUnloading unloading;
   };
   const Deck& deck_;
   DiagnosticConsumer& diagnostics_;
@@ -106,7 +125,8 @@ class DeckMapper {
   std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
   std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
   std::set<int> placed_extras_;
-  std::map<std::pair<int, int>, std::string> function_names_;
+  // (number, use, energy_loss, permanent_set) -> the declared name
+  std::map<std::tuple<int, int, double, double>, std::string> function_names_;
   std::vector<FunctionUse> uses_;
   std::set<int> used_;
   std::vector<std::pair<std::string, std::string>> contact_outputs_;

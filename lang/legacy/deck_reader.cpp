@@ -505,11 +505,13 @@ class DeckReader : public DeckFields {
         function.constant = d[2];
       } else {
         function.form = d[1] > 0 ? FunctionCard::Form::kPolynomial : FunctionCard::Form::kTable;
+        function.first_part_end = std::fabs(d[1]);
         ReadFunctionPart(function, d[1] > 0, label);
         if (d[2] != 0) {
           Refuse(e2, 25, 36, "a second part of the function (D2 is not zero)",
-                 "the meaning of D0 to D4 is not documented, so a two-part function cannot be "
-                 "converted safely; split it by hand");
+                 "ATB continues the function from |D1| to |D2| with a second polynomial (D2 > 0) "
+                 "or table (D2 < 0) (EVALFD_INTEGRAL); a sled function is one polynomial or one "
+                 "table: merge the parts into one table by hand");
           if (d[2] > 0)
             r_.Next(fmt::format("E.3 ({}, second part)", label), {"(6F12.0)"});
           else
@@ -517,12 +519,28 @@ class DeckReader : public DeckFields {
         }
         if (std::fabs(d[1]) != 1) {
           Unverified(e2, 13, 24,
-                     fmt::format("D1 is {}: only its sign (polynomial or table) is used", d[1]));
+                     fmt::format("D1 is {}: ATB's integral of the function (EVALFD_INTEGRAL, the "
+                                 "loading energy of an R factor) ends its first part at |D1| and "
+                                 "holds the value there beyond; sled's {} goes on (EVALFD, which "
+                                 "evaluates the function, is not in the reference)",
+                                 d[1], d[1] > 0 ? "polynomial" : "table"));
         }
       }
-      if (d[0] != 0 || d[3] != 0 || d[4] != 0) {
-        Refuse(e2, 1, 60, "D0, D3 or D4 is not zero",
-               "the meaning of D0, D3 and D4 is not documented; convert this function by hand");
+      if (d[0] != 0) {
+        Refuse(e2, 1, 12, fmt::format("D0 is {}", d[0]),
+               "D0 is where ATB starts the function: its integral (the loading energy of an R "
+               "factor) runs from D0 and its permanent deflection is D0 + G (x_max - D0) "
+               "(EVALFD_INTEGRAL, DEF_NEW_QUADRATIC); what its value is below D0 is in EVALFD, "
+               "which the reference does not have: shift the function to start at 0 by hand");
+      }
+      if (d[3] != 0 || d[4] != 0) {
+        Refuse(e2, 37, 60, fmt::format("D3 is {} and D4 is {}", d[3], d[4]),
+               "ATB reads D3 of an inertial-spike function as the deflection where the spike "
+               "ends (DEF_NEW_CUBIC), D3 of a contact's friction function as the restitution "
+               "of its first-contact impulse and D4 as the friction of a rolling constraint "
+               "(PLSEGF), D4 of a plane contact's force function as the share of the "
+               "penetration by which the force's point moves off the deepest point (PLELP); "
+               "none of these has a counterpart in sled: leave them 0");
       }
       auto same = std::find_if(deck_.functions.begin(), deck_.functions.end(),
                                [&](const FunctionCard& f) { return f.number == number; });
@@ -651,7 +669,7 @@ class DeckReader : public DeckFields {
       contact.other = Reference(card, 9, 12, "MS_SEG(2), the other segment");
       contact.other_ellipsoid = Reference(card, 13, 16, "MS_SEG(3), the other's ellipsoid");
     }
-    ReadFunctionNumbers(card, 17, &contact.force, &contact.friction);
+    ReadFunctionNumbers(card, 17, &contact.force, &contact.friction, &contact.unloading);
     contact.output = r_.Integer(card, 41, 44, "NOUT, the output flag") != 0;
     if (contact.force.number == 0) {
       Refuse(card, 17, 20, "no force function (a rolling constraint)",
@@ -675,7 +693,7 @@ class DeckReader : public DeckFields {
                              deck_.units.force));
     }
     belt.segment = Reference(card, 5, 8, "MS_SEG(1), the segment");
-    ReadFunctionNumbers(card, 17, &belt.force, &belt.friction);
+    ReadFunctionNumbers(card, 17, &belt.force, &belt.friction, &belt.unloading);
     // NX and NOUT come from the next line by format reversion (9I4 for 11 items).
     const Card extra =
         r_.Next(fmt::format("F.2.b (belt {}, NX and NOUT)", number), {"(9I4)", 2, true});

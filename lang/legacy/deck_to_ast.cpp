@@ -151,10 +151,14 @@ const FunctionCard* DeckMapper::Function(const Ref& ref) {
 }
 
 // The name under which a function is declared for one kind of use (its units depend on it).
-std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
+std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
+                                                 const UnloadingRefs& factors) {
   const FunctionCard* function = Function(ref);
   if (function == nullptr) return std::nullopt;
-  auto key = std::make_pair(function->number, static_cast<int>(use));
+  const auto unloading = Unloading(*function, factors);
+  if (!unloading) return std::nullopt;
+  auto key = std::make_tuple(function->number, static_cast<int>(use), unloading->energy_loss,
+                             unloading->permanent_set);
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
     CheckSign(*function, ref, use);
@@ -163,7 +167,7 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use) {
                               : use == Use::kJoint ? "torque"
                                                    : "webbing");
     found = function_names_.emplace(key, name).first;
-    uses_.push_back({function, use, name});
+    uses_.push_back({function, use, name, *unloading});
   }
   return Path(found->second);
 }
@@ -401,7 +405,7 @@ void DeckMapper::MapFunctions(ast::Block& scenario) {
     for (const FunctionUse& use : uses_) {
       if (use.function != &function) continue;
       used = true;
-      statements.push_back(FunctionStatement(function, use.use, use.name));
+      statements.push_back(FunctionStatement(function, use.use, use.name, use.unloading));
     }
     if (!used) {
       Report(DiagnosticKind::kDeckUnusedFunction, Ref{function.number, function.where, "E.1"},
@@ -414,7 +418,8 @@ void DeckMapper::MapFunctions(ast::Block& scenario) {
 }
 
 ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use use,
-                                             const std::string& name) {
+                                             const std::string& name,
+                                             const FunctionUnloading& unloading) {
   const std::string argument_unit = use == Use::kContact ? L : use == Use::kJoint ? "deg" : "";
   const std::string result_unit = use == Use::kJoint ? F + "*" + L : F;
   const char* argument = use == Use::kContact ? "deflection"
@@ -433,7 +438,6 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
   switch (function.form) {
     case FunctionCard::Form::kConstant:
       statement.values.push_back(Call("constant", {{"", Number(function.constant, result_unit)}}));
-      statement.block.reset();
       break;
     case FunctionCard::Form::kPolynomial: {
       std::vector<std::pair<std::string, ast::Expr>> arguments;
@@ -447,7 +451,6 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
         arguments.emplace_back("", Number(function.coefficients[k], unit));
       }
       statement.values.push_back(Call("polynomial", std::move(arguments)));
-      statement.block.reset();
       break;
     }
     case FunctionCard::Form::kTable:
@@ -457,6 +460,12 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
       }
       break;
   }
+  if (unloading.energy_loss > 0)
+    Add(statement, Attribute("energy_loss", Number(unloading.energy_loss)));
+  if (unloading.permanent_set > 0) {
+    Add(statement, Attribute("permanent_set", Number(unloading.permanent_set)));
+  }
+  if (statement.block->statements.empty()) statement.block.reset();
   return statement;
 }
 
@@ -494,25 +503,7 @@ void DeckMapper::MapInitial(ast::Block& scenario) {
     AddOrientation(initial, index);
     scenario.statements.push_back(std::move(initial));
   }
-  for (std::size_t s = 0; s < deck_.initial_orientations.size(); ++s) {
-    const bool reference =
-        std::any_of(deck_.initial_positions.begin(), deck_.initial_positions.end(),
-                    [&](const InitialCard& c) { return c.segment == static_cast<int>(s + 1); });
-    const OrientationCard& card = deck_.initial_orientations[s];
-    if (reference || (IsZero(card.angles) && IsZero(card.angular_velocity))) continue;
-    ast::Statement initial =
-        Declaration("initial", Path(body_ + "." + segments_[s]), CardComment("G.3.a", card.line));
-    AddOrientation(initial, s);
-    scenario.statements.push_back(std::move(initial));
-  }
-  for (std::size_t j = 0; j < deck_.joints.size(); ++j) {
-    const JointCard& card = deck_.joints[j];
-    if (card.type != JointType::kEuler || IsZero(card.initial_angles)) continue;
-    ast::Statement initial =
-        Declaration("initial", Path(body_ + "." + joints_[j]), CardComment("B.4.b", card.line));
-    Add(initial, Attribute("angles", Vector(card.initial_angles, "deg")));
-    scenario.statements.push_back(std::move(initial));
-  }
+  MapPostures(scenario);
 }
 
 void DeckMapper::AddOrientation(ast::Statement& initial, std::size_t segment) {

@@ -112,7 +112,7 @@ class HarnessReader {
           r_.Next(fmt::format("F.8.c (harness {}, belt {})", number, b + 1), {"(5I4,F12.6)"});
       belt.line = card.line;
       Ref friction;
-      f_.ReadFunctionNumbers(card, 1, &belt.force, &friction);
+      f_.ReadFunctionNumbers(card, 1, &belt.force, &friction, &belt.unloading);
       if (belt.force.number == 0 && card.line != 0) {
         f_.Refuse(card, 1, 4, "a harness belt without a force function",
                   "give the webbing's force against strain (an E function) in columns 1-4");

@@ -76,31 +76,84 @@ class InitialReader : public DeckFields {
       OrientationCard orientation;
       orientation.line = card.line;
       orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
+      orientation.angles_where = r_.Range(card, 1, 30);
       orientation.angular_velocity = GivenVelocity(card, "angular velocity");
-      for (int i = 0; i < 4; ++i) {
+      for (int i = 0; i < 3; ++i) {
         const int first = 61 + 3 * i;
-        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order or reference");
+        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order");
         if (value != 0) {
           Refuse(card, first, first + 2, fmt::format("ID{} is {}", i + 1, value),
-                 "sled's initial orientations are yaw, pitch, roll in the ground frame; leave "
-                 "columns 61-72 blank");
+                 "sled's initial orientations are yaw, pitch, roll (about z, then y, then x); "
+                 "leave columns 61-69 blank (ATB's default order)");
           break;
         }
       }
-      const bool reference = std::find(references.begin(), references.end(),
-                                       static_cast<int>(s) + 1) != references.end();
-      if (!reference && (orientation.angles != Vec3{} || orientation.angular_velocity != Vec3{})) {
-        Refuse(card, 1, 60,
-               fmt::format("an initial orientation or angular velocity of segment {}, which "
-                           "hangs from joint {}",
-                           s + 1, s),
-               "sled sets a jointed segment's initial posture by its joint's angles, which the "
-               "converter does not compute from G.3.a; leave the card blank and give the "
-               "posture as `initial JOINT { angles = ... }` in the scenario");
-        orientation = OrientationCard{orientation.line};
+      const int segment = static_cast<int>(s) + 1;
+      const bool reference =
+          std::find(references.begin(), references.end(), segment) != references.end();
+      ReadOrientationReference(card, segment, reference, orientation);
+      if (!reference && orientation.angular_velocity != Vec3{}) {
+        Refuse(card, 31, 60,
+               fmt::format("an initial angular velocity of segment {}, which hangs from joint {}",
+                           segment, s),
+               "sled solves a jointed segment's joint rates from an angular velocity in the "
+               "ground frame, and how ATB combines this one with the reference segment's "
+               "(COMPUTE_INIT_ANG_VEL) is not in the reference; leave columns 31-60 blank and "
+               "give `initial BODY.SEGMENT { angular_velocity = ... }` in the scenario");
+        orientation.angular_velocity = Vec3{};
       }
       deck_.initial_orientations.push_back(orientation);
     }
+  }
+
+  // G.3.a ID4 (columns 70-72), the frame the yaw, pitch and roll turn from (INPUT_ORIENT,
+  // DRCIJK): 0 or the ground's number the ground; a segment before this one or a vehicle its
+  // axes; minus the proximal segment the joint's axes. A reference segment's is refused (sled
+  // turns it from the ground).
+  void ReadOrientationReference(const Card& card, int segment, bool reference,
+                                OrientationCard& orientation) {
+    const int id4 = r_.Integer(card, 70, 72, "ID4, the orientation's reference");
+    orientation.reference_where = r_.Range(card, 70, 72);
+    const int segments = static_cast<int>(deck_.segments.size());
+    const int vehicles = static_cast<int>(deck_.vehicles.size());
+    const int ground = segments + vehicles + bags_ + 1;
+    if (id4 == 0 || id4 == ground) return;
+    if (reference) {
+      Refuse(card, 70, 72, fmt::format("ID4 is {} for reference segment {}", id4, segment),
+             "sled turns a reference segment from the ground; give its yaw, pitch and roll in "
+             "the ground's axes with ID4 = 0");
+      return;
+    }
+    const auto joint = static_cast<std::size_t>(segment) - 2;
+    if (joint >= deck_.joints.size()) return;  // B.1's NJNT was wrong: reported there
+    if (id4 < 0) {
+      const int proximal = deck_.joints[joint].parent;
+      if (-id4 != proximal) {
+        Invalid(
+            card, 70, 72,
+            fmt::format("ID4 is {}, but segment {} hangs from segment {}", id4, segment, proximal),
+            fmt::format("a negative ID4 is minus the proximal segment, {} (ATB stops "
+                        "otherwise, STOP 25)",
+                        -proximal));
+        return;
+      }
+      orientation.reference = OrientationCard::Reference::kJointAxes;
+      return;
+    }
+    if (id4 >= segment && id4 <= segments) {
+      Invalid(card, 70, 72, fmt::format("ID4 is {}, not a segment before segment {}", id4, segment),
+              "the reference is a segment with a lower number or a vehicle (ATB stops otherwise, "
+              "STOP 24)");
+      return;
+    }
+    if (id4 > segments + vehicles) {
+      Invalid(card, 70, 72, fmt::format("ID4 is {}, which is no segment or vehicle", id4),
+              fmt::format("body segments are 1 to {}, vehicles {} to {}, the ground 0 or {}",
+                          segments, segments + 1, segments + vehicles, ground));
+      return;
+    }
+    orientation.reference = OrientationCard::Reference::kFrame;
+    orientation.frame = id4;
   }
 
   // A G.2 velocity or G.3.a angular velocity (columns 31-60), zero when I3 = 0 makes ATB ignore it.

@@ -46,7 +46,7 @@ void DeckMapper::MapSurfaces(ast::Block& scenario) {
       segment = Surface(card.segment, card.ellipsoid, scenario);
       other = Surface(card.other, card.other_ellipsoid, scenario);
     }
-    auto force = FunctionFor(card.force, Use::kContact);
+    auto force = FunctionFor(card.force, Use::kContact, card.unloading);
     const auto friction = Friction(card.friction);
     if (segment.empty() || other.empty() || !force || !friction) continue;
     ast::Statement contact = Declaration(
@@ -139,7 +139,7 @@ void DeckMapper::MapRestraints(ast::Block& scenario) {
     const BeltCard& card = deck_.belts[b];
     if (card.contact_line == 0) continue;  // the F.2.b card was missing: reported by the reader
     const std::string segment = Segment(card.segment, "segment");
-    auto force = FunctionFor(card.force, Use::kBelt);
+    auto force = FunctionFor(card.force, Use::kBelt, card.unloading);
     const auto friction = Friction(card.friction);
     if (segment.empty() || !force || !friction) continue;
     ast::Statement belt = Declaration(
@@ -372,7 +372,7 @@ void DeckMapper::MapHarnesses(ast::Block& scenario) {
         wrap_friction.push_back(&belt.points[k].friction);
       }
       path.push_back(Vector(belt.points.back().anchor, L));
-      auto force = FunctionFor(belt.force, Use::kBelt);
+      auto force = FunctionFor(belt.force, Use::kBelt, belt.unloading);
       const auto wrap = CommonFriction(wrap_friction, "a belt's wrapped segments");
       if (!force || !wrap || !complete) {
         complete = false;

@@ -547,6 +547,41 @@ double StabilisationRate(const Model& model) {
   return 1.0 / time;
 }
 
+// A fixed distance whose line is perpendicular to every motion the joints allow (the two points
+// and the centres of the joints between them on one line: the distance is the largest or the
+// smallest the chain can have) has a vanishing row, |J| below this share of the two points'
+// relative mobility |J_p1 - J_p2| (both in the metric of M^-1). Its multiplier is the
+// regularisation's b / eps: holding the distance once a joint bends takes an unbounded force.
+constexpr double kDegenerateRow = 1e-6;
+
+// The first fixed-distance constraint at such an extreme of its distance, or -1; at data's
+// kinematics and w.point_first/second (after Evaluate). Uses w.mass and w.point_jacobian.
+std::int64_t DegenerateDistance(const Model& model, Data& data, ConstraintWorkspace& w) {
+  CompositeRigidBodyMassMatrix(model, data, w.composite, w.mass);
+  for (std::size_t c = 0; c < model.nconstraint(); ++c) {
+    if (model.constraint_kind[c] != Model::ConstraintKind::kFixedDistance) continue;
+    const Vec3 d = w.point_first[c] - w.point_second[c];
+    if (!(d.norm() > kMinimumLength)) continue;  // Evaluate reports coincident points
+    const Vec3 n = d.normalized();
+    w.point_jacobian.setZero();
+    AddPointJacobian(model, data, model.constraint_first[c], w.point_first[c], 1.0,
+                     &w.point_jacobian, nullptr);
+    AddPointJacobian(model, data, model.constraint_second[c], w.point_second[c], -1.0,
+                     &w.point_jacobian, nullptr);
+    double row = 0.0, mobility = 0.0;
+    for (Eigen::Index j = 0; j < w.nv; ++j) {
+      if (!(w.mass(j, j) > 0.0)) continue;  // a massless coordinate adds no scale (as Factor)
+      const double along = n.dot(w.point_jacobian.col(j));
+      row += along * along / w.mass(j, j);
+      mobility += w.point_jacobian.col(j).squaredNorm() / w.mass(j, j);
+    }
+    if (mobility > 0.0 && row <= kDegenerateRow * kDegenerateRow * mobility) {
+      return static_cast<std::int64_t>(c);
+    }
+  }
+  return -1;
+}
+
 }  // namespace
 
 void SetUpConstraints(const Model& model, const ConstraintPattern& pattern, Data& data) {
@@ -600,6 +635,14 @@ void SetUpConstraints(const Model& model, const ConstraintPattern& pattern, Data
     w.setup_failed = true;
     data.q = q;
     data.v = v;
+  } else if (const std::int64_t c = DegenerateDistance(model, data, w); c >= 0) {
+    w.setup_failure.where = model.constraint_name[static_cast<std::size_t>(c)];
+    w.setup_failure.cause =
+        "at the start: no motion the joints allow changes the distance between the two points "
+        "(they lie on one line with the centres of the joints between them, so the distance is "
+        "the largest or smallest the joints reach): holding it would take an unbounded force as "
+        "soon as a joint bends; move a point off that line";
+    w.setup_failed = true;
   }
   if (klu.numeric == nullptr) {
     ComputeKinematics(model, data);

@@ -111,6 +111,20 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     const auto v = static_cast<std::size_t>(m.v_address.at(i));
     return {m.v0.at(v), m.v0.at(v + 1), m.v0.at(v + 2)};
   }
+  if (field == "pair_energy_loss")
+    return {m.functions.energy_loss.at(static_cast<std::size_t>(c.pair_function.at(i)))};
+  if (field == "pair_permanent_set")
+    return {m.functions.permanent_set.at(static_cast<std::size_t>(c.pair_function.at(i)))};
+  if (field == "mirror_twin") return {static_cast<double>(m.segment_mirror_twin.at(i))};
+  if (field == "output_count") return {static_cast<double>(m.output_kind.size())};
+  if (field == "harness_friction") return {m.belts.harness_friction.at(i)};
+  const runtime::AirbagTable& a = m.airbags;
+  if (field == "airbag_semi_axes") return Of(a.semi_axes.at(i));
+  if (field == "airbag_deploy_time") return {a.deploy_time.at(i)};
+  if (field == "airbag_ambient_pressure") return {a.ambient_pressure.at(i)};
+  if (field == "airbag_inflow_temperature") return {a.inflow_temperature.at(i)};
+  if (field == "airbag_gamma") return {a.gamma.at(i)};
+  if (field == "airbag_gas_constant") return {a.gas_constant.at(i)};
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};

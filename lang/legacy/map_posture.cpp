@@ -1,0 +1,177 @@
+// G.3.a for the segments that hang from joints: ATB gives every segment its own initial
+// orientation (INPUT_ORIENT, DRCIJK), sled a jointed segment its joint's angles. The converter
+// turns one into the other:
+//
+//   R_s = Y(ypr)                   ID4 = 0 (a blank card too: the segment starts level)
+//   R_s = R_M Y(ypr)               ID4 = M, a segment before s or a vehicle
+//   R_J = Y(ypr)                   ID4 = -(the proximal segment): the joint's own angles
+//
+// with Y(ypr) = Rz(yaw) Ry(pitch) Rx(roll) from the frame's axes to the ground's and R the
+// segment's axes in the ground's. sled places the child of a joint at
+// R_child = R_parent Y(axes_parent) R_J Y(axes_child)^T with R_J = Rz(precession)
+// Ry(nutation) Rx(spin) (B.3.b's YPR1 and YPR2 are `axes`), so
+// R_J = (R_parent Y(axes_parent))^T R_s Y(axes_child), whose z-y-x angles are the joint's
+// `angles`. A segment's R is known before its children's: ATB numbers a child after its parent.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "lang/legacy/ast_pieces.h"
+#include "lang/legacy/deck_mapper.h"
+
+namespace sled::lang::legacy::mapping {
+namespace {
+
+using Mat = std::array<std::array<double, 3>, 3>;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Mat Identity() { return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
+
+Mat Multiply(const Mat& a, const Mat& b) {
+  Mat c{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
+    }
+  }
+  return c;
+}
+
+Mat Transpose(const Mat& a) {
+  Mat t{};
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) t[i][j] = a[j][i];
+  }
+  return t;
+}
+
+// Rz(yaw) Ry(pitch) Rx(roll), angles in degrees.
+Mat YawPitchRoll(const Vec3& ypr) {
+  const double cy = CosDegrees(ypr[0]), sy = SinDegrees(ypr[0]);
+  const double cp = CosDegrees(ypr[1]), sp = SinDegrees(ypr[1]);
+  const double cr = CosDegrees(ypr[2]), sr = SinDegrees(ypr[2]);
+  return {{{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
+           {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
+           {-sp, cp * sr, cp * cr}}};
+}
+
+// The z-y-x angles (degrees) of R = Rz(a) Ry(b) Rx(c), b in [-90, 90]; at b = +-90 degrees,
+// where only a - c (or a + c) is defined, c = 0. Rounded to 1e-9 degrees, so exact turns print
+// as such.
+Vec3 ZyxDegrees(const Mat& r) {
+  const double sb = std::clamp(-r[2][0], -1.0, 1.0);
+  const double b = std::asin(sb);
+  double a = 0, c = 0;
+  if (std::fabs(sb) < 1 - 1e-12) {
+    a = std::atan2(r[1][0], r[0][0]);
+    c = std::atan2(r[2][1], r[2][2]);
+  } else {
+    a = std::atan2(-r[0][1], r[1][1]);
+  }
+  Vec3 angles{a * 180 / kPi, b * 180 / kPi, c * 180 / kPi};
+  for (double& angle : angles) {
+    angle = std::round(angle * 1e9) / 1e9;
+    if (angle == 0) angle = 0;  // no -0
+  }
+  return angles;
+}
+
+bool IsIdentity(const Mat& r) {
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::fabs(r[i][j] - (i == j ? 1 : 0)) > 1e-12) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void DeckMapper::MapPostures(ast::Block& scenario) {
+  const std::size_t n = deck_.segments.size();
+  const OrientationCard blank;
+  auto card_of = [&](std::size_t s) -> const OrientationCard& {
+    return s < deck_.initial_orientations.size() ? deck_.initial_orientations[s] : blank;
+  };
+  std::vector<Mat> world(n, Identity());
+  for (std::size_t s = 0; s < n; ++s) {
+    const OrientationCard& card = card_of(s);
+    if (s > deck_.joints.size()) break;               // B.1's NJNT was wrong: reported there
+    if (s == 0 || deck_.joints[s - 1].parent == 0) {  // a reference segment: from the ground
+      world[s] = YawPitchRoll(card.angles);
+      continue;
+    }
+    const JointCard& joint = deck_.joints[s - 1];
+    const auto parent = static_cast<std::size_t>(joint.parent - 1);
+    if (joint.parent < 1 || parent >= s) continue;  // ATB numbers children after parents
+    const Mat parent_axes = Multiply(world[parent], YawPitchRoll(joint.axes_parent));
+    const Mat child_axes = YawPitchRoll(joint.axes_child);
+    const Ref where{static_cast<int>(s + 1), card.angles_where, "G.3.a"};
+    const bool blank_card =
+        IsZero(card.angles) && card.reference == OrientationCard::Reference::kGround;
+    Mat relative = Identity();
+    std::string from;
+    if (joint.type == JointType::kEuler && !IsZero(joint.initial_angles)) {
+      if (!blank_card) {
+        Report(DiagnosticKind::kDeckNotExpressible, where,
+               fmt::format("card G.3.a (segment {}): an orientation of a segment whose Euler "
+                           "joint {} has initial angles on B.4.b (line {})",
+                           s + 1, s, joint.line),
+               "give the joint's posture once: the B.4.b angles or the G.3.a orientation");
+        continue;
+      }
+      relative = YawPitchRoll(joint.initial_angles);  // emitted from B.4.b below
+    } else if (card.reference == OrientationCard::Reference::kJointAxes) {
+      relative = YawPitchRoll(card.angles);
+      from = "about the joint's axes (ID4 < 0)";
+    } else {
+      Mat frame = Identity();
+      from = "from the ground";
+      if (card.reference == OrientationCard::Reference::kFrame) {
+        const auto m = static_cast<std::size_t>(card.frame);
+        if (m <= n) {
+          frame = world[m - 1];
+          from = fmt::format("from segment {} (ID4)", m);
+        } else {
+          frame = YawPitchRoll(deck_.vehicles[m - n - 1].orientation);
+          from = fmt::format("from vehicle {} (ID4)", m - n);
+        }
+      }
+      const Mat segment = Multiply(frame, YawPitchRoll(card.angles));
+      relative = Multiply(Multiply(Transpose(parent_axes), segment), child_axes);
+    }
+    world[s] = Multiply(Multiply(parent_axes, relative), Transpose(child_axes));
+    if (joint.type == JointType::kEuler && !IsZero(joint.initial_angles)) {
+      ast::Statement initial = Declaration("initial", Path(body_ + "." + joints_[s - 1]),
+                                           CardComment("B.4.b", joint.line));
+      Add(initial, Attribute("angles", Vector(joint.initial_angles, "deg")));
+      scenario.statements.push_back(std::move(initial));
+      continue;
+    }
+    if (IsIdentity(relative)) continue;
+    if (joint.type != JointType::kBall && joint.type != JointType::kEuler) {
+      Report(DiagnosticKind::kDeckNotExpressible, where,
+             fmt::format("card G.3.a (segment {}): an orientation that turns joint {}, a {} "
+                         "joint, from its axes",
+                         s + 1, s, joint.type == JointType::kSlip ? "slip" : "pin"),
+             "sled's slip joint keeps its child turned as its axes put it; give the segment "
+             "the orientation its joint's axes give it (B.3.b)");
+      continue;
+    }
+    const Vec3 angles = ZyxDegrees(relative);
+    ast::Statement initial =
+        Declaration("initial", Path(body_ + "." + joints_[s - 1]),
+                    CardComment("G.3.a", card.line == 0 ? joint.line : card.line) +
+                        fmt::format(": segment {}'s yaw, pitch and roll ({}, {}, {}) deg {}", s + 1,
+                                    card.angles[0], card.angles[1], card.angles[2], from));
+    Add(initial, Attribute("angles", Vector(angles, "deg")));
+    scenario.statements.push_back(std::move(initial));
+  }
+}
+
+}  // namespace sled::lang::legacy::mapping
