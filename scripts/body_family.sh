@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The standard library's body family (stdlib/humans/*.sled but male50), made from male50 by
 # scripts/scale_body.py. Each body's stated inputs are published figures of the Hybrid III dummy
-# of that size; the sources are written into each file's header.
+# of that size; the segment masses and lengths come from published regression equations where
+# one covers the body (scripts/segment_regressions.py), and child3 is scaled. The sources are
+# written into each file's header.
 #
 #   scripts/body_family.sh [OUT_DIR]     (default: stdlib/humans)
 #
@@ -13,50 +15,46 @@ out="${1:-$root/stdlib/humans}"
 scale() { python3 "$root/scripts/scale_body.py" "$@"; }
 nhtsa_family="the family table of NHTSA's Hybrid III page"
 
-scale --name female05 --dummy hybrid3_5f --stature 59.1in --mass 108.03lb \
-  --segment-mass head=8.23lb --segment-mass neck=2.0lb --segment-mass upper_torso=26.5lb \
-  --segment-mass lower_torso=29.2lb --segment-mass upper_arms=5.2lb \
-  --segment-mass lower_arms=5.2lb --segment-mass upper_legs=13.8lb \
-  --segment-mass lower_legs_feet=17.9lb --head-length 7.2in \
+scale --name female05 --dummy hybrid3_5f --stature 59.1in --mass 108.03lb --regression female \
   --title "a 15-segment 5th-percentile adult female, the Hybrid III 5th female's size" \
-  --source "Stature 59.1 in (1501 mm): $nhtsa_family" \
-  --source "(http://www.nhtsa.gov/Research/ci.Hybrid+III+5th+Percentile+Female.print)." \
-  --source "Segment weights (lb) from the same page: head 8.23, neck 2.0, upper torso 26.5," \
-  --source "lower torso 29.2, upper arms 5.2, lower arms and hands 5.2, upper legs 13.8, lower" \
-  --source "legs and feet 17.9; total 108.03 lb (49.00 kg; the family table rounds it to 108.0)." \
-  --source "Upper torso is taken as the thorax, lower torso as abdomen and pelvis (an assumption:" \
-  --source "the dummy's parts do not split where male50's segments do). Head depth 7.2 in" \
-  --source "(183 mm), the same page, sizes the head." > "$out/female05.sled"
+  --source "Stature 59.1 in (1501 mm) and mass 108.03 lb (49.00 kg): $nhtsa_family" \
+  --source "(http://www.nhtsa.gov/Research/ci.Hybrid+III+5th+Percentile+Female.print), the sum of" \
+  --source "its segment weights (the family table rounds it to 108.0 lb)." > "$out/female05.sled"
 
-scale --name male95 --stature 188cm --mass 223lb \
+scale --name male95 --stature 188cm --mass 223lb --regression male \
   --title "a 15-segment 95th-percentile adult male, the Hybrid III 95th male's size" \
   --source "Stature 188 cm and mass 223 lb (101.2 kg; the page rounds it to 100 kg): the Hybrid III" \
-  --source "95th male as https://en.wikipedia.org/wiki/Hybrid_III gives it. No segment weights of" \
-  --source "this dummy were found: every segment is male50's times the mass ratio." > "$out/male95.sled"
+  --source "95th male as https://en.wikipedia.org/wiki/Hybrid_III gives it." > "$out/male95.sled"
 
-scale --name child6 --stature 45.0in --mass 51.6lb \
-  --segment-mass head=7.66lb --segment-mass neck=1.20lb --segment-mass upper_torso=12.25lb \
-  --segment-mass lower_torso=13.75lb --segment-mass upper_arms=2.10lb \
-  --segment-mass lower_arms=2.74lb --segment-mass upper_legs=6.40lb \
-  --segment-mass lower_legs_feet=5.50lb --head-length 6.80in \
+scale --name male50_regression --dummy hybrid3_50m --stature 1753mm --mass 78kg --regression male \
+  --title "a 15-segment 50th-percentile adult male made by the regressions, a variant of male50" \
+  --source "Stature 1753 mm and mass 78 kg: the Hybrid III 50th male (crash-conventions.md §4)," \
+  --source "male50's own size. It differs from male50 where the regressions' segment masses and" \
+  --source "lengths differ from de Leva's." > "$out/male50_regression.sled"
+
+scale --name male50_chest --dummy hybrid3_50m --stature 1753mm --mass 77.99kg --deflecting-chest \
+  --title "male50 with a deflecting chest (a sternum on a slip joint), 16 segments" \
+  --source "Stature and mass: male50's own (its segments add up to 77.99 kg), so every other" \
+  --source "segment and joint is male50's." > "$out/male50_chest.sled"
+
+scale --name child6 --stature 45.0in --mass 51.6lb --regression child6 --head-length 6.80in \
   --title "a 15-segment 6-year-old child, the Hybrid III 6-year-old's size" \
   --source "Stature 45.0 in (1143 mm), weight 51.6 lb (23.41 kg):" \
   --source "$nhtsa_family" \
   --source "(http://www.nhtsa.gov/Research/ci.HYBRID+III+6-Year+Old+Physical+Data.print)." \
-  --source "Segment weights (lb) from the same page: head 7.66, neck 1.20, upper torso 12.25," \
-  --source "lower torso 13.75, upper arms 2.10, lower arms and hands 2.74, upper legs 6.40, lower" \
-  --source "legs and feet 5.50. Upper torso is taken as the thorax, lower torso as abdomen and" \
-  --source "pelvis (an assumption). Head length 6.80 in (173 mm), the same page, sizes the head:" \
-  --source "a child's head is larger for its stature than an adult's, so it is scaled apart." \
-  --source "Joint characteristics are scaled adult ones; a child's ranges of motion and neck" \
-  --source "stiffness differ (not modelled)." > "$out/child6.sled"
+  --source "Head length 6.80 in (173 mm), the same page, sizes the head: a child's head is larger" \
+  --source "for its stature than an adult's, so it is scaled apart. Joint characteristics are" \
+  --source "scaled adult ones; a child's ranges of motion and neck stiffness differ (not modelled)." \
+  > "$out/child6.sled"
 
+# Jensen's (1989) proportions start at 4 years: no regression here covers a 3-year-old, so child3
+# stays male50 scaled to the Hybrid III 3-year-old's published segment weights.
 scale --name child3 --stature 37.2in --mass 34.09lb \
   --segment-mass head=5.92lb --segment-mass neck=1.65lb --segment-mass torso=14.42lb \
   --segment-mass upper_arms=1.86lb --segment-mass lower_arms=2.10lb \
   --segment-mass upper_legs=4.26lb --segment-mass lower_legs=2.68lb --segment-mass feet=1.20lb \
   --head-length 181.0mm \
-  --title "a 15-segment 3-year-old child, the Hybrid III 3-year-old's size" \
+  --title "a 15-segment 3-year-old child, the Hybrid III 3-year-old's size, scaled (no regression)" \
   --source "Stature 37.2 in (945 mm): $nhtsa_family" \
   --source "(https://one.nhtsa.gov/Research/HYBRID-III-3%E2%80%93Year-Old-Physical-Data)." \
   --source "Segment weights (lb) from the same page: head 5.92, neck 1.65, torso with jacket" \

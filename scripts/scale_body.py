@@ -24,6 +24,29 @@ Options that bring published data in where a uniform scaling would be wrong:
                             segment is scaled by its own factor (head length / the reference's
                             200 mm), and the rest of the body by the factor that keeps --stature.
 
+Bodies from published regression equations instead of uniform scaling:
+  --regression male|female  segment masses from the regression on body mass and stature
+                            (male: Zatsiorsky and Seluyanov 1983; female: Shan and Bohn 2003),
+                            each male50 segment's lengths by the ratio of its Shan and Bohn
+                            (2003) length at the stated size to the male length at male50's
+                            (78 kg, 175.3 cm), all times the one factor that gives --stature.
+  --regression child6       segment masses from Jensen's (1989) proportions at 6 years; lengths
+                            scaled as without --regression (with --head-length).
+  scripts/segment_regressions.py holds the coefficients and the citations. The regressions'
+  segment masses are shared among male50's segments where a source segment covers several (head
+  and neck; a whole trunk) in male50's proportions, and scaled together by the one factor that
+  makes the total --mass (the header gives it: how far the regression's own sum is off). A
+  regression that gives a segment a non-positive mass, or a share of the body mass or a length
+  ratio far from male50's, is refused: the equations are being used outside their sample.
+  Moments of inertia follow the segment's mass and lengths as without --regression (the
+  published moments extrapolate badly at the 5th female's size, see docs/load_cases.md);
+  centres of mass stay at male50's place along each segment.
+
+  --deflecting-chest        adds a sternum segment in front of the thorax on a slip joint `chest`
+                            (x forward) with a force-deflection flexure and viscous damping, so
+                            that chest deflection and the Viscous Criterion can be read; its mass
+                            is taken from the thorax's (the header gives the sources).
+
 Every stated input is written into the new file's header; tests/compiler/body_family_test.cpp
 checks each body's total mass and standing height (computed from its geometry) against them.
 """
@@ -31,6 +54,8 @@ import argparse
 import re
 import sys
 from pathlib import Path
+
+import segment_regressions
 
 ROOT = Path(__file__).resolve().parent.parent
 REFERENCE = ROOT / "stdlib" / "humans" / "male50.sled"
@@ -88,6 +113,7 @@ class Reference:
         self.masses = {}
         self.parent = {}  # child -> (parent, at_parent, at_child)
         self.ellipsoids = {}  # segment -> [(semi_axes, center)]
+        self.root = re.search(r"^\s*reference = (\w+)", text, re.M).group(1)
         segment = None
         joint = None
         for line in text.splitlines():
@@ -146,7 +172,120 @@ def vector(text):
 
 
 def scale_vector(m, factor, scale=fmt_length):
-    return "(" + ", ".join(scale(float(m.group(i)) * factor) for i in (1, 2, 3)) + ")"
+    """The vector matched by `m` times `factor`, one number or one per axis."""
+    factors = factor if isinstance(factor, (list, tuple)) else [factor] * 3
+    return "(" + ", ".join(scale(float(m.group(i)) * factors[i - 1]) for i in (1, 2, 3)) + ")"
+
+
+def long_axis(segment):
+    """The axis a segment's published length runs along: x for a foot, z for the others."""
+    return 0 if segment.startswith("foot") else 2
+
+
+# The deflecting chest of male50's size (--deflecting-chest): the sternum's place and shape in the
+# thorax frame [mm], its mass [kg], the force against the deflection [mm -> N] and the damping
+# [N*s/m]. Sources and estimates: CHEST_NOTES.
+STERNUM_MASS = 0.45
+STERNUM_AT = (105.0, 0.0, 10.0)
+STERNUM_SEMI_AXES = (40.0, 110.0, 120.0)
+CHEST_FORCE = [(0, 0), (25, 200), (50, 600), (70, 1500), (90, 6000), (100, 20000)]
+CHEST_VISCOUS = 500.0
+CHEST_NOTES = [
+    "Deflecting chest: the segment `sternum` (the front of the ribcage) on the slip joint `chest`",
+    "(thorax -> sternum, along x): chest deflection is `joint_angle occupant.chest` (negative in",
+    "compression) and `viscous_criterion(occupant.chest)` gives VC. Give the sternum the frontal",
+    "contacts (belt, wheel, panel): its ellipsoid stands 20 mm (male50's size) in front of the",
+    "thorax's, which is then the back and sides of the chest.",
+    "  Source of the first 25 mm: Cavanaugh, Jepsen and King (1988), Quasi-static frontal loading",
+    "of the thorax of human cadavers and the Hybrid III dummy (16th International Workshop on",
+    "Human Subjects for Biomechanical Research): 6 to 10 N/mm at the sternum over a 25.4 mm",
+    "stroke; 8 N/mm is taken. Estimates (no source here): the stiffening beyond 25 mm to a",
+    "bottoming out at 100 mm, the 500 N*s/m of damping, the sternum's 0.45 kg (taken from the",
+    "thorax's mass) and its place. Other sizes: deflections times the thorax's depth ratio,",
+    "forces and damping times its square (geometric similarity; an engineering choice).",
+]
+
+
+def chest_text(factors, mass_ratio):
+    """The sternum segment, its force function and the slip joint, for a thorax whose lengths
+    are male50's times `factors` (x, y, z) and whose mass is `mass_ratio` times male50's."""
+    depth = factors[0]
+    semi = ", ".join(fmt_length(v * f) for v, f in zip(STERNUM_SEMI_AXES, factors))
+    at = ", ".join(fmt_length(v * f) for v, f in zip(STERNUM_AT, factors))
+    mass = STERNUM_MASS * mass_ratio
+    # A thin plate across the chest: moments of a box 2a x 2b x 2c.
+    a, b, c = (v * f / 1000 for v, f in zip(STERNUM_SEMI_AXES, factors))
+    inertia = ", ".join(fmt(mass * (q * q + r * r) / 3, 3) for q, r in ((b, c), (a, c), (a, b)))
+    segment = ["  segment sternum {", f"    mass = {fmt(mass)} kg",
+               f"    inertia = ({inertia}) kg*m^2",
+               f"    ellipsoid {{ semi_axes = ({semi}) mm  center = (0, 0, 0) mm }}", "  }"]
+    function = ["  // The chest's force against its deflection (the header gives the sources).",
+                "  function chest_force = table(deflection -> force) {"]
+    function += [f"    {fmt_length(d * depth)} mm -> {fmt(f * depth * depth, 4)} N"
+                 for d, f in CHEST_FORCE]
+    function += ["  }", ""]
+    joint = ["", "  // Chest: the sternum slides along x against the chest's force and damping.",
+             "  joint chest : slip(thorax -> sternum) {", f"    at thorax = ({at}) mm",
+             "    at sternum = (0, 0, 0) mm", "    axis = x", "    flexure = chest_force",
+             f"    viscous = {fmt(CHEST_VISCOUS * depth * depth, 3)} N*s/m", "  }"]
+    return segment, function, joint
+
+
+def regress(ref, name, stature, mass):
+    """male50's segment masses and length ratios from the regression `name` at the stated size
+    (scripts/segment_regressions.py); refuses a size outside what the equations can give."""
+    model = segment_regressions.MODELS[name]
+    stature_cm = stature / 10
+    where = f"at {fmt(stature, 5)} mm and {fmt(mass, 5)} kg"
+    if "mass" in model:
+        table = model["mass"]
+        values = segment_regressions.evaluate(table, mass, stature_cm)
+    else:
+        table = model["share"]
+        values = {s: share / 100 * mass for s, share in table.items()}
+    bad = sorted(s for s, v in values.items() if v <= 0)
+    if bad:
+        raise SystemExit(f"scale_body: the {name} regression gives no mass to {', '.join(bad)} "
+                         f"{where}: the size is outside its sample")
+    # male50's segments that one source segment covers (head and neck; a whole trunk) share its
+    # mass in male50's proportions, side by side.
+    groups = {}
+    for segment in ref.masses:
+        side = segment[-2:] if segment.endswith(("_l", "_r")) else ""
+        sources = tuple(segment_regressions.source_of(name, segment, table))
+        groups.setdefault((sources, side), []).append(segment)
+    raw = {}
+    for (sources, _), members in groups.items():
+        covered = sum(ref.masses[m] for m in members)
+        for m in members:
+            raw[m] = sum(values[x] for x in sources) * ref.masses[m] / covered
+    regression_sum = sum(raw.values())
+    masses = {segment: value * mass / regression_sum for segment, value in raw.items()}
+    ref_total = sum(ref.masses.values())
+    # A regression far outside its sample gives shares no body has (a proportion model does not
+    # extrapolate, and a child's head is rightly 2.6 times the adult's share).
+    for segment, value in masses.items() if "mass" in model else ():
+        share = value / mass / (ref.masses[segment] / ref_total)
+        if not 0.5 <= share <= 2.0:
+            raise SystemExit(f"scale_body: the {name} regression gives {segment} {share:.2f} times "
+                             f"male50's share of the body mass {where}: outside its sample")
+    lengths = {}
+    if "length" in model:
+        target = segment_regressions.evaluate(model["length"], mass, stature_cm)
+        reference = segment_regressions.evaluate(
+            segment_regressions.MODELS["male"]["length"], segment_regressions.REFERENCE_MASS_KG,
+            segment_regressions.REFERENCE_STATURE_CM)
+        overall = stature_cm / segment_regressions.REFERENCE_STATURE_CM
+        for segment in ref.masses:
+            sources = segment_regressions.source_of(name, segment, model["length"])
+            lengths[segment] = (sum(target[x] for x in sources) /
+                                sum(reference[x] for x in sources))
+            if not 0.7 <= lengths[segment] / overall <= 1.4:
+                raise SystemExit(f"scale_body: the {name} regression makes {segment} "
+                                 f"{lengths[segment]:.2f} times male50's length {where} (the "
+                                 f"stature {overall:.2f} times): outside its sample")
+    return {"masses": masses, "lengths": lengths, "sum": regression_sum,
+            "citation": model["citation"]}
 
 
 def main():
@@ -156,6 +295,10 @@ def main():
     parser.add_argument("--mass", required=True, help="total mass, e.g. 48.99kg")
     parser.add_argument("--segment-mass", action="append", default=[], metavar="GROUP=MASS")
     parser.add_argument("--head-length", help="published head length, e.g. 172.7mm")
+    parser.add_argument("--regression", choices=sorted(segment_regressions.MODELS),
+                        help="segment masses (and lengths) from published regression equations")
+    parser.add_argument("--deflecting-chest", action="store_true",
+                        help="a sternum segment on a slip joint in front of the thorax")
     parser.add_argument("--dummy", default="human",
                         help="the dummy the body stands for in ISO-MME codes (`dummy = ...` of a "
                              "body in docs/language.md); default human, code 00")
@@ -172,8 +315,20 @@ def main():
     ref_mass = sum(ref.masses.values())
     ones = ref.stature(lambda _: 1.0)
 
-    # Masses: published groups first, the rest in the reference proportions.
+    # Masses: from a regression, or published groups first and the rest in the reference
+    # proportions.
     masses = {}
+    relative = {}  # segment -> its length ratio from a regression, before the stature's factor
+    regression = None
+    if args.regression:
+        if args.segment_mass:
+            raise SystemExit("scale_body: --regression gives the segment masses; drop --segment-mass")
+        regression = regress(ref, args.regression, stature, mass)
+        masses = dict(regression["masses"])
+        relative = regression["lengths"]
+        if relative and args.head_length:
+            raise SystemExit(f"scale_body: --regression {args.regression} gives the head's length; "
+                             "drop --head-length")
     for item in args.segment_mass:
         group, _, value = item.partition("=")
         if group not in GROUPS:
@@ -194,7 +349,21 @@ def main():
 
     # Lengths: the head by its own factor when its length is given, the rest to the stature.
     head = quantity(args.head_length, "mm") / REFERENCE_HEAD_LENGTH_MM if args.head_length else None
-    if head is None:
+    across = stature / ones  # the breadths of a body made from regression lengths
+
+    def regression_scale(segment, along):
+        """Per axis: a segment's regression length ratio times `along` on its long axis, the
+        stature's ratio across it (the regressions give lengths, not breadths)."""
+        factors = [across] * 3
+        factors[long_axis(segment)] = along * relative[segment]
+        return factors
+
+    if relative:
+        # Standing height is linear in the factor along the segments (the feet's heights are
+        # breadths here): S = S0 + c (S1 - S0).
+        s0, s1 = (ref.stature(lambda seg, c=c: regression_scale(seg, c)[2]) for c in (0.0, 1.0))
+        body_scale = (stature - s0) / (s1 - s0)
+    elif head is None:
         body_scale = stature / ones
     else:
         # Standing height is linear in the head's factor h and the rest's l while the head stays
@@ -204,10 +373,17 @@ def main():
         if body_scale <= 0:
             raise SystemExit("scale_body: the head length does not fit the stature")
 
-    def length_scale(segment):
-        return head if head is not None and segment == "head" else body_scale
+    def axis_scale(segment):
+        """A segment's length factors along x, y and z."""
+        if relative:
+            return regression_scale(segment, body_scale)
+        return [head if head is not None and segment == "head" else body_scale] * 3
 
-    achieved = ref.stature(length_scale)
+    def length_scale(segment):
+        """The factor of a segment's length: its weight's lever about the joint above it."""
+        return axis_scale(segment)[long_axis(segment)]
+
+    achieved = ref.stature(lambda segment: axis_scale(segment)[2])
     mass_ratio = mass / ref_mass
 
     # A joint's torques hold up what hangs beyond it: scaled by that mass's ratio M_j and the
@@ -232,6 +408,10 @@ def main():
     command += [f"--segment-mass {m}" for m in args.segment_mass]
     if args.head_length:
         command.append(f"--head-length {args.head_length}")
+    if args.regression:
+        command.append(f"--regression {args.regression}")
+    if args.deflecting_chest:
+        command.append("--deflecting-chest")
     command.append("--title ... --source ...")
     line = "//  "
     for word in command:
@@ -246,22 +426,48 @@ def main():
         out.append(f"//   {line}")
     out.append("//")
     out.append("// Derivation (scripts/scale_body.py's header has the rules): male50 is 77.99 kg and")
-    out.append(f"// {fmt(ones, 5)} mm tall standing (from its geometry). Lengths times {fmt(body_scale, 5)}"
-               + (f", the head's times {fmt(head, 5)}." if head is not None else "."))
-    if args.segment_mass:
+    if relative:
+        out.append(f"// {fmt(ones, 5)} mm tall standing (from its geometry). Breadths times {fmt(across, 5)} (the")
+        out.append(f"// stature's ratio); lengths along each segment (z, a foot's x) times {fmt(body_scale, 5)}")
+        out.append("// and the segment's regression length ratio (below).")
+    else:
+        out.append(f"// {fmt(ones, 5)} mm tall standing (from its geometry). Lengths times {fmt(body_scale, 5)}"
+                   + (f", the head's times {fmt(head, 5)}." if head is not None else "."))
+    if regression:
+        for line in regression["citation"]:
+            out.append(f"//   {line}")
+        out.append(f"// The source's segment masses add up to {fmt(regression['sum'], 5)} kg; each is"
+                   f" times {fmt(mass / regression['sum'], 5)},")
+        out.append("// so that they add up to the stated mass.")
+        if relative:
+            out.append("// Regression length ratios (each segment's length at this size over the male")
+            out.append("// segment's at 78 kg and 175.3 cm):")
+            sides = [s for s in ref.masses if not s.endswith("_r")]
+            line = "//  "
+            for segment in sides:
+                word = f" {segment.removesuffix('_l')} {fmt(relative[segment], 4)},"
+                if len(line) + len(word) > 96:
+                    out.append(line)
+                    line = "//  "
+                line += word
+            out.append(line.rstrip(",") + ".")
+    elif args.segment_mass:
         out.append("// Masses: the groups given above, each shared in male50's proportions"
                    + ("; every other" if rest_ref > 0 else "."))
         if rest_ref > 0:
             out.append(f"// segment times {fmt(rest / rest_ref, 5)} (what is left of the total).")
     else:
         out.append(f"// Masses times {fmt(mass_ratio, 5)}.")
-    out.append("// Each segment's moments of inertia times its mass ratio and its length ratio squared.")
+    out.append("// Each segment's moment about an axis times its mass ratio and the length ratios across it.")
     out.append("// Each joint's torque tables times M_j * L_j and its viscous damping times M_j * L_j^1.5,")
     out.append("// M_j the ratio of the mass beyond the joint and L_j the child segment's length ratio:")
     out.append("// they keep male50's joint angles under gravity and its damping ratios (an engineering")
     out.append("// estimate, not measured). Ranges of motion are male50's (adult) ones. Standing height")
     out.append(f"// from this file's geometry: {fmt(achieved, 5)} mm. What male50's header calls an estimate")
     out.append("// is one here too.")
+    if args.deflecting_chest:
+        out.append("//")
+        out.extend(f"// {line}" for line in CHEST_NOTES)
     out.append("//")
     out.append("// Frames as in male50: x forward, y left, z up, each segment frame at its centre of mass;")
     out.append("// all joint angles zero is the standing posture; the H-point is midway between the hips.")
@@ -310,21 +516,25 @@ def main():
                 new = m.group(1) + args.dummy
             m = re.search(r"mass = (" + NUMBER + r") kg", new)
             if m and segment:
-                new = new.replace(m.group(0), f"mass = {fmt(masses[segment])} kg")
+                new = new.replace(m.group(0), f"mass = {fmt(written[segment])} kg")
             m = re.search(r"inertia = (\(.*\)) kg\*m\^2", new)
             if m and segment:
-                factor = masses[segment] / ref.masses[segment] * length_scale(segment) ** 2
+                # A moment about one axis goes as the mass times the lengths across it.
+                f = axis_scale(segment)
+                mass_factor = written[segment] / ref.masses[segment]
+                factor = [mass_factor * f[1] * f[2], mass_factor * f[0] * f[2],
+                          mass_factor * f[0] * f[1]]
                 new = new.replace(m.group(1), scale_vector(VECTOR.fullmatch(m.group(1)), factor,
                                                            lambda v: fmt(v, 4)))
             if re.search(r"(semi_axes|center|h_point) = ", new) and " mm" in new:
-                factor = length_scale(segment) if segment else body_scale
+                factor = axis_scale(segment or ref.root)
                 new = re.sub(r"(semi_axes|center|h_point) = (\([^)]*\)) mm",
                              lambda g: f"{g.group(1)} = "
                              + scale_vector(VECTOR.fullmatch(g.group(2)), factor) + " mm", new)
             m = re.match(r"(\s*at (\w+) = )(\(.*\)) mm", new)
             if m:
                 new = m.group(1) + scale_vector(VECTOR.fullmatch(m.group(3)),
-                                                length_scale(m.group(2))) + " mm"
+                                                axis_scale(m.group(2))) + " mm"
             m = re.match(r"(\s*(?:flexure|twist|precession|nutation|spin) = )(\w+)$", new)
             if m and joint:
                 new = m.group(1) + renamed[(joint, m.group(2))]
@@ -334,6 +544,12 @@ def main():
                                   f"{fmt(float(m.group(1)) * viscous_factor(joint_child), 3)} N*m*s/rad")
             yield new
 
+    # The masses written: a deflecting chest's sternum is taken from the thorax (the joints
+    # above still hold up both).
+    written = dict(masses)
+    if args.deflecting_chest:
+        sternum_mass = STERNUM_MASS * masses["thorax"] / ref.masses["thorax"]
+        written["thorax"] -= sternum_mass
     lines = list(scaled_body_lines())
     out.append(f"body {args.name} {{")
     i = 0
@@ -355,6 +571,15 @@ def main():
         i = end + 1
     while out and not out[-1].strip():
         out.pop()
+    if args.deflecting_chest:
+        segment, function, joint = chest_text(axis_scale("thorax"),
+                                              masses["thorax"] / ref.masses["thorax"])
+        thorax = out.index("  segment thorax {")
+        thorax_end = out.index("  }", thorax)
+        out[thorax_end + 1:thorax_end + 1] = segment
+        joints = next(i for i, line in enumerate(out) if line.startswith("  // --- Joints "))
+        out[joints:joints] = function
+        out[-1:-1] = joint
     sys.stdout.write("\n".join(out) + "\n")
 
 

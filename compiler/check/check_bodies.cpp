@@ -318,8 +318,15 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
   }
   const bool bending = joint.type == JointType::kBall || joint.type == JointType::kPin ||
                        joint.type == JointType::kSlip;
+  // A slip joint slides: its generalized coordinate is a displacement and its generalized force a
+  // force, so its flexure is a force against the displacement and its damping, friction and lock
+  // levels are forces; the other joints turn, and theirs are torques against angles.
+  const bool slip = joint.type == JointType::kSlip;
+  const Dimension effort = slip ? dim::kForce : dim::kTorque;
   if (only_for("flexure", bending, "ball, pin and slip")) {
-    joint.flexure = ReadFunction(scope, bound, kind, "flexure").value_or(joint.flexure);
+    joint.flexure = (slip ? ReadFunction(scope, bound, kind, "flexure", dim::kLength, dim::kForce)
+                          : ReadFunction(scope, bound, kind, "flexure"))
+                        .value_or(joint.flexure);
   }
   if (only_for("twist", joint.type == JointType::kBall, "ball")) {
     joint.twist = ReadFunction(scope, bound, kind, "twist").value_or(joint.twist);
@@ -333,15 +340,19 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
   if (only_for("spin", euler, "euler")) {
     joint.spin = ReadFunction(scope, bound, kind, "spin").value_or(joint.spin);
   }
-  joint.viscous = ReadQuantity(scope, bound, kind, "viscous").value_or(joint.viscous);
-  joint.coulomb = ReadQuantity(scope, bound, kind, "coulomb").value_or(joint.coulomb);
+  joint.viscous =
+      ReadQuantity(scope, bound, kind, "viscous", slip ? dim::kDamping : dim::kRotationalDamping)
+          .value_or(joint.viscous);
+  joint.coulomb = ReadQuantity(scope, bound, kind, "coulomb", effort).value_or(joint.coulomb);
   joint.energy_loss = ReadQuantity(scope, bound, kind, "energy_loss").value_or(joint.energy_loss);
   if (auto stop = ReadQuantity(scope, bound, kind, "stop")) joint.stop = stop;
   if (auto stop = ReadQuantity(scope, bound, kind, "twist_stop")) joint.twist_stop = stop;
   joint.stop_impulse = ReadBool(bound, "stop_impulse").value_or(joint.stop_impulse);
   joint.restitution = ReadQuantity(scope, bound, kind, "restitution").value_or(joint.restitution);
-  if (auto level = ReadQuantity(scope, bound, kind, "lock_below")) joint.lock_below = level;
-  if (auto level = ReadQuantity(scope, bound, kind, "unlock_above")) joint.unlock_above = level;
+  if (auto level = ReadQuantity(scope, bound, kind, "lock_below", effort)) joint.lock_below = level;
+  if (auto level = ReadQuantity(scope, bound, kind, "unlock_above", effort)) {
+    joint.unlock_above = level;
+  }
   if (const ast::Statement* locked = One(bound, "locked")) {
     joint.locked_axes = 0;
     static const std::vector<std::string> kAxes = {"precession", "nutation", "spin"};
@@ -374,11 +385,12 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
   if (!level) level = One(bound, "unlock_above");
   if (level && !level->values.empty() && joint.lock_below && joint.unlock_above &&
       *joint.lock_below > *joint.unlock_above) {
-    Report(DiagnosticKind::kValueOutOfRange, level->values[0].range,
-           fmt::format("joint `{}` locks below {:g} N*m but unlocks above {:g} N*m", joint.name,
-                       *joint.lock_below, *joint.unlock_above),
-           "lock level above unlock level",
-           "the lock level must not exceed the unlock level, or the joint would chatter");
+    Report(
+        DiagnosticKind::kValueOutOfRange, level->values[0].range,
+        fmt::format("joint `{}` locks below {:g} {} but unlocks above {:g} {}", joint.name,
+                    *joint.lock_below, slip ? "N" : "N*m", *joint.unlock_above, slip ? "N" : "N*m"),
+        "lock level above unlock level",
+        "the lock level must not exceed the unlock level, or the joint would chatter");
   }
 }
 

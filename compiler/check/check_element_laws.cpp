@@ -91,11 +91,14 @@ void ElementLawChecker::CheckElementLaws() {
                                                         {joint.precession, "precession"},
                                                         {joint.nutation, "nutation"},
                                                         {joint.spin, "spin"}};
+    const bool slip = joint.type == JointType::kSlip;
     for (const auto& [id, slot] : slots) {
-      check(id, fmt::format("joint `{}` {}", joint.name, slot), joint.range, "torque", "angle",
-            "rad",
-            "a joint's torque function resists its angle: its value has the sign of the angle "
-            "(a motor is a `load`)",
+      check(id, fmt::format("joint `{}` {}", joint.name, slot), joint.range,
+            slip ? "force" : "torque", slip ? "displacement" : "angle", slip ? "m" : "rad",
+            slip ? "a slip joint's force function resists its displacement: its value has the sign "
+                   "of the displacement (a motor is a `load`)"
+                 : "a joint's torque function resists its angle: its value has the sign of the "
+                   "angle (a motor is a `load`)",
             true);
     }
   }

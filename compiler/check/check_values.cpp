@@ -618,10 +618,16 @@ bool CheckContext::CheckRange(const AttributeSpec& spec, double value, SourceRan
 
 std::optional<double> CheckContext::ReadQuantity(Scope& scope, const BoundBlock& bound,
                                                  BlockKind kind, AttributeKey name) {
+  return ReadQuantity(scope, bound, kind, name, SpecOfKey(kind, name)->dimension);
+}
+
+std::optional<double> CheckContext::ReadQuantity(Scope& scope, const BoundBlock& bound,
+                                                 BlockKind kind, AttributeKey name,
+                                                 Dimension dimension) {
   const AttributeSpec* spec = SpecOfKey(kind, name);
   const ast::Expr* expr = ValueOf(bound, name);
   if (!expr) return std::nullopt;
-  auto value = ExpectQuantity(scope, *expr, spec->dimension, name);
+  auto value = ExpectQuantity(scope, *expr, dimension, name);
   if (value && !CheckRange(*spec, *value, expr->range)) return std::nullopt;
   return value;
 }
@@ -646,11 +652,18 @@ std::optional<bool> CheckContext::ReadBool(const BoundBlock& bound, AttributeKey
 std::optional<FunctionId> CheckContext::ReadFunction(Scope& scope, const BoundBlock& bound,
                                                      BlockKind kind, AttributeKey name) {
   const AttributeSpec* spec = SpecOfKey(kind, name);
+  return ReadFunction(scope, bound, kind, name, spec->argument, spec->dimension);
+}
+
+std::optional<FunctionId> CheckContext::ReadFunction(Scope& scope, const BoundBlock& bound,
+                                                     BlockKind kind, AttributeKey name,
+                                                     Dimension argument, Dimension result) {
+  (void)SpecOfKey(kind, name);  // throws for an attribute `kind` does not have (a checker bug)
   const ast::Statement* statement = One(bound, name);
   if (!statement) return std::nullopt;
   const ast::Expr* expr = SingleValue(*statement);
   if (!expr) return std::nullopt;
-  return ExpectFunction(scope, *statement, *expr, spec->argument, spec->dimension, name);
+  return ExpectFunction(scope, *statement, *expr, argument, result, name);
 }
 
 }  // namespace sled::compiler::internal

@@ -190,6 +190,12 @@ class CheckContext {
   std::optional<bool> ReadBool(const BoundBlock& bound, AttributeKey name);
   std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
                                          AttributeKey name);
+  // The same with dimensions other than the schema's (a slip joint's `flexure` is a force against
+  // a displacement, its `viscous` a force per speed); the schema's range still applies.
+  std::optional<double> ReadQuantity(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                     AttributeKey name, Dimension dimension);
+  std::optional<FunctionId> ReadFunction(Scope& scope, const BoundBlock& bound, BlockKind kind,
+                                         AttributeKey name, Dimension argument, Dimension result);
 
   // --- declarations, which every block kind may contain (scene: check_scene.cpp; bodies:
   // check_bodies.cpp).

@@ -155,15 +155,20 @@ void LintChecker::RunLints() {
       const bool covers_negative =
           function.kind == Function::Kind::kTable && function.points.front()[0] < 0;
       if (covers_negative || at_zero == 0.0 || !std::isfinite(at_zero)) continue;
+      const bool slip = joint.type == JointType::kSlip;
+      const char* effort = slip ? "force" : "torque";
+      const char* unit = slip ? "N" : "N*m";
+      const char* coordinate = slip ? "displacement" : "angle";
       Report(DiagnosticKind::kJointTorqueNotZeroAtZero,
              function.range.valid() ? function.range : joint.range,
-             fmt::format("the {} torque of joint `{}` is {:g} N*m at zero angle: it resists the "
-                         "angle, so it jumps from {:g} to {:g} N*m as the angle passes zero",
-                         slot, joint.name, at_zero, -at_zero, at_zero),
-             "not zero at zero angle",
-             fmt::format("a joint's torque functions resist its angle; for a torque that drives "
-                         "the joint (a motor), write `load NAME on {} {{ torque = ... }}`",
-                         joint.name));
+             fmt::format("the {} {} of joint `{}` is {:g} {} at zero {}: it resists the {}, so it "
+                         "jumps from {:g} to {:g} {} as the {} passes zero",
+                         slot, effort, joint.name, at_zero, unit, coordinate, coordinate, -at_zero,
+                         at_zero, unit, coordinate),
+             fmt::format("not zero at zero {}", coordinate),
+             fmt::format("a joint's {} functions resist its {}; for a {} that drives the joint "
+                         "(a motor), write `load NAME on {} {{ {} = ... }}`",
+                         effort, coordinate, effort, joint.name, effort));
     }
   }
 

@@ -153,13 +153,16 @@ std::vector<BlockSpec> MakeSpecs() {
   specs.push_back({BlockKind::kEllipsoid, ellipsoid_attributes, {}});
   // A joint's characteristics: what an `override` of an imported body's joint may change.
   const std::vector<AttributeSpec> joint_characteristics = {
-      Function("flexure", d::kAngle, d::kTorque, "flexure torque against flexure angle"),
+      Function(
+          "flexure", d::kAngle, d::kTorque,
+          "flexure torque against flexure angle; a slip joint's force against its displacement"),
       Function("twist", d::kAngle, d::kTorque, "twist torque against twist angle"),
       Function("precession", d::kAngle, d::kTorque, "Euler joint: precession torque"),
       Function("nutation", d::kAngle, d::kTorque, "Euler joint: nutation torque"),
       Function("spin", d::kAngle, d::kTorque, "Euler joint: spin torque"),
-      NonNegative("viscous", d::kRotationalDamping, "viscous torque coefficient"),
-      NonNegative("coulomb", d::kTorque, "Coulomb friction torque"),
+      NonNegative("viscous", d::kRotationalDamping,
+                  "viscous torque coefficient (a slip joint's: force per speed)"),
+      NonNegative("coulomb", d::kTorque, "Coulomb friction torque (a slip joint's: force)"),
       Fraction("energy_loss", "fraction of energy dissipated in the joint spring"),
       Quantity("stop", d::kAngle, "flexure angle of the joint stop", false, 0.0, 3.1416, true),
       Quantity("twist_stop", d::kAngle, "twist angle of the joint stop", false, 0.0, 3.1416, true),
