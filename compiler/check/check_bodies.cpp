@@ -319,8 +319,9 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
   const bool bending = joint.type == JointType::kBall || joint.type == JointType::kPin ||
                        joint.type == JointType::kSlip;
   // A slip joint slides: its generalized coordinate is a displacement and its generalized force a
-  // force, so its flexure is a force against the displacement and its damping, friction and lock
-  // levels are forces; the other joints turn, and theirs are torques against angles.
+  // force, so its flexure is a force against the displacement, its stop a displacement and its
+  // damping, friction and lock levels are forces; the other joints turn, and theirs are torques
+  // against angles.
   const bool slip = joint.type == JointType::kSlip;
   const Dimension effort = slip ? dim::kForce : dim::kTorque;
   if (only_for("flexure", bending, "ball, pin and slip")) {
@@ -345,7 +346,9 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
           .value_or(joint.viscous);
   joint.coulomb = ReadQuantity(scope, bound, kind, "coulomb", effort).value_or(joint.coulomb);
   joint.energy_loss = ReadQuantity(scope, bound, kind, "energy_loss").value_or(joint.energy_loss);
-  if (auto stop = ReadQuantity(scope, bound, kind, "stop")) joint.stop = stop;
+  if (auto stop = ReadQuantity(scope, bound, kind, "stop", slip ? dim::kLength : dim::kAngle)) {
+    joint.stop = stop;
+  }
   if (auto stop = ReadQuantity(scope, bound, kind, "twist_stop")) joint.twist_stop = stop;
   joint.stop_impulse = ReadBool(bound, "stop_impulse").value_or(joint.stop_impulse);
   joint.restitution = ReadQuantity(scope, bound, kind, "restitution").value_or(joint.restitution);

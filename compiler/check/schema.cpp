@@ -164,7 +164,10 @@ std::vector<BlockSpec> MakeSpecs() {
                   "viscous torque coefficient (a slip joint's: force per speed)"),
       NonNegative("coulomb", d::kTorque, "Coulomb friction torque (a slip joint's: force)"),
       Fraction("energy_loss", "fraction of energy dissipated in the joint spring"),
-      Quantity("stop", d::kAngle, "flexure angle of the joint stop", false, 0.0, 3.1416, true),
+      Quantity(
+          "stop", d::kAngle,
+          "flexure angle of the joint stop (a slip joint's: its displacement, at most 3.1416 m)",
+          false, 0.0, 3.1416, true),
       Quantity("twist_stop", d::kAngle, "twist angle of the joint stop", false, 0.0, 3.1416, true),
       Bool("stop_impulse", "an impulse (with restitution) when the joint hits its stop"),
       Fraction("restitution", "coefficient of restitution at the stop"),

@@ -186,7 +186,9 @@ class BodyReader : public DeckFields {
                  "spring to its precession, nutation and spin axes in that order");
     } else if (std::abs(jtype) >= 5) {
       joint.type = JointType::kSlip;
-      Unverified(line1, 11, 14, "a slip joint: the slip direction is taken as sled's default axis");
+      Unverified(line1, 11, 14,
+                 "a slip joint: the slip direction is taken as sled's default axis, and its B.4 "
+                 "spring, stop, damping and friction as a force against its displacement");
     } else if (jtype == 0) {
       joint.type = JointType::kBall;
     } else {

@@ -24,7 +24,8 @@ namespace sled::lang::legacy::mapping {
 class DeckMapper {
  public:
   // How a function is used: its argument and result units depend on it.
-  enum class Use { kContact, kBelt, kJoint };
+  // kSlip: a slip joint's spring, a force against its displacement along the slip axis.
+  enum class Use { kContact, kBelt, kJoint, kSlip };
 
   DeckMapper(const Deck& deck, DiagnosticConsumer& diagnostics)
       : deck_(deck),
@@ -64,9 +65,11 @@ class DeckMapper {
   // A friction coefficient from a constant function; zero for no function.
   std::optional<double> Friction(const Ref& ref);
   void MapRunSettings(ast::Block& body);
-  ast::Expr Torque(const JointSpring& spring, const Ref& owner, std::string_view angle_unit);
+  ast::Expr SpringPolynomial(const JointSpring& spring, const std::string& value_unit,
+                             const std::string& argument_unit);
   bool HasSpring(const JointSpring& spring) const;
-  void AddSpring(ast::Statement& joint, const char* attribute, const JointSpring& spring);
+  void AddSpring(ast::Statement& joint, const char* attribute, const JointSpring& spring,
+                 bool slip = false);
   void MapBody(ast::Block& scenario);
   void MapVehicles(ast::Block& scenario);
   void MapSurfaces(ast::Block& scenario);

@@ -163,9 +163,9 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
   if (found == function_names_.end()) {
     CheckSign(*function, ref, use);
     std::string name = NameOf(function->title, fmt::format("function_{}", function->number), taken_,
-                              use == Use::kContact ? "force"
-                              : use == Use::kJoint ? "torque"
-                                                   : "webbing");
+                              use == Use::kContact || use == Use::kSlip ? "force"
+                              : use == Use::kJoint                      ? "torque"
+                                                                        : "webbing");
     found = function_names_.emplace(key, name).first;
     uses_.push_back({function, use, name, *unloading});
   }
@@ -177,7 +177,7 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
 // torque has the sign of its angle. Constants and tables by their values, a polynomial near zero
 // by its lowest non-zero coefficient.
 void DeckMapper::CheckSign(const FunctionCard& function, const Ref& ref, Use use) {
-  const bool both_ways = use == Use::kJoint;
+  const bool both_ways = use == Use::kJoint || use == Use::kSlip;
   std::string wrong;
   switch (function.form) {
     case FunctionCard::Form::kConstant:
@@ -200,10 +200,11 @@ void DeckMapper::CheckSign(const FunctionCard& function, const Ref& ref, Use use
       break;
   }
   if (wrong.empty()) return;
-  const char* law = use == Use::kJoint ? "a joint's torque, which has the sign of the angle"
-                    : use == Use::kBelt
-                        ? "a belt's force, which is positive for every positive strain"
-                        : "a contact's force, which is positive for every positive deflection";
+  const char* law =
+      use == Use::kJoint  ? "a joint's torque, which has the sign of the angle"
+      : use == Use::kSlip ? "a slip joint's force, which has the sign of the displacement"
+      : use == Use::kBelt ? "a belt's force, which is positive for every positive strain"
+                          : "a contact's force, which is positive for every positive deflection";
   Diagnostic diagnostic = MakeDiagnostic(
       DiagnosticKind::kDeckInvalidValue, function.where,
       fmt::format("function {} (E.1, line {}) pushes the wrong way: {}; card {} uses it as {}",
@@ -256,19 +257,18 @@ void DeckMapper::MapRunSettings(ast::Block& body) {
   body.statements.push_back(std::move(integrator));
 }
 
-ast::Expr DeckMapper::Torque(const JointSpring& spring, const Ref& owner,
-                             std::string_view angle_unit) {
-  (void)owner;
+// A B.4 spring's linear, quadratic and cubic terms as a polynomial of the joint's coordinate.
+ast::Expr DeckMapper::SpringPolynomial(const JointSpring& spring, const std::string& value_unit,
+                                       const std::string& argument_unit) {
   std::vector<std::pair<std::string, ast::Expr>> coefficients;
   coefficients.emplace_back("", Number(0));
-  coefficients.emplace_back("", Number(spring.linear, F + "*" + L + "/" + std::string(angle_unit)));
+  coefficients.emplace_back("", Number(spring.linear, value_unit + "/" + argument_unit));
   if (spring.quadratic != 0 || spring.cubic != 0) {
-    coefficients.emplace_back(
-        "", Number(spring.quadratic, F + "*" + L + "/" + std::string(angle_unit) + "^2"));
+    coefficients.emplace_back("",
+                              Number(spring.quadratic, value_unit + "/" + argument_unit + "^2"));
   }
   if (spring.cubic != 0) {
-    coefficients.emplace_back(
-        "", Number(spring.cubic, F + "*" + L + "/" + std::string(angle_unit) + "^3"));
+    coefficients.emplace_back("", Number(spring.cubic, value_unit + "/" + argument_unit + "^3"));
   }
   return Call("polynomial", std::move(coefficients));
 }
@@ -278,14 +278,15 @@ bool DeckMapper::HasSpring(const JointSpring& spring) const {
          spring.cubic != 0;
 }
 
-void DeckMapper::AddSpring(ast::Statement& joint, const char* attribute,
-                           const JointSpring& spring) {
+void DeckMapper::AddSpring(ast::Statement& joint, const char* attribute, const JointSpring& spring,
+                           bool slip) {
   if (spring.function.number != 0) {
-    if (auto function = FunctionFor(spring.function, Use::kJoint)) {
+    if (auto function = FunctionFor(spring.function, slip ? Use::kSlip : Use::kJoint)) {
       Add(joint, Attribute(attribute, std::move(*function)));
     }
   } else if (HasSpring(spring)) {
-    Add(joint, Attribute(attribute, Torque(spring, spring.function, "deg")));
+    Add(joint, Attribute(attribute, slip ? SpringPolynomial(spring, F, L)
+                                         : SpringPolynomial(spring, F + "*" + L, "deg")));
   }
 }
 
@@ -355,22 +356,29 @@ void DeckMapper::MapBody(ast::Block& scenario) {
       axes.target = Path(child);
       Add(joint, std::move(axes));
     }
+    // A slip joint's coordinate is a length: its spring, stop, damping and friction are a force
+    // against its displacement, read in the deck's force and length units.
+    const bool slip = card.type == JointType::kSlip;
+    const std::string coordinate_unit = slip ? L : std::string("deg");
     if (card.type == JointType::kEuler) {
       AddSpring(joint, "precession", card.flexure);
       AddSpring(joint, "nutation", card.twist);
       AddSpring(joint, "spin", card.spin);
     } else {
-      AddSpring(joint, "flexure", card.flexure);
+      AddSpring(joint, "flexure", card.flexure, slip);
       if (card.type == JointType::kBall) AddSpring(joint, "twist", card.twist);
     }
     if (card.flexure.energy_loss != 0)
       Add(joint, Attribute("energy_loss", Number(card.flexure.energy_loss)));
-    if (card.flexure.stop != 0) Add(joint, Attribute("stop", Number(card.flexure.stop, "deg")));
+    if (card.flexure.stop != 0)
+      Add(joint, Attribute("stop", Number(card.flexure.stop, coordinate_unit)));
     if (card.type == JointType::kBall && card.twist.stop != 0)
       Add(joint, Attribute("twist_stop", Number(card.twist.stop, "deg")));
     if (card.viscous != 0)
-      Add(joint, Attribute("viscous", Number(card.viscous, F + "*" + L + "*" + T + "/deg")));
-    if (card.coulomb != 0) Add(joint, Attribute("coulomb", Number(card.coulomb, F + "*" + L)));
+      Add(joint, Attribute("viscous", Number(card.viscous, (slip ? F : F + "*" + L) + "*" + T +
+                                                               "/" + coordinate_unit)));
+    if (card.coulomb != 0)
+      Add(joint, Attribute("coulomb", Number(card.coulomb, slip ? F : F + "*" + L)));
     if (card.restitution != 0) Add(joint, Attribute("restitution", Number(card.restitution)));
     body.block->statements.push_back(std::move(joint));
   }
@@ -420,11 +428,13 @@ void DeckMapper::MapFunctions(ast::Block& scenario) {
 ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use use,
                                              const std::string& name,
                                              const FunctionUnloading& unloading) {
-  const std::string argument_unit = use == Use::kContact ? L : use == Use::kJoint ? "deg" : "";
+  const std::string argument_unit = use == Use::kContact || use == Use::kSlip ? L
+                                    : use == Use::kJoint                      ? "deg"
+                                                                              : "";
   const std::string result_unit = use == Use::kJoint ? F + "*" + L : F;
-  const char* argument = use == Use::kContact ? "deflection"
-                         : use == Use::kJoint ? "angle"
-                                              : "strain";
+  const char* argument = use == Use::kContact || use == Use::kSlip ? "deflection"
+                         : use == Use::kJoint                      ? "angle"
+                                                                   : "strain";
   const char* result = use == Use::kJoint ? "torque" : "force";
   ast::Statement statement =
       Declaration("function", Path(name),

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "legacy_test_deck.h"
 #include "sled/compile.h"
@@ -62,6 +63,33 @@ TEST(LegacyUnits, TheUnverifiedPulseNamesItsUnits) {
       converted.Has("VIPS is read in mph (the V.3 input description's unit, 1 mph = "
                     "0.44704 m/s) and VTIME in s (UNITT)"))
       << converted.All();
+}
+
+// A slip joint's coordinate is a length: its B.4 spring and stop and its B.5 damping read as a
+// force against the displacement (lbf/in, in, lbf*s/in), which the checker takes for a slip joint
+// (it refuses a torque law there). The seated occupant's left elbow made a slip joint (JTYPE 5,
+// without its torsion spring):
+// its spring of 20 is 20 lbf/in = 20 * 4.4482216152605 / 0.0254 = 3502.5367 N/m.
+TEST(LegacyUnits, ASlipJointsSpringIsAForceAgainstItsDisplacement) {
+  std::vector<std::string> lines =
+      deck_testing::Lines(ReadDeckFile(kLegacyDir + "seated_occupant.ain"));
+  const std::size_t elbow = deck_testing::LineStarting(lines, "LE      14   0");
+  lines[elbow - 1].replace(10, 4, "   5");
+  // Its B.4.a card (the 14th, after the last B.3.b) keeps the flexure spring, columns 1-36; a
+  // slip joint has no torsion spring.
+  lines[elbow + 14].resize(36);
+  ConvertOptions options;
+  options.approximate_airbags = true;
+  const Converted converted = ConvertText(deck_testing::Join(lines), options);
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  EXPECT_TRUE(converted.Has("force against its displacement")) << converted.All();
+  EXPECT_NE(converted.text.find("slip(lua -> lla)"), std::string::npos)
+      << converted.text;
+  EXPECT_NE(converted.text.find("flexure = polynomial(0, 20 lbf/in)"), std::string::npos)
+      << converted.text;
+  EXPECT_NE(converted.text.find("stop = 90 in"), std::string::npos) << converted.text;
+  const Compilation compiled = Compile(Source::Text(converted.text, kLegacyDir + "converted.sled"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Render();
 }
 
 }  // namespace

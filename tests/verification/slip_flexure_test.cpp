@@ -110,7 +110,7 @@ TEST(SlipFlexure, ADampedFlexureComesToRestAtTheStaticDeflection) {
 TEST(SlipFlexure, RotationalLawsOnASlipJointAreRefused) {
   for (const std::string& line :
        {std::string("flexure = 2 N*m/deg"), std::string("viscous = 1 N*m*s/rad"),
-        std::string("coulomb = 2 N*m"),
+        std::string("coulomb = 2 N*m"), std::string("stop = 10 deg"),
         std::string("flexure = table(angle -> torque) { 0 deg -> 0 N*m  10 deg -> 5 N*m }")}) {
     SCOPED_TRACE(line);
     const SceneRun run = RunText(Slide(line));
