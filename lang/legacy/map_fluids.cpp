@@ -170,10 +170,11 @@ void DeckMapper::MapWind(ast::Block& scenario) {
       }
     }
     const double norm = Length(direction);
+    for (double& component : direction) component /= norm;  // unit: a row along it keeps its value
     for (const auto& row : wind->rows) {
       const Vec3 force{row[1], row[2], row[3]};
       const double along =
-          (force[0] * direction[0] + force[1] * direction[1] + force[2] * direction[2]) / norm;
+          force[0] * direction[0] + force[1] * direction[1] + force[2] * direction[2];
       if (std::abs(Length(force) - along) > 1e-9 * std::max(Length(force), 1e-300)) {
         Report(DiagnosticKind::kDeckNotExpressible, Ref{wind->number, wind->where, "E.6.d"},
                fmt::format("card E.6.d (wind function {}): the pressure turns (FX, FY, FZ are "
@@ -194,8 +195,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
     pressure.has_value = true;
     pressure.values.push_back(Call("table", {{"", ast::MakeArrow(std::move(signature))}}));
     for (const auto& row : wind->rows) {
-      const double along =
-          (row[1] * direction[0] + row[2] * direction[1] + row[3] * direction[2]) / norm;
+      const double along = row[1] * direction[0] + row[2] * direction[1] + row[3] * direction[2];
       Add(pressure, Row(Number(row[0], T), Number(along, F + "/" + L + "^2")));
     }
     if (wind->rows.size() == 1) {
@@ -207,8 +207,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
     }
     scenario.statements.push_back(std::move(pressure));
     Add(block, Attribute("pressure", Path(name)));
-    Add(block, Attribute("direction", Direction({direction[0] / norm, direction[1] / norm,
-                                                 direction[2] / norm})));
+    Add(block, Attribute("direction", Direction(direction)));
     Report(DiagnosticKind::kDeckUnverifiedField, Ref{wind->number, wind->where, "E.6.a"},
            fmt::format("card E.6.a (wind function {}): the table is read against the run's "
                        "time: ATB's against the time since the ellipsoid first crossed its "
