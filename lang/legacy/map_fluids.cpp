@@ -48,7 +48,7 @@ const WindFunctionCard* DeckMapper::WindFunction(const Ref& ref) {
 // A body segment the wind or water acts on, by deck number, or empty after reporting a bad number
 // or a segment without a contact ellipsoid.
 std::string DeckMapper::SegmentInFluid(const Ref& ref, std::string_view fluid) {
-  const std::string path = Segment(ref, "segment");
+  std::string path = Segment(ref, "segment");
   if (path.empty()) return path;
   const SegmentCard& segment = deck_.segments[static_cast<std::size_t>(ref.number - 1)];
   if (Length(segment.semi_axes) == 0) {
