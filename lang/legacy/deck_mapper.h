@@ -83,7 +83,8 @@ class DeckMapper {
   // E.6, F.7 and F.9 (map_fluids.cpp): `wind { ... }` and `water { ... }`.
   const WindFunctionCard* WindFunction(const Ref& ref);
   bool IsGround(int number) const;
-  std::string SegmentInFluid(const Ref& ref, std::string_view fluid);
+  std::string SegmentInFluid(const Ref& ref, const Ref& ellipsoid, std::string_view fluid,
+                             std::string_view field);
   void MapWind(ast::Block& scenario);
   void MapWater(ast::Block& scenario);
   void MapFunctions(ast::Block& scenario);

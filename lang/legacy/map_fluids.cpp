@@ -45,9 +45,20 @@ const WindFunctionCard* DeckMapper::WindFunction(const Ref& ref) {
   return nullptr;
 }
 
-// A body segment the wind or water acts on, by deck number, or empty after reporting a bad number
-// or a segment without a contact ellipsoid.
-std::string DeckMapper::SegmentInFluid(const Ref& ref, std::string_view fluid) {
+// A body segment the wind or water acts on, by deck number, or empty after reporting a bad number,
+// an ellipsoid other than the segment's own (0 names it too) or a segment without a contact
+// ellipsoid; `field` names the ellipsoid's field for the help.
+std::string DeckMapper::SegmentInFluid(const Ref& ref, const Ref& ellipsoid, std::string_view fluid,
+                                       std::string_view field) {
+  if (ellipsoid.number != 0 && ellipsoid.number != ref.number) {
+    Report(DiagnosticKind::kDeckNotExpressible, ellipsoid,
+           fmt::format("card {}: ellipsoid {} of segment {}, not the segment's own", ellipsoid.card,
+                       ellipsoid.number, ref.number),
+           fmt::format("sled's {} acts on a segment's own contact ellipsoid: set {} to the "
+                       "segment's number",
+                       fluid, field));
+    return {};
+  }
   std::string path = Segment(ref, "segment");
   if (path.empty()) return path;
   const SegmentCard& segment = deck_.segments[static_cast<std::size_t>(ref.number - 1)];
@@ -82,15 +93,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
              "same MWSEG(5) and MWSEG(6)");
       return;
     }
-    if (card.ellipsoid.number != 0 && card.ellipsoid.number != card.segment.number) {
-      Report(DiagnosticKind::kDeckNotExpressible, card.ellipsoid,
-             fmt::format("card {}: ellipsoid {}, not the segment's own", card.ellipsoid.card,
-                         card.ellipsoid.number),
-             "sled's wind pushes a segment's own contact ellipsoid: set MWSEG(2) to the "
-             "segment's number");
-      return;
-    }
-    const std::string path = SegmentInFluid(card.segment, "wind");
+    const std::string path = SegmentInFluid(card.segment, card.ellipsoid, "wind", "MWSEG(2)");
     if (path.empty()) return;
     segments.push_back(path);
   }
@@ -230,16 +233,8 @@ void DeckMapper::MapWater(ast::Block& scenario) {
   std::vector<std::string> segments;
   std::optional<double> drag;
   for (const WaterCard::Ellipsoid& ellipsoid : water.ellipsoids) {
-    if (ellipsoid.ellipsoid.number != ellipsoid.segment.number) {
-      Report(DiagnosticKind::kDeckNotExpressible, ellipsoid.ellipsoid,
-             fmt::format("card {}: ellipsoid {} of segment {}, not the segment's own",
-                         ellipsoid.ellipsoid.card, ellipsoid.ellipsoid.number,
-                         ellipsoid.segment.number),
-             "sled's water acts on a segment's own contact ellipsoid: name it by the segment's "
-             "number");
-      return;
-    }
-    const std::string path = SegmentInFluid(ellipsoid.segment, "water");
+    const std::string path =
+        SegmentInFluid(ellipsoid.segment, ellipsoid.ellipsoid, "water", "NWSE(1)");
     if (path.empty()) return;
     if (drag && *drag != ellipsoid.drag) {
       Report(DiagnosticKind::kDeckNotExpressible, ellipsoid.ellipsoid,
