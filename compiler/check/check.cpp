@@ -502,6 +502,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   CheckLoads();
   scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
+  if (scenario_statement_) CheckFluids(*scene_scope_);
   CheckInitialConditions();
   CheckHeldInitialConditions();
   CheckLoadsInThePlane();

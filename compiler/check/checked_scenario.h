@@ -244,6 +244,21 @@ struct AppliedLoad {
   SourceRange range;
 };
 
+// A `wind` or `water` block (runtime/forces/fluid_forces.h): the fluid and the segments whose
+// contact ellipsoids it acts on; SI units.
+struct Fluid {
+  enum class Medium { kWind, kWater };
+  Medium medium = Medium::kWind;
+  FunctionId speed = -1;     // wind: time -> speed
+  FunctionId pressure = -1;  // wind, instead of a speed: time -> pressure of a blast
+  Vec3 direction{1, 0, 0};   // wind: unit, where the air goes, in the ground frame
+  double density = 0.0;
+  double drag = 1.0;   // drag coefficient
+  double level = 0.0;  // water: height of the surface above the ground origin, against gravity
+  std::vector<int> segments;
+  SourceRange range;
+};
+
 struct Constraint {
   enum class Kind { kFixedPoint, kFixedDistance, kRolling, kSliding };
   std::string name;
@@ -423,6 +438,7 @@ struct CheckedScenario {
   std::vector<Airbag> airbags;
   std::vector<SpringDamper> springs;
   std::vector<AppliedLoad> loads;
+  std::vector<Fluid> fluids;
   std::vector<Constraint> constraints;
   std::vector<InitialCondition> initial_conditions;
   std::vector<OutputRequest> outputs;

@@ -69,6 +69,16 @@ class LoadChecker : protected virtual CheckContext {
   void CheckLoadsInThePlane();
 };
 
+// Wind and water (check_fluids.cpp): E0425 for what the model cannot take.
+class FluidChecker : protected virtual CheckContext {
+ public:
+  using CheckContext::CheckContext;
+
+ protected:
+  // After CheckRunSettings: water needs the gravity, and neither takes symmetry.
+  void CheckFluids(Scope& scope);
+};
+
 // The scenario's run settings: time, integrator, restart, settle, symmetry (check_settings.cpp).
 class SettingsChecker : protected virtual CheckContext {
  public:
@@ -148,6 +158,7 @@ class Checker final : SceneChecker,
                       BodyChecker,
                       RestraintChecker,
                       LoadChecker,
+                      FluidChecker,
                       SettingsChecker,
                       InitialChecker,
                       OutputChecker,
@@ -161,6 +172,7 @@ class Checker final : SceneChecker,
         BodyChecker(sources, options),
         RestraintChecker(sources, options),
         LoadChecker(sources, options),
+        FluidChecker(sources, options),
         SettingsChecker(sources, options),
         InitialChecker(sources, options),
         OutputChecker(sources, options),

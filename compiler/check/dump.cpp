@@ -167,6 +167,14 @@ std::string Dump(const CheckedScenario& s) {
                      FunctionText(s, l.force), V(l.direction), V(l.point),
                      FunctionText(s, l.torque), V(l.axis), l.in_segment ? "segment" : "ground"));
   }
+  for (const Fluid& f : s.fluids) {
+    std::string segments;
+    for (int segment : f.segments) segments += fmt::format(" #{}", segment);
+    line(fmt::format("{} speed {} pressure {} direction {} density {} drag {} level {} segments{}",
+                     f.medium == Fluid::Medium::kWind ? "wind" : "water", FunctionText(s, f.speed),
+                     FunctionText(s, f.pressure), V(f.direction), f.density, f.drag, f.level,
+                     segments));
+  }
   for (const Constraint& c : s.constraints) {
     line(fmt::format("constraint {} kind {} {} {} -> {} {} distance {} axis {}", c.name,
                      static_cast<int>(c.kind), FrameText(s, c.first), V(c.point_in_first),

@@ -42,8 +42,9 @@ AttributeSpec Reference(std::string_view name, std::string_view kinds, std::stri
                         bool required = false) {
   return {name, V::kReference, {}, required, -kInf, kInf, false, kinds, {}, 0, false, doc};
 }
-AttributeSpec References(std::string_view name, std::string_view kinds, std::string_view doc) {
-  return {name, V::kReferences, {}, false, -kInf, kInf, false, kinds, {}, 0, false, doc};
+AttributeSpec References(std::string_view name, std::string_view kinds, std::string_view doc,
+                         bool required = false) {
+  return {name, V::kReferences, {}, required, -kInf, kInf, false, kinds, {}, 0, false, doc};
 }
 AttributeSpec Function(std::string_view name, Dimension argument, Dimension result,
                        std::string_view doc, bool required = false) {
@@ -80,6 +81,10 @@ std::vector<BlockSpec> MakeSpecs() {
       {"spring", BlockKind::kSpring, "a spring-damper between two frames"},
       {"load", BlockKind::kLoad,
        "an applied force or torque, a function of time, on a segment or across a joint"},
+      {"wind", BlockKind::kWind,
+       "air moving at a speed that is a function of time: drag on the segments' ellipsoids"},
+      {"water", BlockKind::kWater,
+       "still water below a level surface: buoyancy and drag on the segments' ellipsoids"},
       {"tension", BlockKind::kSpring, "a tension-only element between two frames"},
       {"constraint", BlockKind::kConstraint, "a fixed-point, fixed-distance or sliding constraint"},
       {"initial", BlockKind::kInitial, "initial position, orientation, velocity or joint angles"},
@@ -265,6 +270,27 @@ std::vector<BlockSpec> MakeSpecs() {
               "with the segment")},
        {}});
   specs.push_back(
+      {BlockKind::kWind,
+       {Function("speed", d::kTime, d::kVelocity, "the air's speed against time"),
+        Function("pressure", d::kTime, d::kPressure,
+                 "instead of `speed`: a blast's pressure against time, whatever the body's "
+                 "motion"),
+        Vector("direction", d::kDimensionless, "where the air goes, in the ground frame", true),
+        Positive("density", d::kDensity, "density of the air; default 1.225 kg/m^3"),
+        NonNegative("drag", d::kDimensionless, "drag coefficient of the ellipsoids; default 1"),
+        References("segments", "segment", "the segments whose contact ellipsoids the wind pushes",
+                   true)},
+       {}});
+  specs.push_back(
+      {BlockKind::kWater,
+       {Quantity("level", d::kLength,
+                 "height of the surface above the ground origin, against gravity; default 0"),
+        Positive("density", d::kDensity, "density of the water; default 1000 kg/m^3"),
+        NonNegative("drag", d::kDimensionless, "drag coefficient of the ellipsoids; default 1"),
+        References("segments", "segment", "the segments whose contact ellipsoids float or sink",
+                   true)},
+       {}});
+  specs.push_back(
       {BlockKind::kConstraint,
        {AtFrame("constrained point in one of the two frames"),
         NonNegative("distance", d::kLength, "fixed distance; default: the initial distance"),
@@ -374,6 +400,10 @@ std::string_view BlockName(BlockKind kind) {
       return "restart";
     case BlockKind::kSettle:
       return "settle";
+    case BlockKind::kWind:
+      return "wind";
+    case BlockKind::kWater:
+      return "water";
     case BlockKind::kOverride:
       return "override";
     case BlockKind::kSymmetry:

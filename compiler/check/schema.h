@@ -33,6 +33,8 @@ enum class BlockKind {
   kSpring,
   kConstraint,
   kLoad,
+  kWind,
+  kWater,
   kInitial,
   kOutput,
   kTime,

@@ -335,7 +335,9 @@ int RunCommand(const RunCommandOptions& options) {
         "end kinetic {:.4g} J, absorbed {:.4g} J, prescribed work {:.4g} J{})\n",
         100 * energy.relative(), energy.largest_residual, energy.scale, energy.kinetic,
         energy.absorbed, energy.prescribed_work,
-        model.loads.size() > 0 ? fmt::format(", applied work {:.4g} J", energy.applied_work) : "");
+        model.loads.size() + model.fluids.size() > 0
+            ? fmt::format(", applied work {:.4g} J", energy.applied_work)
+            : "");
   }
   PrintCriteria(result.criteria);
   if (!write_errors.empty()) return kExitInputErrors;

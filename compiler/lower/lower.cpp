@@ -168,6 +168,7 @@ runtime::Model Lower(const CheckedScenario& scenario, const lang::SourceManager&
   lowering::LowerShapes(lowering);
   lowering::LowerAirbags(lowering);
   lowering::LowerScene(lowering);
+  lowering::LowerFluids(lowering);
   lowering::LowerBelts(lowering);
   lowering::LowerCriteria(lowering);
   lowering::LowerInitialState(lowering);

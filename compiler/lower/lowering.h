@@ -144,5 +144,7 @@ void LowerCriteria(Lowering& lowering);
 // The shapes the animation draws for segments beyond their contact ellipsoids (after
 // LowerContacts).
 void LowerShapes(Lowering& lowering);
+// The wind and water on the segments' contact ellipsoids (runtime/forces/fluid_forces.h).
+void LowerFluids(Lowering& lowering);
 
 }  // namespace sled::compiler::lowering

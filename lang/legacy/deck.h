@@ -194,6 +194,47 @@ struct ContactCard {
   bool output = false;
 };
 
+// E.6 (D.1.a NWINDF of them, after the E cards): a wind-force function. With RK (the ratio of
+// specific heats) not 0, the dynamic pressure of segment NSV's velocity relative to NSR's, air of
+// density RK PR / C^2; with RK 0, a table of time against a pressure vector (FX, FY, FZ), also
+// read as the drag coefficient against time (FX) when F.7.b names it as one.
+struct WindFunctionCard {
+  std::uint32_t line = 0;
+  SourceRange where;  // E.6.a columns 1-4
+  int number = 0;
+  std::string title;
+  double heat_ratio = 0, sonic_speed = 0, pressure = 0;  // RK, C, PR
+  Ref moving, reference;                                 // NSV, NSR (0: the ground)
+  std::uint32_t table_line = 0;                          // E.6.d's first card
+  std::vector<std::array<double, 4>> rows;               // RK 0: T, FX, FY, FZ
+};
+
+// F.7.b: a segment in the wind, its ellipsoid pushed where it crosses a plane.
+struct WindCard {
+  std::uint32_t line = 0;
+  Ref segment;  // |MWSEG(1)|; negative: ATB's grid method
+  bool grid = false;
+  Ref ellipsoid;      // MWSEG(2)
+  Ref plane_segment;  // MWSEG(3)
+  Ref plane;          // MWSEG(4)
+  Ref force;          // MWSEG(5): an E.6 function
+  Ref drag;           // MWSEG(6): an E.6 table of the drag coefficient, 0: Cd = 1
+};
+
+// F.9.a to F.9.m (D.1.a NWATER): still water, its surface through OFFSET normal to the water
+// frame's z (which points into the water), of specific weight WGAM, and the ellipsoids in it.
+struct WaterCard {
+  std::uint32_t line = 0;  // F.9.a
+  Vec3 offset{}, frame{};
+  double depth = 0, specific_weight = 0;
+  struct Ellipsoid {
+    std::uint32_t line = 0;  // F.9.f
+    Ref ellipsoid, segment;
+    double drag = 0;  // COED, or BCOED when 0
+  };
+  std::vector<Ellipsoid> ellipsoids;
+};
+
 struct InitialCard {
   std::uint32_t line = 0;
   int segment = 0;
@@ -269,6 +310,9 @@ struct Deck {
   std::vector<FunctionCard> functions;
   std::vector<ContactCard> contacts;
   std::vector<HarnessCard> harnesses;
+  std::vector<WindFunctionCard> wind_functions;
+  std::vector<WindCard> winds;
+  std::optional<WaterCard> water;
   // G.1.a I3 = 0: the reference segments start with the primary vehicle's velocity (and its
   // angular velocity, zero for the motions sled converts); else the G cards give them.
   bool velocities_from_vehicle = true;

@@ -97,6 +97,13 @@ class DeckMapper {
   // F.8: `harness NAME on FRAME { friction  belt NAME { path ... } }`, the harness friction from
   // its tie points, each belt's friction from the points it wraps.
   void MapHarnesses(ast::Block& scenario);
+  // E.6, F.7 and F.9 (map_fluids.cpp): `wind { ... }` and `water { ... }`.
+  const WindFunctionCard* WindFunction(const Ref& ref);
+  bool IsGround(int number) const;
+  std::string SegmentInFluid(const Ref& ref, const Ref& ellipsoid, std::string_view fluid,
+                             std::string_view field);
+  void MapWind(ast::Block& scenario);
+  void MapWater(ast::Block& scenario);
   void MapFunctions(ast::Block& scenario);
   ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name,
                                    const FunctionUnloading& unloading);

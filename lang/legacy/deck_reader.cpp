@@ -2,6 +2,7 @@
 
 #include "lang/legacy/body_reader.h"
 #include "lang/legacy/deck_fields.h"
+#include "lang/legacy/fluid_readers.h"
 #include "lang/legacy/initial_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
@@ -63,8 +64,10 @@ class DeckReader : public DeckFields {
     if (!r_.truncated()) ReadC();
     if (!r_.truncated()) ReadD();
     if (!r_.truncated()) ReadE();
+    if (!r_.truncated()) ReadWindFunctions(*this, wind_functions_);
     if (unknown_layout_) return std::move(deck_);  // F.5 cards of unknown length follow
     if (!r_.truncated()) ReadF();
+    if (unknown_layout_) return std::move(deck_);  // F.7.c or F.9.h cards of unknown layout
     if (!r_.truncated()) ReadInitialConditions(*this, bags_);
     if (!r_.truncated()) ReadOutputRequests(*this, bags_);
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
@@ -258,15 +261,15 @@ class DeckReader : public DeckFields {
     const int constraints = Count(d1, 25, 30, "NQ, the number of constraints", kMaxConstraints);
     const int springs = Count(d1, 31, 36, "NSD, the number of spring-dampers", kMaxSprings);
     harnesses_ = Count(d1, 37, 42, "NHRNSS, the number of harnesses", kMaxHarnesses);
+    wind_functions_ = Count(d1, 43, 48, "NWINDF, the number of wind functions", kMaxFunction);
+    water_ = r_.Integer(d1, 61, 66, "NWATER, the water forces") != 0;
     struct Unsupported {
       int first;
       const char* what;
       const char* help;
     };
     static constexpr Unsupported kUnsupported[] = {
-        {43, "NWINDF (wind forces)", "sled has no wind forces"},
         {55, "NFORCE (applied forces)", "sled has no prescribed force functions"},
-        {61, "NWATER (water forces)", "sled has no water forces"},
         {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
     };
     // The F.5 cards of CVS-III and ATB-II decks, which follow the E cards when NJNTF is set: ATB
@@ -645,7 +648,11 @@ class DeckReader : public DeckFields {
       }
     }
     if (bags_ > 0 && !r_.truncated()) ReadAirbagContacts(*this, bags_);
-    if (harnesses_ > 0 && !r_.truncated()) ReadHarnesses(*this, harnesses_, bags_);
+    if (wind_functions_ > 0 && !r_.truncated() && !ReadWind(*this)) unknown_layout_ = true;
+    if (harnesses_ > 0 && !r_.truncated() && !unknown_layout_) {
+      ReadHarnesses(*this, harnesses_, bags_);
+    }
+    if (water_ && !r_.truncated() && !unknown_layout_ && !ReadWater(*this)) unknown_layout_ = true;
   }
 
   void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
@@ -710,6 +717,8 @@ class DeckReader : public DeckFields {
   bool approximate_airbags_;
   bool unknown_layout_ = false;  // the deck goes on with cards whose layout is not known
   int harnesses_ = 0;            // D.1.a NHRNSS
+  int wind_functions_ = 0;       // D.1.a NWINDF: E.6 cards after the E cards, then F.7
+  bool water_ = false;           // D.1.a NWATER: the F.9 cards
   int bags_ = 0;                 // D.1.a NBAG
 };
 

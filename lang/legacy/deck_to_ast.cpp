@@ -82,6 +82,8 @@ ast::File DeckMapper::Map() {
   MapVehicles(body);
   MapSurfaces(body);
   MapRestraints(body);
+  MapWind(body);
+  MapWater(body);
   MapFunctions(body);
   MapInitial(body);
   MapOutputs(body);

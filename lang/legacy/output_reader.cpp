@@ -133,8 +133,11 @@ class OutputReader {
     Card card = r_.Next(fmt::format("H.{}", k), {"(I6,22I3)", 1});
     const int count = f_.Count(card, 1, 6, "KSG, the number of requests", kMaxRequests);
     if (count > 0 && k == 8) {
-      f_.Refuse(card, 1, 6, fmt::format("KSG is {}: wind forces on segments", count),
-                "sled has no wind forces (D.1's NWINDF); set KSG to 0");
+      f_.Approximated(card, 1, 6,
+                      fmt::format("KSG is {}: the wind forces on segments, which sled does not "
+                                  "write (no value of the run changes; the wind's work is in "
+                                  "the energy balance's applied work)",
+                                  count));
     }
     r_.Extend(card, 2 * std::min(count, 11));
     for (int i = 0; i < count && !r_.truncated(); ++i) {
@@ -148,7 +151,7 @@ class OutputReader {
       const int msg_first = 10 + 6 * on_card;
       const int kref_first = (i >= 11 && on_card == 0) ? 1 : msg_first - 3;
       const int kref_last = msg_first - 1;
-      if (k == 8) continue;  // refused above
+      if (k == 8) continue;  // not written, warned above
       OutputCard output;
       output.line = card.line;
       output.kind = k == 4   ? OutputCard::Kind::kAngularAcceleration

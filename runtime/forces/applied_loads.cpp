@@ -8,18 +8,6 @@
 namespace sled::runtime {
 namespace {
 
-// A force at a world point and a torque (world frame) on segment s, and their power.
-void Apply(Data& data, std::size_t s, const Vec3& point_world, const Vec3& force_world,
-           const Vec3& torque_world) {
-  const Mat3& R = data.rotation[s];
-  Vec6 wrench;  // about the centre of mass, in the segment frame
-  wrench.head<3>() =
-      R.transpose() * (torque_world + (point_world - data.position[s]).cross(force_world));
-  wrench.tail<3>() = R.transpose() * force_world;
-  data.external[s] += wrench;
-  data.applied_power += wrench.dot(data.velocity[s]);
-}
-
 // The rotation of the frame the joint above segment s hangs from: its parent segment, or the
 // ground or vehicle a root is attached to.
 Mat3 ParentRotation(const Model& model, const Data& data, std::size_t s) {
@@ -30,8 +18,18 @@ Mat3 ParentRotation(const Model& model, const Data& data, std::size_t s) {
 
 }  // namespace
 
+void AddAppliedForce(Data& data, std::size_t s, const Vec3& point_world, const Vec3& force_world,
+                     const Vec3& torque_world) {
+  const Mat3& R = data.rotation[s];
+  Vec6 wrench;  // about the centre of mass, in the segment frame
+  wrench.head<3>() =
+      R.transpose() * (torque_world + (point_world - data.position[s]).cross(force_world));
+  wrench.tail<3>() = R.transpose() * force_world;
+  data.external[s] += wrench;
+  data.applied_power += wrench.dot(data.velocity[s]);
+}
+
 void AddAppliedLoads(const Model& model, Data& data) {
-  data.applied_power = 0.0;
   const LoadTable& loads = model.loads;
   const double t = data.time;
   for (std::size_t k = 0; k < loads.size(); ++k) {
@@ -44,7 +42,7 @@ void AddAppliedLoads(const Model& model, Data& data) {
       const Vec3 direction =
           loads.in_segment[k] ? Vec3(R * loads.direction[k]) : loads.direction[k];
       const Vec3 axis = loads.in_segment[k] ? Vec3(R * loads.axis[k]) : loads.axis[k];
-      Apply(data, s, data.position[s] + R * loads.point[k], f * direction, m * axis);
+      AddAppliedForce(data, s, data.position[s] + R * loads.point[k], f * direction, m * axis);
       continue;
     }
     // Across a joint: on the child, and the opposite on the parent, at the joint point.
@@ -54,9 +52,10 @@ void AddAppliedLoads(const Model& model, Data& data) {
         loads.kind[k] == LoadTable::Kind::kJointForce ? Vec3(f * axis) : Vec3::Zero();
     const Vec3 torque =
         loads.kind[k] == LoadTable::Kind::kJointTorque ? Vec3(m * axis) : Vec3::Zero();
-    Apply(data, s, joint_point, force, torque);
+    AddAppliedForce(data, s, joint_point, force, torque);
     const std::int32_t parent = model.segment_parent[s];
-    if (parent >= 0) Apply(data, static_cast<std::size_t>(parent), joint_point, -force, -torque);
+    if (parent >= 0)
+      AddAppliedForce(data, static_cast<std::size_t>(parent), joint_point, -force, -torque);
   }
 }
 

@@ -34,9 +34,15 @@ struct LoadTable {
   std::size_t size() const { return name.size(); }
 };
 
+// Adds a force at a world point and a torque (world frame) to segment s's data.external, and
+// their power into the segment to data.applied_power.
+void AddAppliedForce(Data& data, std::size_t s, const Vec3& point_world, const Vec3& force_world,
+                     const Vec3& torque_world);
+
 // Adds every load's force and torque at data.time to data.external (segments only: a parent
 // frame that is the ground or a vehicle takes the reaction without effect on the run), and their
-// power into the segments to data.applied_power. After the kinematics.
+// power into the segments to data.applied_power (which ComputeForces zeroes). After the
+// kinematics.
 void AddAppliedLoads(const Model& model, Data& data);
 
 }  // namespace sled::runtime

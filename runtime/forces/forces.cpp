@@ -7,6 +7,7 @@
 #include "runtime/dynamics/frame_motion.h"
 #include "runtime/dynamics/joint.h"
 #include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/fluid_forces.h"
 #include "runtime/forces/functions.h"
 #include "runtime/forces/joint_hysteresis.h"
 #include "runtime/restraint/belts.h"
@@ -129,6 +130,7 @@ void ComputeForces(const Model& model, Data& data) {
         model.segment_mass[s] * (data.rotation[s].transpose() * model.gravity);
   }
   data.vehicle_power = 0.0;
+  data.applied_power = 0.0;
   ComputeJointTorques(model, data);
 
   if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
@@ -153,6 +155,7 @@ void ComputeForces(const Model& model, Data& data) {
   ComputeBeltForces(model, data);
   if (model.airbags.size() > 0) ComputeAirbagForces(model, data);
   if (model.loads.size() > 0) AddAppliedLoads(model, data);
+  if (model.fluids.size() > 0) AddFluidForces(model, data);
 }
 
 }  // namespace sled::runtime

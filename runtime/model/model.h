@@ -23,6 +23,7 @@
 #include "runtime/airbag/airbag_table.h"
 #include "runtime/contact/contact_table.h"
 #include "runtime/forces/applied_loads.h"
+#include "runtime/forces/fluid_forces.h"
 #include "runtime/model/model_types.h"
 #include "runtime/restraint/belt_table.h"
 
@@ -190,6 +191,8 @@ struct Model {
   // --- Applied loads: forces and torques that are functions of time
   // (runtime/forces/applied_loads.h).
   LoadTable loads;
+  // --- Wind and water on segment ellipsoids (runtime/forces/fluid_forces.h).
+  FluidTable fluids;
   // --- Drawing only (the animation; the dynamics never reads them): the shapes of the segments
   // that are not contact ellipsoids, so that every segment is drawn: its declared ellipsoids, or
   // for a segment without any the ellipsoid of uniform density with its mass and inertia.

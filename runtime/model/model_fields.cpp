@@ -60,6 +60,8 @@ const char* CountName(ModelCount count) {
       return "airbag_contact";
     case ModelCount::kLoad:
       return "load";
+    case ModelCount::kFluid:
+      return "fluid";
     case ModelCount::kShape:
       return "shape";
     case ModelCount::kConstraint:
@@ -132,6 +134,8 @@ std::size_t CountOf(const Model& m, ModelCount count) {
       return m.airbags.contact_segment.size();
     case ModelCount::kLoad:
       return m.loads.name.size();
+    case ModelCount::kFluid:
+      return m.fluids.medium.size();
     case ModelCount::kShape:
       return m.shape_name.size();
     case ModelCount::kConstraint:

@@ -51,6 +51,7 @@ enum class ModelCount : std::uint8_t {
   kAirbag,          // airbags.name
   kAirbagContact,   // airbags.contact_segment
   kLoad,            // loads.name
+  kFluid,           // fluids.medium
   kShape,           // shape_name
   kConstraint,      // constraint_name
   kOutput,          // output_kind
@@ -210,6 +211,17 @@ enum FieldCheck : unsigned {
   X(Load, loads.axis, Physics, None, kPlain)                                               \
   X(Load, loads.point, Physics, None, kPlain)                                              \
   X(Load, loads.in_segment, Physics, None, kPlain)                                         \
+  X(Fluid, fluids.medium, Physics, None, kPlain)                                           \
+  X(Fluid, fluids.segment, Physics, Segment, kPlain)                                       \
+  X(Fluid, fluids.center, Physics, None, kPlain)                                           \
+  X(Fluid, fluids.axes, Physics, None, kPlain)                                             \
+  X(Fluid, fluids.semi_axes, Physics, None, kNonNegative)                                  \
+  X(Fluid, fluids.drag, Physics, None, kNonNegative)                                       \
+  X(Fluid, fluids.density, Physics, None, kNonNegative)                                    \
+  X(Fluid, fluids.speed, Physics, Function, kOrNone)                                       \
+  X(Fluid, fluids.pressure, Physics, Function, kOrNone)                                    \
+  X(Fluid, fluids.direction, Physics, None, kPlain)                                        \
+  X(Fluid, fluids.level, Physics, None, kPlain)                                            \
   X(Shape, shape_name, Records, None, kPlain)                                              \
   X(Shape, shape_segment, Records, Segment, kPlain)                                        \
   X(Shape, shape_center, Records, None, kPlain)                                            \

@@ -125,6 +125,16 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "airbag_inflow_temperature") return {a.inflow_temperature.at(i)};
   if (field == "airbag_gamma") return {a.gamma.at(i)};
   if (field == "airbag_gas_constant") return {a.gas_constant.at(i)};
+  if (field.rfind("fluid_", 0) == 0) {  // a row of the fluid table, by number
+    const runtime::FluidTable& f = m.fluids;
+    const auto row = static_cast<std::size_t>(std::stoul(index));
+    if (field == "fluid_pressure_at") return at(f.pressure.at(row));
+    if (field == "fluid_speed_at") return at(f.speed.at(row));
+    if (field == "fluid_direction") return Of(f.direction.at(row));
+    if (field == "fluid_drag") return {f.drag.at(row)};
+    if (field == "fluid_density") return {f.density.at(row)};
+    if (field == "fluid_level") return {f.level.at(row)};
+  }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};

@@ -16,7 +16,7 @@
   (#any-of? @keyword
     "scenario" "import" "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid"
     "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "load" "initial"
-    "override" "output" "time" "integrator" "restart" "settle" "symmetry"))
+    "override" "output" "time" "integrator" "restart" "settle" "symmetry" "wind" "water"))
 
 (statement
   keyword: (identifier) @_declaration
