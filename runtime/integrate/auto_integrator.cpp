@@ -53,7 +53,7 @@ const IntegratorStats& AutoIntegrator::stats() const {
 
 bool AutoIntegrator::ShouldSwitch() {
   if (!stiff_) {
-    stiff_steps_ = explicit_.stiffness_ratio() > DormandPrince::kStiffRatio ? stiff_steps_ + 1 : 0;
+    stiff_steps_ = explicit_.stiffness_ratio() > kStiffRatio ? stiff_steps_ + 1 : 0;
     return steps_in_mode_ >= explicit_min_steps_ && stiff_steps_ >= kStiffSteps;
   }
   // Could dopri5 have taken the exponential method's step stably?
