@@ -63,6 +63,11 @@ bool AutoIntegrator::ShouldSwitch() {
   } else {
     settled_steps_ = 0;
   }
+  // The first step is about dopri5's last one: well within dopri5's stable step for the stiff
+  // terms (h rho <= kNotStiff after it), it was not stability that held dopri5 (the estimate
+  // saw a nonlinearity): back at once, before forming more Jacobians. On the flagship: 24
+  // exponential steps in 8 stints instead of 42 (4,446 evaluations instead of 4,540).
+  if (steps_in_mode_ == 1 && exponential_.step_size() * rate <= kNotStiff) return true;
   return steps_in_mode_ >= kMinSteps && settled_steps_ >= kSettleSteps;
 }
 

@@ -13,6 +13,7 @@
 //   little: the exponential method hands back after kMinSteps steps, and each hand-back from a
 //   stint in which it never went beyond what dopri5 could take doubles the steps dopri5 keeps the
 //   problem before it may hand over again (up to kMaxExplicitSteps), so the two cannot chatter.
+//   A stint whose first step ends with h rho <= kNotStiff (rho as below) hands back at once.
 // - Back to dopri5: when the exponential method's steps have not gone beyond what dopri5 could
 //   take stably for kSettleSteps steps in a row: h rho <= kExplicitStable, with rho the largest
 //   rate of the force elements' stiff terms (its Jacobian's stiff_rate); dopri5, fifth order with
@@ -44,6 +45,7 @@ class AutoIntegrator final : public Integrator {
   static constexpr long kSettleSteps = 10;
   static constexpr double kExplicitStable = 2.0;
   static constexpr long kStiffSteps = 3;
+  static constexpr double kNotStiff = 1.0;
   static constexpr double kStiffRatio = 2.0;
   static constexpr long kMaxExplicitSteps = 640;
 
