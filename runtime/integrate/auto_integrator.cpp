@@ -18,6 +18,8 @@ void AutoIntegrator::Reset(OdeSystem& system, double t0, std::span<const double>
   stiff_ = false;
   steps_in_mode_ = 0;
   settled_steps_ = 0;
+  stiff_steps_ = 0;
+  explicit_min_steps_ = kMinSteps;
   explicit_share_ = {};
   exponential_share_ = {};
   switches_ = 0;
@@ -50,7 +52,10 @@ const IntegratorStats& AutoIntegrator::stats() const {
 }
 
 bool AutoIntegrator::ShouldSwitch() {
-  if (!stiff_) return steps_in_mode_ >= kMinSteps && explicit_.seems_stiff();
+  if (!stiff_) {
+    stiff_steps_ = explicit_.stiffness_ratio() > kStiffRatio ? stiff_steps_ + 1 : 0;
+    return steps_in_mode_ >= explicit_min_steps_ && stiff_steps_ >= kStiffSteps;
+  }
   // Could dopri5 have taken the exponential method's step stably?
   const double rate = exponential_.stiff_rate();
   if (exponential_.step_size() * rate <= kExplicitStable) {
@@ -58,6 +63,11 @@ bool AutoIntegrator::ShouldSwitch() {
   } else {
     settled_steps_ = 0;
   }
+  // The first step is about dopri5's last one: well within dopri5's stable step for the stiff
+  // terms (h rho <= kNotStiff after it), it was not stability that held dopri5 (the estimate
+  // saw a nonlinearity): back at once, before forming more Jacobians. On the flagship: 24
+  // exponential steps in 8 stints instead of 42 (4,446 evaluations instead of 4,540).
+  if (steps_in_mode_ == 1 && exponential_.step_size() * rate <= kNotStiff) return true;
   return steps_in_mode_ >= kMinSteps && settled_steps_ >= kSettleSteps;
 }
 
@@ -67,6 +77,14 @@ void AutoIntegrator::Switch(double first_step) {
   share.simulated += from.time() - mode_start_time_;
   share.wall_seconds += mode_wall_seconds_;
   active().Settle();
+  if (stiff_) {
+    // A stint in which the exponential method never went beyond dopri5's stable step was not
+    // needed: dopri5 waits twice as long before the next; a stint that was needed resets that.
+    explicit_min_steps_ = settled_steps_ >= steps_in_mode_
+                              ? std::min(2 * explicit_min_steps_, kMaxExplicitSteps)
+                              : kMinSteps;
+  }
+  stiff_steps_ = 0;
   std::copy(from.state().begin(), from.state().end(), handover_.begin());
   const double t = from.time();
   stiff_ = !stiff_;
@@ -108,6 +126,8 @@ void AutoIntegrator::Serialize(Archive& archive) {
   archive.Field(stiff_);
   archive.Field(steps_in_mode_);
   archive.Field(settled_steps_);
+  archive.Field(stiff_steps_);
+  archive.Field(explicit_min_steps_);
   archive.Field(explicit_share_);
   archive.Field(exponential_share_);
   archive.Field(switches_);

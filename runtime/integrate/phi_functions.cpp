@@ -16,6 +16,14 @@ constexpr double kScaledNorm = 0.5;
 // below this (relative to the leading I/p!, which is at most 1).
 constexpr double kTruncation = 1e-17;
 
+// The spectral path (phi_spectral.h) costs an eigen-decomposition (some 25 m^3 operations) and
+// about 4 (p + 1) m^3 per set of functions; the squaring path (d + p + s (p + 1)) m^3 with
+// s = log2(||Z|| / kScaledNorm) squarings. Compute decomposes Z beyond kSpectralNorm (s >= 4),
+// ComputeScaled uses the decomposition beyond kSpectralScaledNorm (s >= 2): on the flagship,
+// whose steps are short, decomposing every Z cost 30 % more instructions than it saved.
+constexpr double kSpectralNorm = 8.0;
+constexpr double kSpectralScaledNorm = 2.0;
+
 // Below this size the products are coefficient loops (lazyProduct): Eigen's blocked product
 // costs more than the arithmetic for the 2 x 2 to 16 x 16 matrices of a few stiff terms.
 constexpr Eigen::Index kSmall = 4;
@@ -61,17 +69,20 @@ void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
     scaled_.resize(capacity, capacity);
     product_.resize(capacity, capacity);
   }
+  if (base_.rows() < capacity) {
+    base_.resize(capacity, capacity);
+    theta_z_.resize(capacity, capacity);
+  }
 }
 
-void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
-                           std::span<Eigen::MatrixXd> phi, std::span<Eigen::MatrixXd> half) {
+void PhiFunctions::SizeOutputs(Eigen::Index m, int p, std::span<Eigen::MatrixXd> phi,
+                               std::span<Eigen::MatrixXd> half) {
   if (p < 0 || p > kMaxOrder || phi.size() <= static_cast<std::size_t>(p) ||
-      (!half.empty() && half.size() <= static_cast<std::size_t>(p)) || z.rows() != z.cols()) {
+      (!half.empty() && half.size() <= static_cast<std::size_t>(p))) {
     throw std::invalid_argument(
         "PhiFunctions::Compute: needs a square Z, 0 <= p <= kMaxOrder "
         "and p + 1 outputs");
   }
-  const Eigen::Index m = z.rows();
   const auto order = static_cast<std::size_t>(p);
   if (phi[0].rows() < m || phi[0].cols() != phi[0].rows()) phi[0].resize(m, m);
   const Eigen::Index capacity = phi[0].rows();
@@ -79,10 +90,49 @@ void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
     if (phi[k].rows() != capacity || phi[k].cols() != capacity) phi[k].resize(capacity, capacity);
     if (!half.empty() && (half[k].rows() < m || half[k].cols() < m)) half[k].resize(m, m);
   }
-  if (m == 0) {
-    squarings_ = 0;
+}
+
+void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
+                           std::span<Eigen::MatrixXd> phi, std::span<Eigen::MatrixXd> half) {
+  if (z.rows() != z.cols()) {
+    throw std::invalid_argument("PhiFunctions::Compute: needs a square Z");
+  }
+  const Eigen::Index m = z.rows();
+  SizeOutputs(m, p, phi, half);
+  if (base_.rows() < m) base_.resize(phi[0].rows(), phi[0].rows());
+  base_.topLeftCorner(m, m) = z;
+  base_size_ = m;
+  squarings_ = 0;
+  if (m == 0) return;
+  base_norm_ = OneNorm(z);
+  spectral_.Forget();
+  if (base_norm_ > kSpectralNorm && spectral_.Decompose(z)) {
+    spectral_.Evaluate(1.0, p, phi);
+    if (!half.empty()) spectral_.Evaluate(0.5, p, half);
     return;
   }
+  ComputeBySquaring(z, p, phi, half);
+}
+
+void PhiFunctions::ComputeScaled(double theta, int p, std::span<Eigen::MatrixXd> phi) {
+  const Eigen::Index m = base_size_;
+  SizeOutputs(m, p, phi, {});
+  if (m == 0) return;
+  if (spectral_.valid() && theta * base_norm_ > kSpectralScaledNorm) {
+    spectral_.Evaluate(theta, p, phi);
+    return;
+  }
+  if (theta_z_.rows() < m) theta_z_.resize(base_.rows(), base_.rows());
+  theta_z_.topLeftCorner(m, m) = theta * base_.topLeftCorner(m, m);
+  ComputeBySquaring(theta_z_.topLeftCorner(m, m), p, phi, {});
+}
+
+void PhiFunctions::ComputeBySquaring(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
+                                     std::span<Eigen::MatrixXd> phi,
+                                     std::span<Eigen::MatrixXd> half) {
+  const Eigen::Index m = z.rows();
+  const auto order = static_cast<std::size_t>(p);
+  const Eigen::Index capacity = phi[0].rows();
   Reserve(capacity, p);
   auto corner = [m](Eigen::MatrixXd& matrix) { return matrix.topLeftCorner(m, m); };
 

@@ -13,12 +13,17 @@
 // steps need, so they come free.
 //
 // The matrices are small (the stiff subspace of a structured Jacobian, structured_jacobian.h):
-// the cost is (d + p + s (p + 1)) products of m x m matrices.
+// the cost is (d + p + s (p + 1)) products of m x m matrices. A diagonalizable Z with
+// well-conditioned eigenvectors takes a cheaper path instead (phi_spectral.h): the scalar
+// functions of its eigenvalues, (p + 1) complex products of m x m matrices whatever ||Z||, and
+// ComputeScaled gives the functions of theta Z for any theta from the same decomposition.
 #pragma once
 
 #include <Eigen/Core>
 #include <span>
 #include <vector>
+
+#include "runtime/integrate/phi_spectral.h"
 
 namespace sled::runtime {
 
@@ -36,14 +41,34 @@ class PhiFunctions {
   void Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p, std::span<Eigen::MatrixXd> phi,
                std::span<Eigen::MatrixXd> half = {});
 
+  // phi_0(theta Z) ... phi_p(theta Z) for the Z of the last Compute, into phi[0..p] as Compute
+  // writes them (the exponential method's dense output: tau = theta h). From that Compute's
+  // eigen-decomposition when it had one, else by scaling and squaring theta Z.
+  void ComputeScaled(double theta, int p, std::span<Eigen::MatrixXd> phi);
+
   // Sizes the workspace for matrices up to `capacity` x `capacity` and orders up to p, so no
   // later Compute allocates (Compute also grows it when needed).
   void Reserve(Eigen::Index capacity, int p);
 
-  // The number of squarings of the last Compute (for tests and statistics).
+  // The number of squarings of the last Compute (for tests and statistics; 0 on the spectral
+  // path).
   int squarings() const { return squarings_; }
+  // Whether the last Compute took the spectral path.
+  bool spectral() const { return spectral_.valid(); }
 
  private:
+  // The Taylor polynomial and modified squaring (the path for any Z).
+  void ComputeBySquaring(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
+                         std::span<Eigen::MatrixXd> phi, std::span<Eigen::MatrixXd> half);
+  // Checks the arguments and sizes the outputs for an m x m Z.
+  static void SizeOutputs(Eigen::Index m, int p, std::span<Eigen::MatrixXd> phi,
+                          std::span<Eigen::MatrixXd> half);
+
+  SpectralPhi spectral_;
+  Eigen::MatrixXd base_;  // the Z of the last Compute (top-left base_size_ x base_size_)
+  Eigen::Index base_size_ = 0;
+  double base_norm_ = 0.0;             // its 1-norm
+  Eigen::MatrixXd theta_z_;            // theta Z for ComputeScaled without a decomposition
   std::vector<Eigen::MatrixXd> next_;  // the functions of the doubled argument, per squaring
   Eigen::MatrixXd scaled_;             // X = Z / 2^s
   Eigen::MatrixXd product_;

@@ -164,9 +164,9 @@ void StructuredPhi::PrepareOther(double tau) const {
   if (a_ == nullptr) throw std::logic_error("StructuredPhi::PrepareOther before Prepare");
   other_tau_ = tau;
   if (basis_ == 0) return;
-  scaled_.topLeftCorner(basis_, basis_) = tau * h_matrix_.topLeftCorner(basis_, basis_);
-  functions_.Compute(scaled_.topLeftCorner(basis_, basis_), kHighest,
-                     std::span<Eigen::MatrixXd>(other_));
+  // The functions of tau H = (tau / h) (h H), from the decomposition Prepare's Compute made of
+  // h H when it had one (phi_functions.h): a dense output row costs no squarings.
+  functions_.ComputeScaled(tau / h_, kHighest, std::span<Eigen::MatrixXd>(other_));
 }
 
 void StructuredPhi::Accumulate(int k, Fraction fraction, std::span<const double> b, double scale,

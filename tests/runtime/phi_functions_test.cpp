@@ -137,6 +137,52 @@ TEST(PhiFunctions, MatchesEigensExponentialOfTheAugmentedMatrix) {
   }
 }
 
+TEST(PhiFunctions, ScaledFunctionsMatchTheReferenceOnBothPaths) {
+  // ComputeScaled gives phi_k(theta Z) for the last Compute's Z: from its eigen-decomposition
+  // when Z is diagonalizable (a damped oscillator's H, balanced, and random matrices), by
+  // squaring theta Z when it is not (a Jordan block: the spectral path must refuse it).
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal;
+  std::vector<Eigen::MatrixXd> cases;
+  // Whether the spectral path must be taken (1), refused (0), or may be either (-1: a wide
+  // random spectrum, where it depends on the eigenvectors' condition).
+  std::vector<int> spectral;
+  Eigen::Matrix2d oscillator;
+  oscillator << -1e4, -2.5e3, 1.0, 0.0;  // c/m = 1e4 1/s, k/m = 2.5e3 1/s^2, times h = 0.15 s
+  cases.push_back(0.15 * oscillator);
+  spectral.push_back(1);
+  for (const int m : {3, 8, 20}) {
+    const double scale = m == 20 ? 30.0 : 3.0;
+    Eigen::MatrixXd z(m, m);
+    for (Eigen::Index i = 0; i < z.size(); ++i) z.data()[i] = scale * normal(random);
+    z.diagonal().array() -= 2.0 * scale;
+    cases.push_back(z);
+    spectral.push_back(m == 20 ? -1 : 1);
+  }
+  Eigen::Matrix2d jordan;
+  jordan << -40.0, 1.0, 0.0, -40.0;
+  cases.push_back(jordan);
+  spectral.push_back(0);
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), scaled(6);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const Eigen::MatrixXd& z = cases[c];
+    functions.Compute(z, 5, phi);
+    if (spectral[c] >= 0) {
+      EXPECT_EQ(functions.spectral(), spectral[c] == 1) << "case " << c;
+    }
+    for (const double theta : {1.0, 0.37, 1e-3}) {
+      functions.ComputeScaled(theta, 5, scaled);
+      const auto reference = ReferencePhi(theta * z, 5);
+      for (std::size_t k = 0; k <= 5; ++k) {
+        EXPECT_LT(RelativeDifference(scaled[k].topLeftCorner(z.rows(), z.rows()), reference[k]),
+                  1e-11)
+            << "case " << c << " theta " << theta << " k " << k;
+      }
+    }
+  }
+}
+
 // A = N + U V^T with N^2 = 0: a chain of three masses on stiff springs, positions x and
 // velocities v (N: x' = v), the springs and dampers as rank-one terms.
 StructuredJacobian ThreeMasses(double stiffness, double damping) {

@@ -1,0 +1,121 @@
+#include "runtime/integrate/phi_spectral.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "runtime/integrate/phi_functions.h"
+
+namespace sled::runtime {
+namespace {
+
+// Beyond this |z| the recurrence phi_{k+1} = (phi_k - 1/k!) / z from e^z loses nothing: each
+// step divides by more than twice the order.
+constexpr double kRecurrenceNorm = 2.0 * (SpectralPhi::kMaxOrder + 2);
+
+// The series is summed at |z| / 2^s <= this, then squared back (as phi_functions.cpp does for
+// matrices): 20 terms are below the unit roundoff there.
+constexpr double kSeriesNorm = 0.5;
+constexpr int kSeriesTerms = 22;
+
+}  // namespace
+
+void SpectralPhi::Scalar(std::complex<double> z, int p, std::complex<double>* out) {
+  using C = std::complex<double>;
+  const double norm = std::abs(z);
+  if (norm > kRecurrenceNorm) {
+    out[0] = std::exp(z);
+    for (int k = 0; k < p; ++k) out[k + 1] = (out[k] - InverseFactorial(k)) / z;
+    return;
+  }
+  int s = 0;
+  if (norm > kSeriesNorm) s = static_cast<int>(std::ceil(std::log2(norm / kSeriesNorm)));
+  const C x = std::ldexp(1.0, -s) * z;
+  // phi_p(x) = sum_j x^j / (j + p)! by Horner, then phi_k = x phi_{k+1} + 1/k! downwards.
+  C top = InverseFactorial(kSeriesTerms + p);
+  for (int j = kSeriesTerms - 1; j >= 0; --j) top = x * top + InverseFactorial(j + p);
+  out[p] = top;
+  for (int k = p - 1; k >= 0; --k) out[k] = x * out[k + 1] + InverseFactorial(k);
+  // Modified squaring: phi_k(2x) = 2^-k [phi_0(x) phi_k(x) + sum_{j=1..k} phi_j(x) / (k-j)!].
+  C next[kMaxOrder + 1];
+  for (int step = 0; step < s; ++step) {
+    for (int k = 1; k <= p; ++k) {
+      C sum = out[0] * out[k];
+      for (int j = 1; j <= k; ++j) sum += InverseFactorial(k - j) * out[j];
+      next[k] = std::ldexp(1.0, -k) * sum;
+    }
+    next[0] = out[0] * out[0];
+    for (int k = 0; k <= p; ++k) out[k] = next[k];
+  }
+}
+
+bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
+  valid_ = false;
+  size_ = z.rows();
+  if (size_ == 0 || size_ > kMaxSize || z.cols() != size_ || !z.allFinite()) return false;
+  input_ = z;
+  solver_.compute(input_, true);
+  if (solver_.info() != Eigen::Success) return false;
+  // The complex eigenvectors from the real pseudo-eigenvectors (a conjugate pair's real and
+  // imaginary parts side by side), written in place: eigenvectors() returns a temporary of full
+  // capacity, zeroed.
+  const Real& pseudo = solver_.pseudoEigenvectors();
+  values_ = solver_.eigenvalues();
+  vectors_.resize(size_, size_);
+  for (Eigen::Index j = 0; j < size_; ++j) {
+    if (values_[j].imag() != 0.0 && j + 1 < size_) {
+      for (Eigen::Index i = 0; i < size_; ++i) {
+        vectors_(i, j) = {pseudo(i, j), pseudo(i, j + 1)};
+        vectors_(i, j + 1) = {pseudo(i, j), -pseudo(i, j + 1)};
+      }
+      ++j;
+    } else {
+      for (Eigen::Index i = 0; i < size_; ++i) vectors_(i, j) = pseudo(i, j);
+    }
+  }
+  lu_.compute(vectors_);
+  inverse_ = lu_.inverse();
+  // The eigenvectors' reciprocal condition number in the 1-norm, and the size of Z: see the
+  // header (the eigenvalues' rounding, eps ||Z|| / rcond, must stay small).
+  const auto one_norm = [this](const auto& matrix) {
+    double norm = 0.0;
+    for (Eigen::Index j = 0; j < size_; ++j) norm = std::max(norm, matrix.col(j).cwiseAbs().sum());
+    return norm;
+  };
+  const double rcond = 1.0 / (one_norm(vectors_) * one_norm(inverse_));
+  const double norm = one_norm(z);
+  if (!(rcond > kMinReciprocalCondition && norm < kMaxNormOverCondition * rcond)) return false;
+  valid_ = inverse_.allFinite();
+  return valid_;
+}
+
+void SpectralPhi::Evaluate(double theta, int p, std::span<Eigen::MatrixXd> phi) const {
+  if (!valid_ || p < 0 || p > kMaxOrder || phi.size() <= static_cast<std::size_t>(p)) {
+    throw std::logic_error("SpectralPhi::Evaluate: Decompose first; 0 <= p <= kMaxOrder");
+  }
+  const Eigen::Index m = size_;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    std::complex<double> values[kMaxOrder + 1];
+    Scalar(theta * values_[i], p, values);
+    for (int k = 0; k <= p; ++k) functions_(k, i) = values[k];
+  }
+  // Re(W diag(f) W^-1) by plain loops: Eigen's expressions on these fixed-capacity complex
+  // matrices made temporaries of full capacity, each zeroed (std::complex's constructor).
+  scaled_.resize(m, m);
+  for (int k = 0; k <= p; ++k) {
+    for (Eigen::Index l = 0; l < m; ++l) scaled_.col(l) = vectors_.col(l) * functions_(k, l);
+    auto out = phi[static_cast<std::size_t>(k)].topLeftCorner(m, m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      for (Eigen::Index i = 0; i < m; ++i) {
+        double sum = 0.0;
+        for (Eigen::Index l = 0; l < m; ++l) {
+          sum += scaled_(i, l).real() * inverse_(l, j).real() -
+                 scaled_(i, l).imag() * inverse_(l, j).imag();
+        }
+        out(i, j) = sum;
+      }
+    }
+  }
+}
+
+}  // namespace sled::runtime
