@@ -69,6 +69,7 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(restart_step_);
   archive.Field(step_limit_);
   archive.Field(event_stop_);
+  archive.Field(redo_spent_);
   archive.Field(quadrature_scale_);
   archive.Field(stats_);
   controller_.Serialize(archive);
@@ -134,6 +135,7 @@ void AdaptiveIntegrator::Reset(OdeSystem& system, double t0, std::span<const dou
   commit_pending_ = false;
   event_pending_ = false;
   event_stop_ = std::numeric_limits<double>::infinity();
+  redo_spent_ = false;
   controller_.Configure(ErrorPower());
   events_.Reset(system);
   ResizeWorkspace(n);
@@ -320,6 +322,7 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   restart_pending_ = false;
   keep_step_ = false;
   event_stop_ = std::numeric_limits<double>::infinity();
+  redo_spent_ = false;
   return true;
 }
 
@@ -420,7 +423,7 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     if (events_.active() && events_.Check(t1, y1_)) {
       const double t_event =
           events_.Locate(HermiteStep(t_, h, y_, f0_, y1_, f1_), t_, t1, EventTolerance(), y_event_);
-      if (t_event < t1 && !(last && to_event)) {
+      if (t_event < t1 && !redo_spent_) {
         // The step went past an event: its stages there saw the equations of the other side
         // (a contact's force switching on, a stop's impulse due, a kink of a force law), which
         // its error estimate does not measure and its dense output does not model, so the state
@@ -432,8 +435,14 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
         commit_pending_ = false;
         StepRejected();
         event_stop_ = t_event;
+        // One retake per event: when the retaken step finds it later than located (an event
+        // function that creeps to zero, as a venting bag's pressure to the ambient one, or jumps),
+        // the step that finds it next ends there, as before, rather than retake after retake
+        // crawl towards it.
+        redo_spent_ = true;
         continue;
       }
+      redo_spent_ = false;
       // The step ends at the event, with the state before it; the event's change waits for
       // the next step, so whatever the caller evaluates on this step sees the system as the
       // step did.
