@@ -25,7 +25,10 @@ namespace {
 
 // The angles where a torque function's slope jumps: a table's inner rows, and their mirror
 // images when the table describes positive angles only (it is read mirrored below zero). Its
-// first and last rows are no kinks: past them the table runs on its end segments' slopes.
+// first and last rows are no kinks: past them the table runs on its end segments' slopes. Nor is
+// a row at zero (a neck's signed table, flexion against extension): an axis at rest sits there
+// and would stop every step on the integrator's noise (as kTurnResolution keeps the histories
+// from turning there, runtime/forces/joint_hysteresis.cpp).
 std::vector<double> TableKinks(const FunctionTable& functions, std::int32_t id) {
   std::vector<double> kinks;
   if (id < 0 || functions.kind[static_cast<std::size_t>(id)] != FunctionTable::Kind::kTable) {
@@ -36,6 +39,7 @@ std::vector<double> TableKinks(const FunctionTable& functions, std::int32_t id) 
   const bool mirrored = !CoversNegative(functions, id);
   for (std::size_t row = first + 1; row + 1 < first + count; ++row) {
     const double x = functions.points_x[row];
+    if (x == 0) continue;
     kinks.push_back(x);
     if (mirrored && x > 0) kinks.push_back(-x);
   }
