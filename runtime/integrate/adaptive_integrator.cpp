@@ -421,8 +421,7 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     commit_pending_ = true;
 
     if (events_.active() && events_.Check(t1, y1_)) {
-      const double t_event =
-          events_.Locate(HermiteStep(t_, h, y_, f0_, y1_, f1_), t_, t1, EventTolerance(), y_event_);
+      const double t_event = events_.Locate(*this, t_, t1, EventTolerance(), y_event_);
       if (t_event < t1 && !redo_spent_) {
         // The step went past an event: its stages there saw the equations of the other side
         // (a contact's force switching on, a stop's impulse due, a kink of a force law), which

@@ -8,8 +8,8 @@
 // ResizeWorkspace and TryStep (fill y1_ from y_, f0_ and the step, and the weighted error), and
 // if the method has a better interpolant than the cubic Hermite one, PrepareDenseOutput (called
 // once per accepted step, before y_ and f0_ move on: store what DenseOutput needs) and
-// DenseOutput. The output rows read DenseOutput; events are located on the step's cubic Hermite
-// interpolant (events.h), and a step that finds one inside it is taken again to end on it.
+// DenseOutput. The event locator and the output rows both read DenseOutput; a step that finds
+// an event inside it is taken again to end on it.
 #pragma once
 
 #include <cstddef>

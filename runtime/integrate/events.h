@@ -1,10 +1,10 @@
 // Event location shared by every integrator. After an accepted step the integrator evaluates
 // the system's event functions g_k at the step end; for every sign change it locates the root on
-// a continuous interpolant of the step (the cubic Hermite one from the end values and
-// derivatives) by a safeguarded Illinois iteration, stops at the earliest root, and hands the
-// crossing components to the system. A step that went past an event is taken again to end on it
-// (AdaptiveIntegrator::StepOnce), so the state handed over is a step's end, not the
-// interpolation of a step whose stages saw the other side of the event.
+// a continuous interpolant of the step (the method's dense output, or a cubic Hermite from the
+// end values and derivatives) by a safeguarded Illinois iteration, stops at the earliest root, and
+// hands the crossing components to the system. A step that went past an event is taken again to end
+// on it (AdaptiveIntegrator::StepOnce), so the state handed over comes from a step whose stages did
+// not see the other side of the event.
 #pragma once
 
 #include <cstddef>
@@ -28,26 +28,6 @@ class StepInterpolant {
 void HermiteInterpolate(double theta, double h, std::span<const double> y0,
                         std::span<const double> f0, std::span<const double> y1,
                         std::span<const double> f1, std::span<double> y);
-
-// The cubic Hermite interpolant of a step from (t0, y0, f0) over h to (y1, f1), as a
-// StepInterpolant. The step loop locates events on it rather than on a method's dense output:
-// the step that lands on an event ends at it, where this interpolant meets the end state and
-// derivative exactly, and an exponential method's own dense output costs a matrix function at
-// every trial time of the root search.
-class HermiteStep final : public StepInterpolant {
- public:
-  HermiteStep(double t0, double h, std::span<const double> y0, std::span<const double> f0,
-              std::span<const double> y1, std::span<const double> f1)
-      : t0_(t0), h_(h), y0_(y0), f0_(f0), y1_(y1), f1_(f1) {}
-  void Interpolate(double t, std::span<double> y) const override {
-    HermiteInterpolate((t - t0_) / h_, h_, y0_, f0_, y1_, f1_, y);
-  }
-
- private:
-  double t0_;
-  double h_;
-  std::span<const double> y0_, f0_, y1_, f1_;
-};
 
 class EventLocator {
  public:
