@@ -70,6 +70,7 @@ void AdaptiveIntegrator::Serialize(Archive& archive) {
   archive.Field(step_limit_);
   archive.Field(event_stop_);
   archive.Field(redo_spent_);
+  archive.Field(event_seen_at_);
   archive.Field(quadrature_scale_);
   archive.Field(stats_);
   controller_.Serialize(archive);
@@ -434,6 +435,7 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
         commit_pending_ = false;
         StepRejected();
         event_stop_ = t_event;
+        event_seen_at_ = t1;
         // One retake per event: when the retaken step finds it later than located (an event
         // function that creeps to zero, as a venting bag's pressure to the ambient one, or jumps),
         // the step that finds it next ends there, as before, rather than retake after retake
@@ -455,6 +457,11 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
       result.t = t_;
       return result;
     }
+
+    // The retaken step ended before the event it was retaken for: the next one ends where the
+    // first step saw it, so an event whose function soon crosses back (a lock level passed for a
+    // moment) is not stepped over.
+    if (last && to_event && redo_spent_ && event_seen_at_ > t1) event_stop_ = event_seen_at_;
 
     // Project, and re-evaluate the end derivative only if the projection moved the state by
     // more than a small fraction of the tolerance, so the next step (and the FSAL stage) starts

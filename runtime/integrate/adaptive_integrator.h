@@ -180,7 +180,8 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   // An event an attempt found inside its step, which the next attempts land on (infinity: none;
   // see StepOnce).
   double event_stop_ = std::numeric_limits<double>::infinity();
-  bool redo_spent_ = false;  // the step was retaken for the event it found (StepOnce)
+  bool redo_spent_ = false;     // the step was retaken for the event it found (StepOnce)
+  double event_seen_at_ = 0.0;  // the end of the step that found it
   // The system's StepLimit at the current step start (infinity: none).
   double step_limit_ = std::numeric_limits<double>::infinity();
 
