@@ -102,6 +102,20 @@ void SettingsChecker::CheckRunSettings(Scope& scope, const BoundBlock& scenario_
                            "reference run needs",
                            runtime::kMinRelativeTolerance));
       }
+      // (Only a given one: the default follows a relative tolerance, refused above if too tight.)
+      const ast::Statement* absolute = One(bound, "abs_tolerance");
+      if (absolute != nullptr && run.absolute_tolerance < runtime::kMinAbsoluteTolerance) {
+        Report(DiagnosticKind::kToleranceBelowRounding, absolute->range,
+               fmt::format("an abs_tolerance of {:.3g} is tighter than a double can meet: a "
+                           "step's rounding errors are about {:.1e} of the terms a state "
+                           "component is made of, and those are at least a thousandth of an SI "
+                           "unit (a millimetre, a milliradian)",
+                           run.absolute_tolerance, runtime::kMinRelativeTolerance),
+               "below what doubles can resolve",
+               fmt::format("use an abs_tolerance of at least {:.1e}, or leave it out (a "
+                           "thousandth of `tolerance`)",
+                           runtime::kMinAbsoluteTolerance));
+      }
       run.min_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "min_step").value_or(1e-9);
       run.max_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "max_step");
       run.initial_step = ReadQuantity(scope, bound, BlockKind::kIntegrator, "initial_step");

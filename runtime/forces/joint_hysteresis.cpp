@@ -116,6 +116,10 @@ double JointSpringTorque(const Model& model, const Data& data, std::size_t s, st
          LoadingUnloadingForce(model.functions, id, std::abs(angle), history, side.mirror);
 }
 
+double JointAxisAngle(const Model& model, const Data& data, std::size_t s, std::size_t k) {
+  return MotionOfAxis(model, data, s, k).angle;
+}
+
 double JointTurnFunction(const Model& model, const Data& data, std::size_t h) {
   const JointHistories& histories = data.joint_histories;
   const std::size_t s = histories.segment[h];

@@ -8,7 +8,8 @@
 // ResizeWorkspace and TryStep (fill y1_ from y_, f0_ and the step, and the weighted error), and
 // if the method has a better interpolant than the cubic Hermite one, PrepareDenseOutput (called
 // once per accepted step, before y_ and f0_ move on: store what DenseOutput needs) and
-// DenseOutput. The event locator and the output rows both read DenseOutput.
+// DenseOutput. The event locator and the output rows both read DenseOutput; a step that finds
+// an event inside it is taken again to end on it.
 #pragma once
 
 #include <cstddef>
@@ -176,6 +177,11 @@ class AdaptiveIntegrator : public Integrator, protected StepInterpolant {
   std::vector<double> end_state_;
   std::vector<double> dense_y0_, dense_f0_, dense_f1_;
   double restart_step_ = 0.0;  // RestartAt's first step (0: none)
+  // An event an attempt found inside its step, which the next attempts land on (infinity: none;
+  // see StepOnce).
+  double event_stop_ = std::numeric_limits<double>::infinity();
+  bool redo_spent_ = false;     // the step was retaken for the event it found (StepOnce)
+  double event_seen_at_ = 0.0;  // the end of the step that found it
   // The system's StepLimit at the current step start (infinity: none).
   double step_limit_ = std::numeric_limits<double>::infinity();
 

@@ -1,8 +1,10 @@
 // Event location shared by every integrator. After an accepted step the integrator evaluates
 // the system's event functions g_k at the step end; for every sign change it locates the root on
-// a continuous interpolant of the step (DOPRI5's dense output, or a cubic Hermite from the end
-// values and derivatives) by a safeguarded Illinois iteration, stops at the earliest root, and
-// hands the crossing components to the system.
+// a continuous interpolant of the step (the method's dense output, or a cubic Hermite from the
+// end values and derivatives) by a safeguarded Illinois iteration, stops at the earliest root, and
+// hands the crossing components to the system. A step that went past an event is taken again to end
+// on it (AdaptiveIntegrator::StepOnce), so the state handed over comes from a step whose stages did
+// not see the other side of the event.
 #pragma once
 
 #include <cstddef>

@@ -115,6 +115,15 @@ class OdeSystem {
 // refuses below 10 ulps). 100 ulps: 2.2e-14.
 inline constexpr double kMinRelativeTolerance = 100.0 * 2.220446049250313e-16;
 
+// The smallest absolute tolerance: kMinRelativeTolerance of a thousandth of an SI unit. The
+// absolute tolerance weighs a state component near zero (a joint angle, a velocity at rest),
+// whose rounding error is that of the terms it is made of: a thousandth of a metre, metre per
+// second or radian is the finest scale a crash scene's state has (a millimetre, a milliradian),
+// and 100 ulps of it is what a step's rounding leaves. Below it, such a component fails the
+// error test on rounding alone (1e-300 held a velocity at rest to nothing: every step shrank to
+// the minimum). It is also the default (a thousandth of `tolerance`) at the tightest tolerance.
+inline constexpr double kMinAbsoluteTolerance = 1e-3 * kMinRelativeTolerance;
+
 struct IntegratorOptions {
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-9;

@@ -14,12 +14,39 @@
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/joint.h"
 #include "runtime/forces/forces.h"
+#include "runtime/forces/functions.h"
 #include "runtime/forces/joint_hysteresis.h"
 #include "runtime/forces/state_owner.h"
 #include "runtime/restraint/belts.h"
 #include "runtime/run/energy.h"
 
 namespace sled::runtime {
+namespace {
+
+// The angles where a torque function's slope jumps: a table's inner rows, and their mirror
+// images when the table describes positive angles only (it is read mirrored below zero). Its
+// first and last rows are no kinks: past them the table runs on its end segments' slopes. Nor is
+// a row at zero (a neck's signed table, flexion against extension): an axis at rest sits there
+// and would stop every step on the integrator's noise (as kTurnResolution keeps the histories
+// from turning there, runtime/forces/joint_hysteresis.cpp).
+std::vector<double> TableKinks(const FunctionTable& functions, std::int32_t id) {
+  std::vector<double> kinks;
+  if (id < 0 || functions.kind[static_cast<std::size_t>(id)] != FunctionTable::Kind::kTable) {
+    return kinks;
+  }
+  const auto first = static_cast<std::size_t>(functions.first[static_cast<std::size_t>(id)]);
+  const auto count = static_cast<std::size_t>(functions.count[static_cast<std::size_t>(id)]);
+  const bool mirrored = !CoversNegative(functions, id);
+  for (std::size_t row = first + 1; row + 1 < first + count; ++row) {
+    const double x = functions.points_x[row];
+    if (x == 0) continue;
+    kinks.push_back(x);
+    if (mirrored && x > 0) kinks.push_back(-x);
+  }
+  return kinks;
+}
+
+}  // namespace
 
 MultibodySystem::MultibodySystem(const Model& model, Data& data)
     : model_(model), data_(data), jacobian_(model) {
@@ -41,6 +68,13 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
   for (std::size_t h = 0; h < data.joint_histories.size(); ++h) {
     events_.push_back({EventKind::kJointTurn, h});
   }
+  for (std::size_t s = 0; s < model.nsegment(); ++s) {
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      for (const double row : TableKinks(model.functions, model.joint_function[s][axis])) {
+        events_.push_back({EventKind::kJointKink, s, 0.0, row, axis});
+      }
+    }
+  }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     // First touch and separation: the force law starts (and ends) with a kink that no step
     // should straddle; the impulse option's event marks the touch already.
@@ -48,6 +82,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
         {model.contacts.pair_impulse[k] ? EventKind::kContactImpulse : EventKind::kContactTouch,
          k});
     if (data.contacts.hysteresis[k]) events_.push_back({EventKind::kContactTurn, k});
+    for (const double row : TableKinks(model.functions, model.contacts.pair_function[k])) {
+      if (row > 0) events_.push_back({EventKind::kContactKink, k, 0.0, row});
+    }
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {
     const auto f = static_cast<std::size_t>(model.contacts.pair_function[k]);
@@ -301,6 +338,16 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       g[k] = JointTurnFunction(model_, data_, events_[k].segment);
       continue;
     }
+    if (events_[k].kind == EventKind::kJointKink) {
+      const Event& kink = events_[k];
+      g[k] = JointAxisAngle(model_, data_, kink.segment, kink.axis) - kink.row;
+      continue;
+    }
+    if (events_[k].kind == EventKind::kContactKink) {
+      // (The deflection is 0 while the pair is apart.)
+      g[k] = data_.contacts.deflection[events_[k].segment] - events_[k].row;
+      continue;
+    }
     if (events_[k].kind == EventKind::kAirbagFull) {
       g[k] = AirbagFullnessEvent(model_, data_, events_[k].segment);
       continue;
@@ -340,7 +387,9 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       case EventKind::kContactImpulse:
       case EventKind::kContactTouch:
       case EventKind::kContactTurn:
+      case EventKind::kContactKink:
       case EventKind::kJointTurn:
+      case EventKind::kJointKink:
       case EventKind::kBelt:
       case EventKind::kAirbagFull:
       case EventKind::kAirbagInflow:
@@ -417,7 +466,10 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     }
     return EventEffect::kModeChanged;
   }
-  if (events_[k].kind == EventKind::kContactTouch) return EventEffect::kModeChanged;
+  if (events_[k].kind == EventKind::kContactTouch || events_[k].kind == EventKind::kJointKink ||
+      events_[k].kind == EventKind::kContactKink) {
+    return EventEffect::kModeChanged;
+  }
   if (events_[k].kind == EventKind::kContactTurn) {
     if (direction < 0 && Evaluate(t, y)) {
       TurnContactHistory(model_, data_, events_[k].segment);
@@ -506,7 +558,9 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
     case EventKind::kContactImpulse:
     case EventKind::kContactTouch:
     case EventKind::kContactTurn:
+    case EventKind::kContactKink:
     case EventKind::kJointTurn:
+    case EventKind::kJointKink:
     case EventKind::kBelt:
     case EventKind::kAirbagFull:
     case EventKind::kAirbagInflow:

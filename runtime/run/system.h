@@ -66,7 +66,10 @@ class MultibodySystem : public OdeSystem {
   // deflection, and with it the unloading curve, is set there). kBelt: a belt's junction sticks
   // or slips, a wrap re-anchors, a span's strain turns (runtime/restraint/belt_events.h).
   // kJointTurn: a hysteretic joint axis's angle turns while it loads
-  // (runtime/forces/joint_hysteresis.h).
+  // (runtime/forces/joint_hysteresis.h). kJointKink and kContactKink: a joint axis's angle or a
+  // contact pair's deflection passes an inner row of its tabulated torque or force function,
+  // where the slope jumps (a stop's table going from 0 to 30,000 N*m/rad, a foam's from 100 to
+  // 167 N/mm); they only stop the step there, so that no step's stages straddle the kink.
   enum class EventKind {
     kStop,
     kTwistStop,
@@ -74,17 +77,21 @@ class MultibodySystem : public OdeSystem {
     kContactImpulse,
     kContactTouch,
     kContactTurn,
+    kContactKink,
     kJointTurn,
+    kJointKink,
     kBelt,
     kAirbagFull,
     kAirbagInflow
   };
   struct Event {
     EventKind kind;
-    std::size_t segment;  // the joint's (child) segment; for the contact events the pair; for
-                          // kBelt the index into belt_events_; for kJointTurn the history;
-                          // for the airbag events the bag
-    double time = 0.0;    // kAirbagInflow
+    std::size_t segment;   // the joint's (child) segment; for the contact events the pair; for
+                           // kBelt the index into belt_events_; for kJointTurn the history;
+                           // for the airbag events the bag
+    double time = 0.0;     // kAirbagInflow
+    double row = 0.0;      // kJointKink, kContactKink: the row's angle or deflection
+    std::size_t axis = 0;  // kJointKink: the joint's axis (0..2, as Model::joint_function)
   };
 
   // The impulse or lock switch of event k, on data_'s state.
