@@ -45,6 +45,11 @@ void RunSink::OnStop(const runtime::Model& model, const runtime::Data& data) {
   (void)data;
 }
 
+void RunSink::OnRows(const runtime::Model& model, const runtime::TimeSeries& series) {
+  (void)model;
+  (void)series;
+}
+
 bool RunSink::OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) {
   (void)model;
   (void)result;
@@ -70,8 +75,10 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   run_options.checkpoints = &checkpoint_folder;
   run_options.resume = options.resume;
   run_options.stop = options.stop;
+  run_options.row_thread = options.threaded;
   result.summary = runtime::Run(model, data, result.series, run_options);
   if (result.summary.failed) LocateFailure(model, result.summary.failure);
+  for (RunSink* sink : sinks) sink->OnRows(model, result.series);
 
   // Filtered channels and injury criteria, from the rows there are (up to a failure).
   runtime::post::FilteredChannels filtered =
