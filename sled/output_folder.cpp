@@ -33,20 +33,37 @@ void OutputFolder::OnStop(const runtime::Model& model, const runtime::Data& data
 
 namespace {
 
-std::pair<bool, std::string> WriteSeries(const std::string& path,
-                                         const runtime::TimeSeries& series) {
+std::pair<bool, std::string> WriteSeries(const std::string& path, const runtime::TimeSeries& series,
+                                         bool two_threads) {
   std::string why;
-  const bool written = runtime::WriteTimeSeriesCsv(path, series, &why);
+  const bool written = runtime::WriteTimeSeriesCsv(path, series, &why, two_threads);
   return {written, why};
 }
 
 }  // namespace
 
+void OutputFolder::OnRowValues(std::span<const double> row) {
+  if (!options_.parallel_writes) return;
+  runtime::AppendCsvRows(row, row.size(), row_lines_);
+  ++rows_seen_;
+}
+
 void OutputFolder::OnRows(const runtime::Model& model, const runtime::TimeSeries& series) {
   (void)model;
   if (!options_.parallel_writes) return;
   const std::string path = (std::filesystem::path(options_.directory) / "timeseries.csv").string();
-  series_written_ = std::async(std::launch::async, WriteSeries, path, std::cref(series));
+  // The lines made as the rows came, unless the series has rows this sink did not see (those
+  // a resumed run kept from its checkpoint).
+  if (rows_seen_ == series.rows()) {
+    series_written_ = std::async(std::launch::async, [this, path, &series] {
+      std::string why;
+      const bool written =
+          runtime::WriteCsvText(path, runtime::TimeSeriesCsvHeader(series), row_lines_, &why);
+      return std::pair<bool, std::string>(written, why);
+    });
+    return;
+  }
+  series_written_ = std::async(std::launch::async, WriteSeries, path, std::cref(series), true);
 }
 
 bool OutputFolder::OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) {
@@ -68,7 +85,8 @@ bool OutputFolder::OnEnd(const runtime::Model& model, const RunResult& result, s
   const std::string glb_path = (out / "animation.glb").string();
   std::optional<std::pair<bool, std::string>> filtered_written, glb_written;
   auto write_filtered = [&] {
-    return WriteSeries((out / "timeseries_filtered.csv").string(), result.filtered);
+    return WriteSeries((out / "timeseries_filtered.csv").string(), result.filtered,
+                       options_.parallel_writes);
   };
   auto write_glb = [&] {
     std::string glb_why;
@@ -81,7 +99,7 @@ bool OutputFolder::OnEnd(const runtime::Model& model, const RunResult& result, s
   }
   const std::pair<bool, std::string> series_written =
       rows_on_thread ? series_written_.get()
-                     : WriteSeries((out / "timeseries.csv").string(), result.series);
+                     : WriteSeries((out / "timeseries.csv").string(), result.series, false);
   write("timeseries.csv", series_written.first, series_written.second);
   if (filtered) {
     if (!filtered_written) filtered_written = write_filtered();

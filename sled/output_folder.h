@@ -7,6 +7,7 @@
 #include <functional>
 #include <future>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,8 +25,9 @@ struct OutputFolderOptions {
   std::vector<std::string> notes;
   // For an interrupted run, the signal's name for summary.json ("SIGINT"); may be empty.
   std::function<std::string()> interrupted_by;
-  // Write timeseries.csv on a thread of its own from OnRows, while the run's post-processing
-  // and the other files go on (`sled run`; the files are the same).
+  // Make timeseries.csv's lines as the rows come and write it on a thread of its own from
+  // OnRows, while the post-processing and the other files go on, each CSV formatted on two
+  // threads (`sled run`; the files are the same).
   bool parallel_writes = false;
 };
 
@@ -37,6 +39,8 @@ class OutputFolder : public RunSink {
   void OnRow(const runtime::Model& model, const runtime::Data& data) override;
   // The state printout DIR/dump_<T>.txt.
   void OnStop(const runtime::Model& model, const runtime::Data& data) override;
+  // With parallel_writes: timeseries.csv's lines, made as the rows come (on the rows' thread).
+  void OnRowValues(std::span<const double> row) override;
   // With parallel_writes: starts writing timeseries.csv.
   void OnRows(const runtime::Model& model, const runtime::TimeSeries& series) override;
   // Every file of the folder, each tried; false with `error` naming every file that could not be
@@ -55,6 +59,9 @@ class OutputFolder : public RunSink {
   std::vector<std::string> dumps_written_;
   std::vector<std::string> dump_errors_;
   std::set<std::string> written_;
+  // The lines of the rows OnRowValues saw, and how many.
+  std::string row_lines_;
+  std::size_t rows_seen_ = 0;
   // timeseries.csv being written (OnRows): whether it was, and why not.
   std::future<std::pair<bool, std::string>> series_written_;
 };

@@ -53,6 +53,8 @@ class RunSink {
   // At each output row, after the state there is evaluated (forces, accelerations, joint
   // wrenches current). A resumed run shows the rows from its checkpoint on.
   virtual void OnRow(const runtime::Model& model, const runtime::Data& data);
+  // Just before OnRow: the row's values as the TimeSeries holds them (time, then the channels).
+  virtual void OnRowValues(std::span<const double> row);
   // At each of SimulateOptions::stop_times the run reaches, evaluated the same way.
   virtual void OnStop(const runtime::Model& model, const runtime::Data& data);
   // Once, when the run has stopped and its rows are final, before the post-processing: a sink

@@ -224,7 +224,10 @@ void OutputRows::Evaluate(const Job& job) {
     UpdateEnergy(model_, data_, initial_potential_, energy_);
     WatchTablesAtRow(model_, data_);
     AppendRow(model_, data_, series_);
-    if (options_.observer) options_.observer->OnRow(model_, data_);
+    if (options_.observer) {
+      options_.observer->OnRowValues(std::span<const double>(series_.values).last(series_.columns));
+      options_.observer->OnRow(model_, data_);
+    }
     ++next_row_;
     if (options_.progress) {
       options_.progress(static_cast<double>(next_row_ - 1) / static_cast<double>(outputs_ - 1),

@@ -172,7 +172,10 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     UpdateEnergy(model, data, initial_potential, summary.energy);
     WatchTablesAtRow(model, data);
     AppendRow(model, data, series);
-    if (options.observer) options.observer->OnRow(model, data);
+    if (options.observer) {
+      options.observer->OnRowValues(std::span<const double>(series.values).last(series.columns));
+      options.observer->OnRow(model, data);
+    }
   } else {
     fail(failure, data.time);
   }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,8 @@ class RunObserver {
  public:
   virtual ~RunObserver() = default;
   virtual void OnRow(const Model& model, const Data& data) = 0;
+  // The row just appended to the TimeSeries (time, then the channels), before OnRow.
+  virtual void OnRowValues(std::span<const double> row) { (void)row; }
   virtual void OnStop(const Model& model, const Data& data) = 0;
 };
 
