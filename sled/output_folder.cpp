@@ -94,8 +94,9 @@ bool OutputFolder::OnEnd(const runtime::Model& model, const RunResult& result, s
     return std::pair<bool, std::string>(written, glb_why);
   };
   if (rows_on_thread) {
+    std::future<std::pair<bool, std::string>> glb = std::async(std::launch::async, write_glb);
     if (filtered) filtered_written = write_filtered();
-    glb_written = write_glb();
+    glb_written = glb.get();
   }
   const std::pair<bool, std::string> series_written =
       rows_on_thread ? series_written_.get()
