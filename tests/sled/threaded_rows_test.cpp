@@ -2,7 +2,8 @@
 // goes on (runtime/run/output_rows.h) give the run of one thread bit for bit: the rows, the
 // filtered rows, the criteria, the statistics, the energy balance, the stop times' states and
 // the checkpoints, for scenes with contacts, belts, airbags and loop constraints.
-#include <cstring>
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,7 +24,7 @@ void ExpectSameBits(const std::vector<double>& a, const std::vector<double>& b,
                     const std::string& what) {
   ASSERT_EQ(a.size(), b.size()) << what;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (std::memcmp(&a[i], &b[i], sizeof(double)) != 0) {
+    if (std::bit_cast<std::uint64_t>(a[i]) != std::bit_cast<std::uint64_t>(b[i])) {
       FAIL() << what << " differ at value " << i << ": " << a[i] << " and " << b[i];
     }
   }
