@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <future>
 
 #include <fmt/format.h>
 
@@ -158,23 +159,53 @@ std::string_view RunStatus(const RunSummary& summary) {
   return "ok";
 }
 
-bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error) {
-  AtomicFile out(path);
+std::string TimeSeriesCsvHeader(const TimeSeries& series) {
   // Names hold no commas or quotes (dotted names and units), so they need no CSV quoting.
   std::string header = "time [s]";
   for (const std::string& name : series.names) header += ',' + name;
-  out << header << "\n";
+  return header + '\n';
+}
+
+void AppendCsvRows(std::span<const double> values, std::size_t columns, std::string& out) {
+  if (columns == 0) return;
   // Each row written into one buffer with room for every value, a comma and the newline.
-  std::string line(series.columns * (kShortestMaxChars + 1), '\0');
-  for (std::size_t row = 0; row < series.rows(); ++row) {
+  std::string line(columns * (kShortestMaxChars + 1), '\0');
+  for (std::size_t start = 0; start + columns <= values.size(); start += columns) {
     char* end = line.data();
-    for (std::size_t column = 0; column < series.columns; ++column) {
+    for (std::size_t column = 0; column < columns; ++column) {
       if (column > 0) *end++ = ',';
-      end = WriteShortest(end, series.values[row * series.columns + column]);
+      end = WriteShortest(end, values[start + column]);
     }
     *end++ = '\n';
-    out << std::string_view(line.data(), static_cast<std::size_t>(end - line.data()));
+    out.append(line.data(), static_cast<std::size_t>(end - line.data()));
   }
+}
+
+bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error,
+                        bool two_threads) {
+  // With two threads, the second half of the rows is formatted on the other meanwhile.
+  const std::size_t split = two_threads ? series.rows() / 2 * series.columns : series.values.size();
+  const std::span<const double> values(series.values);
+  std::future<std::string> second;
+  if (split < values.size()) {
+    second = std::async(std::launch::async, [&] {
+      std::string text;
+      AppendCsvRows(values.subspan(split), series.columns, text);
+      return text;
+    });
+  }
+  std::string text = TimeSeriesCsvHeader(series);
+  AppendCsvRows(values.first(split), series.columns, text);
+  AtomicFile out(path);
+  out << text;
+  if (second.valid()) out << second.get();
+  return out.Commit(error);
+}
+
+bool WriteCsvText(const std::string& path, const std::string& header, const std::string& rows,
+                  std::string* error) {
+  AtomicFile out(path);
+  out << header << rows;
   return out.Commit(error);
 }
 

@@ -3,6 +3,7 @@
 // warnings).
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,8 +15,16 @@
 
 namespace sled::runtime {
 
-// Both return false with `error` set when a file cannot be written.
-bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error);
+// The writers return false with `error` set when a file cannot be written.
+// timeseries.csv (or the filtered rows): `two_threads` formats half the rows on a second thread.
+bool WriteTimeSeriesCsv(const std::string& path, const TimeSeries& series, std::string* error,
+                        bool two_threads = false);
+// The same file in parts: its header line, and the lines of rows (`columns` values each)
+// appended to `out`; WriteCsvText writes a header and rows made so.
+std::string TimeSeriesCsvHeader(const TimeSeries& series);
+void AppendCsvRows(std::span<const double> values, std::size_t columns, std::string& out);
+bool WriteCsvText(const std::string& path, const std::string& header, const std::string& rows,
+                  std::string* error);
 // What summary.json says besides the Model, the rows and the RunSummary.
 struct SummaryExtras {
   std::vector<std::string> warnings;

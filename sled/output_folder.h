@@ -5,8 +5,11 @@
 #pragma once
 
 #include <functional>
+#include <future>
 #include <set>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "output/export/animation_recorder.h"
@@ -22,6 +25,10 @@ struct OutputFolderOptions {
   std::vector<std::string> notes;
   // For an interrupted run, the signal's name for summary.json ("SIGINT"); may be empty.
   std::function<std::string()> interrupted_by;
+  // Make timeseries.csv's lines as the rows come and write it on a thread of its own from
+  // OnRows, while the post-processing and the other files go on, each CSV formatted on two
+  // threads (`sled run`; the files are the same).
+  bool parallel_writes = false;
 };
 
 class OutputFolder : public RunSink {
@@ -32,6 +39,10 @@ class OutputFolder : public RunSink {
   void OnRow(const runtime::Model& model, const runtime::Data& data) override;
   // The state printout DIR/dump_<T>.txt.
   void OnStop(const runtime::Model& model, const runtime::Data& data) override;
+  // With parallel_writes: timeseries.csv's lines, made as the rows come (on the rows' thread).
+  void OnRowValues(std::span<const double> row) override;
+  // With parallel_writes: starts writing timeseries.csv.
+  void OnRows(const runtime::Model& model, const runtime::TimeSeries& series) override;
   // Every file of the folder, each tried; false with `error` naming every file that could not be
   // written and why, one line each. summary.json lists those written before it that failed.
   bool OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) override;
@@ -48,6 +59,11 @@ class OutputFolder : public RunSink {
   std::vector<std::string> dumps_written_;
   std::vector<std::string> dump_errors_;
   std::set<std::string> written_;
+  // The lines of the rows OnRowValues saw, and how many.
+  std::string row_lines_;
+  std::size_t rows_seen_ = 0;
+  // timeseries.csv being written (OnRows): whether it was, and why not.
+  std::future<std::pair<bool, std::string>> series_written_;
 };
 
 }  // namespace sled

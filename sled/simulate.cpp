@@ -1,6 +1,7 @@
 #include "sled/simulate.h"
 
 #include <cmath>
+#include <future>
 #include <utility>
 
 #include <fmt/format.h>
@@ -20,6 +21,9 @@ class SinkFanOut : public runtime::RunObserver {
   explicit SinkFanOut(const std::vector<RunSink*>& sinks) : sinks_(sinks) {}
   void OnRow(const runtime::Model& model, const runtime::Data& data) override {
     for (RunSink* sink : sinks_) sink->OnRow(model, data);
+  }
+  void OnRowValues(std::span<const double> row) override {
+    for (RunSink* sink : sinks_) sink->OnRowValues(row);
   }
   void OnStop(const runtime::Model& model, const runtime::Data& data) override {
     for (RunSink* sink : sinks_) sink->OnStop(model, data);
@@ -43,6 +47,13 @@ void RunSink::OnRow(const runtime::Model& model, const runtime::Data& data) {
 void RunSink::OnStop(const runtime::Model& model, const runtime::Data& data) {
   (void)model;
   (void)data;
+}
+
+void RunSink::OnRowValues(std::span<const double> row) { (void)row; }
+
+void RunSink::OnRows(const runtime::Model& model, const runtime::TimeSeries& series) {
+  (void)model;
+  (void)series;
 }
 
 bool RunSink::OnEnd(const runtime::Model& model, const RunResult& result, std::string* error) {
@@ -70,14 +81,23 @@ RunResult Simulate(const runtime::Model& model, const SimulateOptions& options,
   run_options.checkpoints = &checkpoint_folder;
   run_options.resume = options.resume;
   run_options.stop = options.stop;
+  run_options.row_thread = options.threaded;
   result.summary = runtime::Run(model, data, result.series, run_options);
   if (result.summary.failed) LocateFailure(model, result.summary.failure);
+  for (RunSink* sink : sinks) sink->OnRows(model, result.series);
 
   // Filtered channels and injury criteria, from the rows there are (up to a failure).
+  // The criteria read the unfiltered rows: with a second thread, beside the filters.
+  std::future<std::vector<runtime::post::CriterionValue>> criteria;
+  if (options.threaded) {
+    criteria = std::async(std::launch::async, runtime::post::EvaluateCriteria, std::cref(model),
+                          std::cref(result.series));
+  }
   runtime::post::FilteredChannels filtered =
       runtime::post::FilterOutputChannels(model, result.series);
   result.filtered = std::move(filtered.series);
-  result.criteria = runtime::post::EvaluateCriteria(model, result.series);
+  result.criteria =
+      criteria.valid() ? criteria.get() : runtime::post::EvaluateCriteria(model, result.series);
   const double first_row = result.series.rows() > 0 ? result.series.values[0] : model.start_time;
   if (!result.summary.complete() || first_row > model.start_time) {
     runtime::post::MarkIncomplete(result.criteria, first_row, result.summary.end_time);

@@ -53,8 +53,13 @@ class RunSink {
   // At each output row, after the state there is evaluated (forces, accelerations, joint
   // wrenches current). A resumed run shows the rows from its checkpoint on.
   virtual void OnRow(const runtime::Model& model, const runtime::Data& data);
+  // Just before OnRow: the row's values as the TimeSeries holds them (time, then the channels).
+  virtual void OnRowValues(std::span<const double> row);
   // At each of SimulateOptions::stop_times the run reaches, evaluated the same way.
   virtual void OnStop(const runtime::Model& model, const runtime::Data& data);
+  // Once, when the run has stopped and its rows are final, before the post-processing: a sink
+  // may start writing them on a thread of its own (the rows stay unchanged until OnEnd).
+  virtual void OnRows(const runtime::Model& model, const runtime::TimeSeries& series);
   // Once, after the run, numerical failure included. False with `error` set when the sink could
   // not keep the result (a file it could not write); Simulate lists it in sink_errors.
   virtual bool OnEnd(const runtime::Model& model, const RunResult& result, std::string* error);
@@ -80,6 +85,11 @@ struct SimulateOptions {
   // When set and true, the run stops after its current output row (a signal handler sets it):
   // its rows so far are post-processed and handed to the sinks, summary.interrupted is set.
   const std::atomic<bool>* stop = nullptr;
+  // Use a second thread: the output rows are evaluated on it while the integration goes on
+  // (runtime::RunOptions::row_thread; the rows are the same bit for bit, the sinks' OnRow and
+  // OnStop and `progress` are called from it). `sled run` sets it; leave it off where every
+  // core already has a run (sweeps, studies).
+  bool threaded = false;
 };
 
 // Runs the Model with a fresh Data, post-processes the rows, then calls every sink's OnEnd in

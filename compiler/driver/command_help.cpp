@@ -65,7 +65,7 @@ std::vector<CommandHelp> MakeCommands() {
        "2 a usage error, 3 a numerical failure (the outputs up to it are kept),\n"
        "129/130/143 stopped by SIGHUP/SIGINT/SIGTERM.\n",
        {"-o", "--output", "--set", "--stdlib", "--diagnostics", "--format", "--dump-at",
-        "--checkpoint-every", "--resume", "--report", "--error-estimate"},
+        "--checkpoint-every", "--resume", "--report", "--error-estimate", "--single-thread"},
        R"(  -o, --output DIR       the output folder (default: FILE's name with `-out`)
   --format csv|iso-mme   iso-mme: also write the ISO-MME data set into DIR/iso-mme
                          (the CSV files are always written)
@@ -77,6 +77,8 @@ std::vector<CommandHelp> MakeCommands() {
   --report               also write DIR/report.html, as `sled report DIR` does
   --error-estimate       also run the scene at a tenth of its tolerances and write the
                          difference as the global error estimate (summary.json)
+  --single-thread        everything on one thread (by default a second one evaluates the
+                         output rows and writes files; the outputs are the same)
 )",
        "  sled run examples/frontal_sled.sled -o out\n"
        "  sled run examples/frontal_sled.sled -o out --set \"speed=50 km/h\" --format iso-mme\n"

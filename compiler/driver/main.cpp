@@ -61,6 +61,7 @@ struct Options {
   std::string resume;
   bool report = false;
   bool error_estimate = false;
+  bool single_thread = false;
   std::vector<double> tolerances;
   int jobs = 0;  // study: worker processes; 0: every core
 };
@@ -331,6 +332,8 @@ int main(int argc, char** argv) {
       options.report = true;
     } else if (arg == "--error-estimate") {
       options.error_estimate = true;
+    } else if (arg == "--single-thread") {
+      options.single_thread = true;
     } else if (arg == "--resume") {
       if (i + 1 >= args.size())
         return UsageError(fmt::format("`{}` needs a checkpoint file", arg), options.command);
@@ -389,6 +392,7 @@ int main(int argc, char** argv) {
       run.resume = options.resume;
       run.report = options.report;
       run.error_estimate = options.error_estimate;
+      run.threaded = !options.single_thread;
       if (options.command == "study")
         return sled::driver::StudyCommand({run, options.tolerances, options.jobs});
       return sled::driver::RunCommand(run);

@@ -209,6 +209,7 @@ int RunCommand(const RunCommandOptions& options) {
   folder_options.directory = directory;
   folder_options.test_name = TestName(options.file);
   folder_options.iso_mme = options.iso_mme;
+  folder_options.parallel_writes = options.threaded;
   folder_options.notes = compiled->Notes();
   folder_options.interrupted_by = [&signals] {
     return std::string(InterruptSignals::Name(signals.signal()));
@@ -227,6 +228,7 @@ int RunCommand(const RunCommandOptions& options) {
   simulate_options.stop = signals.stop();
   if (!resume.empty()) simulate_options.resume = &checkpoint;
   simulate_options.error_estimate = options.error_estimate;
+  simulate_options.threaded = options.threaded;
   const RunResult result = Simulate(model, simulate_options, {&folder});
   const runtime::RunSummary& summary = result.summary;
   const int signal = summary.interrupted ? signals.signal() : 0;

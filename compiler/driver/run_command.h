@@ -32,6 +32,9 @@ struct RunCommandOptions {
   // Also run a companion at a tenth of the tolerances for a global error estimate
   // (output/post/global_error.h) in summary.json.
   bool error_estimate = false;
+  // A second thread for the output rows and the files (SimulateOptions::threaded); a sweep's
+  // runs, one per core, say --single-thread.
+  bool threaded = true;
 };
 
 // The items of a comma-separated option value, empty ones included ("a,,b" has three).

@@ -59,7 +59,8 @@ std::vector<std::string> RunArguments(const std::string& sled, const std::string
                                    manifest.scene,
                                    "-o",
                                    (fs::path(directory) / run.folder).string(),
-                                   "--diagnostics=compact"};
+                                   "--diagnostics=compact",
+                                   "--single-thread"};  // every core has a run
   argv.insert(argv.end(), manifest.run_arguments.begin(), manifest.run_arguments.end());
   for (std::size_t v = 0; v < manifest.variables.size(); ++v) {
     argv.push_back("--set");

@@ -749,4 +749,32 @@ void SerializeConstraints(Archive& archive, ConstraintWorkspace& w) {
   }
 }
 
+void TakeConstraintHistory(const ConstraintWorkspace& workspace, ConstraintHistory& history) {
+  const KluSolver& klu = *workspace.solver;
+  history.setup_failed = workspace.setup_failed;
+  history.setup_failure = workspace.setup_failure;
+  history.factored = klu.numeric != nullptr;
+  history.factored_rcond = klu.factored_rcond;
+  history.factored_values = klu.factored_values;
+}
+
+void GiveConstraintHistory(const ConstraintHistory& history, ConstraintWorkspace& workspace) {
+  KluSolver& klu = *workspace.solver;
+  workspace.setup_failed = history.setup_failed;
+  workspace.setup_failure = history.setup_failure;
+  if (history.factored == (klu.numeric != nullptr) &&
+      history.factored_rcond == klu.factored_rcond &&
+      history.factored_values == klu.factored_values) {
+    return;  // the same pivots: refactorizations come out the same
+  }
+  klu.factored_rcond = history.factored_rcond;
+  klu.factored_values = history.factored_values;
+  if (klu.symbolic == nullptr) return;
+  if (klu.numeric != nullptr) klu_free_numeric(&klu.numeric, &klu.common);
+  if (history.factored) {
+    klu.numeric = klu_factor(workspace.kkt_pointer.data(), workspace.kkt_index.data(),
+                             klu.factored_values.data(), klu.symbolic, &klu.common);
+  }
+}
+
 }  // namespace sled::runtime

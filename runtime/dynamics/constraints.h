@@ -146,6 +146,19 @@ bool ApplyConstraintsToSingularTree(const Model& model, Data& data, Failure* fai
 class Archive;
 void SerializeConstraints(Archive& archive, ConstraintWorkspace& workspace);
 
+// The same in memory, to hand another Data of the Model the solver's state (the output rows'
+// Data, runtime/run/output_rows.h): Give makes the same factorization again only when the
+// receiver's differs, so copying an unchanged one costs a comparison.
+struct ConstraintHistory {
+  bool setup_failed = false;
+  Failure setup_failure;
+  bool factored = false;
+  double factored_rcond = 0.0;
+  std::vector<double> factored_values;
+};
+void TakeConstraintHistory(const ConstraintWorkspace& workspace, ConstraintHistory& history);
+void GiveConstraintHistory(const ConstraintHistory& history, ConstraintWorkspace& workspace);
+
 // Projects the state y = [q; v; w; W] at time t onto phi = 0 and J v + phi_t = 0 (Gauss-Newton in
 // the metric of M; converged when |phi| <= 1e-12 m). Uses data's caches as scratch. For
 // OdeSystem::Project after an accepted step; changes y by the drift only.

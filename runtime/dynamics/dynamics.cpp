@@ -325,12 +325,15 @@ Mat6 SpatialInertia(const Model& model, std::size_t segment) {
   return inertia;
 }
 
-void ComputeKinematics(const Model& model, Data& data) {
+void ComputeKinematics(const Model& model, Data& data) { ComputeKinematics(model, data, {}); }
+
+void ComputeKinematics(const Model& model, Data& data, std::span<const std::uint8_t> segments) {
   for (std::size_t v = 0; v < data.vehicle.size(); ++v) {
     data.vehicle[v] = VehicleAt(model, v, data.time);
   }
   JointMotion motion;
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
+    if (!segments.empty() && !segments[s]) continue;
     const std::uint8_t locked = data.locked[s];
     ComputeJointPose(model, s, data.q, data.v, locked, motion);
     if (data.subspace_locked[s] != locked || SubspaceDependsOnPosition(model.joint_kind[s])) {

@@ -2,12 +2,19 @@
 // recursion for the accelerations (O(n) in the number of segments) and the joint wrenches.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "runtime/model/data.h"
 
 namespace sled::runtime {
 
 // Poses, velocities and motion subspaces from data.q, data.v and data.locked.
 void ComputeKinematics(const Model& model, Data& data);
+// The same for the segments marked in `segments` (one flag per segment; each marked segment's
+// ancestors must be marked too), and every vehicle: for a caller that reads only those. The
+// others keep what they held.
+void ComputeKinematics(const Model& model, Data& data, std::span<const std::uint8_t> segments);
 
 // Accelerations (data.vdot, data.acceleration) and joint wrenches from the forces in
 // data.external and data.generalized_force. False when an articulated inertia is singular or

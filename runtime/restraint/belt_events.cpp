@@ -104,7 +104,7 @@ void UpdateBeltRates(const Model& model, Data& data) {
       data.q[i] = state.rate_q[i] + sign * 0.5 * kRateStep * state.rate_dq[i];
     }
     data.time = t + sign * 0.5 * kRateStep;
-    ComputeKinematics(model, data);
+    ComputeKinematics(model, data, state.rate_segments);
     EvaluateBelts(model, data);
     for (std::size_t j = 0; j < state.transfer.size(); ++j) {
       double slip = state.transfer[j];

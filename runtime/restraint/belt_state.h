@@ -98,6 +98,9 @@ struct BeltState {
   // their derivative.
   std::vector<double> rate_q, rate_dq;
   std::vector<Eigen::Vector3d> rate_anchor;  // per junction: the body point under the middle
+  // Per segment: 1 when the belts' geometry reads its pose (a wrapped segment, an anchor's
+  // segment, or an ancestor of one), so the rates move only those.
+  std::vector<std::uint8_t> rate_segments;
   // Workspace of the slip solver, sized once (belt_slip.cpp).
   std::vector<std::int32_t> solve_index;  // per junction: its unknown, or -1
   std::vector<double> solve_residual, solve_step, solve_matrix, solve_trial;

@@ -37,8 +37,10 @@ struct Section {
     return {(y.x() - l10 * w) / l00, w};
   }
   // The derivative of the point at angle phi when phi decreases (the clockwise traversal).
-  Vec2 Clockwise(double phi) const {
-    const Vec2 dy(std::sin(phi), -std::cos(phi));
+  Vec2 Clockwise(double phi) const { return Clockwise(std::sin(phi), std::cos(phi)); }
+  // The same from phi's sine and cosine.
+  Vec2 Clockwise(double sine, double cosine) const {
+    const Vec2 dy(sine, -cosine);
     return {(dy.x() - l10 * dy.y() / l11) / l00, dy.y() / l11};
   }
 };
@@ -47,10 +49,17 @@ struct Section {
 // signed: |dx/dphi| by 16-point Gauss-Legendre.
 double SectionArc(const Section& section, double from, double to) {
   const double half = 0.5 * (from - to), mid = to + half;
+  // The nodes mid +- half x_k in pairs, by the angle sum: one sine and cosine per pair.
+  const double sin_mid = std::sin(mid), cos_mid = std::cos(mid);
   double arc = 0.0;
   for (int k = 0; k < 8; ++k) {
-    arc += kWeights[k] * (section.Clockwise(mid + half * kNodes[k]).norm() +
-                          section.Clockwise(mid - half * kNodes[k]).norm());
+    const double sin_k = std::sin(half * kNodes[k]), cos_k = std::cos(half * kNodes[k]);
+    const double ahead_sin = sin_mid * cos_k + cos_mid * sin_k;
+    const double ahead_cos = cos_mid * cos_k - sin_mid * sin_k;
+    const double back_sin = sin_mid * cos_k - cos_mid * sin_k;
+    const double back_cos = cos_mid * cos_k + sin_mid * sin_k;
+    arc += kWeights[k] * (section.Clockwise(ahead_sin, ahead_cos).norm() +
+                          section.Clockwise(back_sin, back_cos).norm());
   }
   return arc * half;
 }

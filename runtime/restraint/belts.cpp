@@ -240,6 +240,14 @@ void SetUpBelts(const Model& model, Data& data) {
   state.slack_stiffness.assign(table.size(), 1.0);
   state.rate_q.assign(static_cast<std::size_t>(model.nq), 0.0);
   state.rate_dq.assign(static_cast<std::size_t>(model.nq), 0.0);
+  state.rate_segments.assign(model.nsegment(), 0);
+  for (const FrameRef& frame : table.point_frame) {
+    if (frame.kind != FrameRef::Kind::kSegment) continue;
+    for (std::int32_t s = frame.index; s >= 0 && !state.rate_segments[Index(s)];
+         s = model.segment_parent[Index(s)]) {
+      state.rate_segments[Index(s)] = 1;
+    }
+  }
   for (std::size_t b = 0; b < table.size(); ++b) {
     const auto first = Index(table.first_point[b]), first_span = Index(table.first_span(b));
     for (std::size_t i = 0; i < Index(table.span_count(b)); ++i) {

@@ -11,37 +11,12 @@
 #include "runtime/run/checkpoint.h"
 #include "runtime/run/energy.h"
 #include "runtime/run/input_discontinuities.h"
+#include "runtime/run/output_rows.h"
 #include "runtime/run/outputs.h"
 #include "runtime/run/system.h"
 
 namespace sled::runtime {
 namespace {
-
-// The balance at data's state (after Forward): the terms, the residual, and the largest of each.
-void UpdateEnergy(const Model& model, const Data& data, double initial_potential,
-                  EnergySummary& energy) {
-  const EnergyBalance& balance = data.energy;
-  energy.kinetic = KineticEnergy(model, data);
-  energy.potential = PotentialEnergy(model, data);
-  energy.absorbed = balance.Absorbed();
-  energy.prescribed_work = balance.PrescribedWork();
-  energy.applied_work = balance.applied_work;
-  energy.impulses = balance.impulses;
-  energy.residual = balance.Residual(energy.kinetic, energy.potential);
-  energy.largest_residual = std::max(energy.largest_residual, std::abs(energy.residual));
-  for (double term : {energy.kinetic, energy.potential - initial_potential, energy.absorbed,
-                      energy.prescribed_work, energy.applied_work, energy.impulses}) {
-    energy.scale = std::max(energy.scale, std::abs(term));
-  }
-}
-
-void AppendRow(const Model& model, Data& data, TimeSeries& series) {
-  const std::size_t start = series.values.size();
-  series.values.resize(start + series.columns);  // reserved in advance: no reallocation
-  series.values[start] = data.time;
-  EvaluateChannels(model, data,
-                   std::span<double>(series.values).subspan(start + 1, series.columns - 1));
-}
 
 // Everything of a run that a checkpoint carries besides the rows, in one listing for both
 // directions.
@@ -160,17 +135,6 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     why.cause = std::move(cause);
     fail(why, t);
   };
-  // The state at t on the last step (its dense output), evaluated into data: false (and the
-  // summary says why) on failure. A time on the step's end reads the evaluation already made.
-  auto evaluate_at = [&](double t) {
-    integrator->Interpolate(t, y);
-    const std::int64_t before = data.evaluations;
-    const bool ok = system.Evaluate(t, y);
-    summary.output_evaluations += data.evaluations - before;
-    if (!ok) fail(system.failure(), t);
-    return ok;
-  };
-
   double initial_potential = 0.0;
   std::size_t next_row = 1;
   if (options.resume != nullptr) {
@@ -208,7 +172,10 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
     UpdateEnergy(model, data, initial_potential, summary.energy);
     WatchTablesAtRow(model, data);
     AppendRow(model, data, series);
-    if (options.observer) options.observer->OnRow(model, data);
+    if (options.observer) {
+      options.observer->OnRowValues(std::span<const double>(series.values).last(series.columns));
+      options.observer->OnRow(model, data);
+    }
   } else {
     fail(failure, data.time);
   }
@@ -240,9 +207,15 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       ++next_checkpoint;
   }
 
+  // The rows from here on, on a Data of their own (output_rows.h), from the states and
+  // histories each step hands over.
+  OutputRows rows(model, series, options, next_row, outputs, initial_potential, summary.energy,
+                  options.row_thread && !summary.failed);
+  const std::size_t state_size = system.size();
+  double last_entry_time = -1.0;  // of the last step's last row or stop (-1: it had none)
   const std::vector<double> kinks = InputDiscontinuities(model);
   std::size_t next_kink = 0;
-  while (!summary.failed && integrator->time() < model.end_time) {
+  while (!summary.failed && integrator->time() < model.end_time && !rows.halted()) {
     const double t_now = integrator->time();
     while (next_kink < kinks.size() && kinks[next_kink] <= t_now) ++next_kink;
     const double t_stop =
@@ -258,47 +231,44 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       break;
     }
     const double t_end = integrator->time();
-    // Rows and stop times on the step, in time order, from its dense output.
-    while (!summary.failed) {
+    // Rows and stop times on the step, in time order, from its dense output, with the
+    // histories the step ended with.
+    OutputRows::Job& job = rows.NextJob();
+    while (true) {
       const bool row_next = next_row < outputs && row_time(next_row) <= t_end;
       const bool stop_next = next_stop < stops.size() && stops[next_stop] <= t_end;
       if (!row_next && !stop_next) break;
       if (row_next && (!stop_next || row_time(next_row) <= stops[next_stop])) {
-        if (!evaluate_at(row_time(next_row))) break;
-        UpdateEnergy(model, data, initial_potential, summary.energy);
-        WatchTablesAtRow(model, data);
-        AppendRow(model, data, series);
-        if (options.observer) options.observer->OnRow(model, data);
-        ++next_row;
-        if (options.progress) {
-          options.progress(static_cast<double>(next_row - 1) / static_cast<double>(outputs - 1),
-                           options.progress_context);
-        }
+        const double t = row_time(next_row++);
+        integrator->Interpolate(t, job.Add({true, true, t}, state_size));
         // A stop at the row's time sees the same state.
-        for (; next_stop < stops.size() && same_time(stops[next_stop], data.time); ++next_stop) {
-          if (options.observer) options.observer->OnStop(model, data);
-        }
-        // A stop request (a signal) ends the run after this row.
-        if (options.stop != nullptr && options.stop->load() && next_row < outputs) {
-          summary.interrupted = true;
-          break;
+        for (; next_stop < stops.size() && same_time(stops[next_stop], t); ++next_stop) {
+          job.Add({false, false, t}, state_size);
         }
       } else {
-        if (!evaluate_at(stops[next_stop])) break;
-        if (options.observer) options.observer->OnStop(model, data);
-        ++next_stop;
+        const double t = stops[next_stop++];
+        integrator->Interpolate(t, job.Add({false, true, t}, state_size));
       }
     }
-    if (summary.failed || summary.interrupted) break;
+    last_entry_time = job.entries.empty() ? -1.0 : job.entries.back().time;
+    if (!job.entries.empty()) {
+      job.histories.Take(data);
+      job.stats = integrator->stats();
+      rows.Submit();
+    }
     if (every > 0 && t_end >= checkpoint_time(next_checkpoint) - 1e-12 * every &&
         t_end < model.end_time) {
+      rows.Drain();  // the checkpoint carries the rows so far
+      if (rows.halted()) break;
+      MergeTableWatch(model, rows.data().table_watch, data.table_watch);
       Checkpoint checkpoint;
       checkpoint.model = FingerprintOf(model);
       checkpoint.time = checkpoint_time(next_checkpoint);
       checkpoint.next_row = static_cast<std::int64_t>(next_row);
       checkpoint.series = series;
       Archive archive = Archive::ForWriting();
-      SerializeRunState(archive, *integrator, data, initial_potential, summary.energy);
+      EnergySummary energy = rows.energy();
+      SerializeRunState(archive, *integrator, data, initial_potential, energy);
       checkpoint.state = archive.bytes();
       std::string where;
       std::string error;
@@ -310,8 +280,21 @@ RunSummary Run(const Model& model, Data& data, TimeSeries& series, const RunOpti
       while (checkpoint_time(next_checkpoint) <= t_end + 1e-12 * every) ++next_checkpoint;
     }
   }
+  rows.Finish();
+  summary.output_evaluations = rows.evaluations();
+  summary.energy = rows.energy();
+  MergeTableWatch(model, rows.data().table_watch, data.table_watch);
   summary.stats = integrator->stats();
-  summary.end_time = data.time;
+  summary.end_time = last_entry_time >= 0 && !summary.failed ? last_entry_time : data.time;
+  if (rows.halted()) {
+    // A row that could not be evaluated, or the stop request, ends the run there: the steps
+    // taken past it (by the integration running ahead of the rows) are not the run's.
+    summary.failed = rows.failed();
+    summary.failure = rows.failed() ? rows.failure() : Failure{};
+    summary.interrupted = rows.interrupted();
+    summary.stats = rows.halt_stats();
+    summary.end_time = rows.halt_time();
+  }
   summary.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return summary;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,8 @@ struct EnergySummary {
 struct RunSummary {
   std::string integrator;
   IntegratorStats stats;
-  // Evaluations of the dynamics for output rows and stop times that lie inside a step (a row on
-  // a step's end reads the evaluation the step made there); not in stats.evaluations.
+  // Evaluations of the dynamics for the output rows after the first and for the stop times, on
+  // the rows' own Data (runtime/run/output_rows.h); not in stats.evaluations.
   long output_evaluations = 0;
   // The global error estimate of the run, of the channels' ranges (output/post/
   // global_error.h), when the caller computed one; -1 otherwise.
@@ -58,6 +59,8 @@ class RunObserver {
  public:
   virtual ~RunObserver() = default;
   virtual void OnRow(const Model& model, const Data& data) = 0;
+  // The row just appended to the TimeSeries (time, then the channels), before OnRow.
+  virtual void OnRowValues(std::span<const double> row) { (void)row; }
   virtual void OnStop(const Model& model, const Data& data) = 0;
 };
 
@@ -86,6 +89,10 @@ struct RunOptions {
   // When set and true, the run stops after the output row it is at (a signal handler sets it);
   // the rows so far are kept and RunSummary::interrupted is set.
   const std::atomic<bool>* stop = nullptr;
+  // Evaluate the output rows and stop times on a second thread while the integration goes on
+  // (runtime/run/output_rows.h): the same rows bit for bit, with the observer and `progress`
+  // called from that thread. Off for callers that already use every core (sweeps, studies).
+  bool row_thread = false;
 };
 
 // The integrator options a Model's run settings give (the run's and its settling's).

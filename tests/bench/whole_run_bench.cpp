@@ -5,7 +5,11 @@
 //
 // BM_FlagshipWholeRun: examples/frontal_sled.sled from its file to its output folder, as
 // `sled run` does it (compile: parse, check, lower; run; filters and criteria; timeseries.csv,
-// timeseries_filtered.csv, summary.json, animation.glb), without the process's start.
+// timeseries_filtered.csv, summary.json, animation.glb), without the process's start, and with
+// its two threads (the output rows and the files beside the integration: SimulateOptions::
+// threaded, OutputFolderOptions::parallel_writes). BM_FlagshipWholeRunOneThread: the same on
+// one thread (`sled run --single-thread`, a sweep's runs). Wall time is what they are compared
+// by; their CPU time is the whole process's (both threads).
 // BM_MujocoHumanoidWholeRun: MuJoCo's 27-DOF humanoid (the MJCF file
 // shared/reference/mujoco-humanoid.xml beside the source tree, or $SLED_HUMANOID) loaded and
 // stepped for 200 ms at 0.1 ms steps (2,000 mj_step), the same simulated time as the flagship.
@@ -62,15 +66,18 @@ std::unique_ptr<Compilation> CompileFlagship(benchmark::State& state) {
   return compiled;
 }
 
-void BM_FlagshipWholeRun(benchmark::State& state) {
+void FlagshipWholeRun(benchmark::State& state, bool threaded) {
   const std::string directory = OutputDirectory();
   for (auto _ : state) {
     const std::unique_ptr<Compilation> compiled = CompileFlagship(state);
     if (!compiled) return;
     OutputFolderOptions options;
     options.directory = directory;
+    options.parallel_writes = threaded;
     OutputFolder folder(compiled->model(), options);
-    const RunResult result = Simulate(compiled->model(), {}, {&folder});
+    SimulateOptions simulate;
+    simulate.threaded = threaded;
+    const RunResult result = Simulate(compiled->model(), simulate, {&folder});
     if (result.failed() || !result.sink_errors.empty()) {
       state.SkipWithError("the flagship's run failed or its folder was not written");
       return;
@@ -78,6 +85,9 @@ void BM_FlagshipWholeRun(benchmark::State& state) {
     benchmark::DoNotOptimize(result.series.values.data());
   }
 }
+
+void BM_FlagshipWholeRun(benchmark::State& state) { FlagshipWholeRun(state, true); }
+void BM_FlagshipWholeRunOneThread(benchmark::State& state) { FlagshipWholeRun(state, false); }
 
 void BM_FlagshipRunOnly(benchmark::State& state) {
   const std::unique_ptr<Compilation> compiled = CompileFlagship(state);
@@ -135,7 +145,11 @@ void BM_MujocoHumanoidStepsOnly(benchmark::State& state) {
   }
 }
 
-BENCHMARK(BM_FlagshipWholeRun)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_FlagshipWholeRun)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK(BM_FlagshipWholeRunOneThread)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_MujocoHumanoidWholeRun)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_FlagshipRunOnly)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_MujocoHumanoidStepsOnly)->Unit(benchmark::kMillisecond)->UseRealTime();
