@@ -83,8 +83,7 @@ TEST(LegacyUnits, ASlipJointsSpringIsAForceAgainstItsDisplacement) {
   const Converted converted = ConvertText(deck_testing::Join(lines), options);
   ASSERT_EQ(converted.errors, 0) << converted.All();
   EXPECT_TRUE(converted.Has("force against its displacement")) << converted.All();
-  EXPECT_NE(converted.text.find("slip(lua -> lla)"), std::string::npos)
-      << converted.text;
+  EXPECT_NE(converted.text.find("slip(lua -> lla)"), std::string::npos) << converted.text;
   EXPECT_NE(converted.text.find("flexure = polynomial(0, 20 lbf/in)"), std::string::npos)
       << converted.text;
   EXPECT_NE(converted.text.find("stop = 90 in"), std::string::npos) << converted.text;
