@@ -315,6 +315,9 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
 void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {
   Evaluate(t, y);
   if (!belt_events_.empty()) UpdateBeltRates(model_, data_);
+  std::size_t angle_segment = model_.nsegment();
+  std::size_t angle_axis = 0;
+  double axis_angle = 0.0;
   for (std::size_t k = 0; k < events_.size(); ++k) {
     if (events_[k].kind == EventKind::kContactImpulse ||
         events_[k].kind == EventKind::kContactTouch) {
@@ -339,8 +342,14 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       continue;
     }
     if (events_[k].kind == EventKind::kJointKink) {
+      // A table's rows of one joint axis are consecutive events: its angle is computed once.
       const Event& kink = events_[k];
-      g[k] = JointAxisAngle(model_, data_, kink.segment, kink.axis) - kink.row;
+      if (kink.segment != angle_segment || kink.axis != angle_axis) {
+        angle_segment = kink.segment;
+        angle_axis = kink.axis;
+        axis_angle = JointAxisAngle(model_, data_, kink.segment, kink.axis);
+      }
+      g[k] = axis_angle - kink.row;
       continue;
     }
     if (events_[k].kind == EventKind::kContactKink) {
