@@ -421,8 +421,12 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     step_start_ = t_;
     commit_pending_ = true;
 
-    if (events_.active() && events_.Check(t1, y1_)) {
-      const double t_event = events_.Locate(*this, t_, t1, EventTolerance(), y_event_);
+    // The end of the bracket an event is located in: the step's end, or the first point inside
+    // the step where an event function that crossed back by the end had crossed.
+    double t_found = t1;
+    if (events_.active() &&
+        (events_.Check(t1, y1_) || events_.CheckInside(*this, t_, t1, y_event_, t_found))) {
+      const double t_event = events_.Locate(*this, t_, t_found, EventTolerance(), y_event_);
       if (t_event < t1 && !redo_spent_) {
         // The step went past an event: its stages there saw the equations of the other side
         // (a contact's force switching on, a stop's impulse due, a kink of a force law), which

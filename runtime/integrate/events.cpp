@@ -76,6 +76,24 @@ bool EventLocator::Check(double t1, std::span<const double> y1) {
   return false;
 }
 
+bool EventLocator::CheckInside(const StepInterpolant& interpolant, double t0, double t1,
+                               std::span<double> y, double& t_found) {
+  const std::size_t samples = count_ == 0 ? 0 : system_->EventSamples();
+  for (std::size_t i = 1; i <= samples; ++i) {
+    const double t = t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(samples + 1);
+    interpolant.Interpolate(t, y);
+    system_->Events(t, y, g_mid_);
+    for (std::size_t k = 0; k < count_; ++k) {
+      if (Crossed(g_start_[k], g_mid_[k])) {
+        std::copy(g_mid_.begin(), g_mid_.end(), g_end_.begin());
+        t_found = t;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 long EventLocator::EarliestCrossing(std::span<const double> g_low,
                                     std::span<const double> g_high) const {
   // The secant root of component k sits at the fraction |g_hi| / |g_hi - g_lo| back from the

@@ -47,6 +47,13 @@ class EventLocator {
   // changed sign since the step start.
   bool Check(double t1, std::span<const double> y1);
 
+  // After Check found no crossing at the step's end: evaluates g at the system's EventSamples()
+  // points evenly inside [t0, t1] on `interpolant`; true, with `t_found` the first of them where
+  // a component has crossed since the step start (g there becomes the bracket's high end for
+  // Locate), when one has. `y` is scratch.
+  bool CheckInside(const StepInterpolant& interpolant, double t0, double t1, std::span<double> y,
+                   double& t_found);
+
   // Locates the earliest root in [t0, t1] to `tolerance` in time on `interpolant`, and returns
   // the end of the final bracket: a time just past the root, where every crossing component has
   // its new sign. Leaves y at that time in `y` and records the crossing components.

@@ -93,6 +93,11 @@ class OdeSystem {
   // in time), stops there, and calls HandleEvent, which may change y (an impulse) and the
   // system itself (a joint locks). After an event the integrator restarts its history.
   virtual std::size_t EventCount() const { return 0; }
+  // How many points inside each accepted step the event functions are also evaluated at (on the
+  // step's continuous extension, one evaluation each), for event functions that can cross and
+  // cross back within one step, where the signs at the step's ends see nothing (a locked joint's
+  // constraint torque passing its unlock level for a moment). 0: the ends only.
+  virtual std::size_t EventSamples() const { return 0; }
   virtual void Events(double t, std::span<const double> y, std::span<double> g) {
     (void)t, (void)y, (void)g;
   }

@@ -21,6 +21,11 @@
 #include "runtime/run/energy.h"
 
 namespace sled::runtime {
+
+// The points inside each step at which the lock levels' event functions are sampled
+// (EventSamples): each costs an evaluation; three found every event of lock_cascade at every
+// tolerance of the suite's ladder.
+constexpr std::size_t kLockEventSamples = 3;
 namespace {
 
 // The angles where a torque function's slope jumps: a table's inner rows, and their mirror
@@ -310,6 +315,13 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
     if (axis.squaredNorm() > 0) sum += std::pow(torque.dot(axis.normalized()), 2);
   }
   return std::sqrt(sum);
+}
+
+std::size_t MultibodySystem::EventSamples() const {
+  const bool levels = std::any_of(events_.begin(), events_.end(), [](const Event& event) {
+    return event.kind == EventKind::kLock;
+  });
+  return levels ? kLockEventSamples : 0;
 }
 
 void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {

@@ -42,6 +42,9 @@ class MultibodySystem : public OdeSystem {
   std::string FailureReason() const override;
 
   std::size_t EventCount() const override { return events_.size(); }
+  // Three points inside each step when a joint locks or unlocks at a torque level: a constraint
+  // torque passes a level and comes back within a step that its ends do not show.
+  std::size_t EventSamples() const override;
   void Events(double t, std::span<const double> y, std::span<double> g) override;
   EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
 
