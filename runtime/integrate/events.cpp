@@ -37,6 +37,7 @@ void HermiteInterpolate(double theta, double h, std::span<const double> y0,
 void EventLocator::Reset(OdeSystem& system) {
   system_ = &system;
   count_ = system.EventCount();
+  samples_ = count_ == 0 ? 0 : system.EventSamples();
   g_start_.assign(count_, 0.0);
   g_end_.assign(count_, 0.0);
   g_low_.assign(count_, 0.0);
@@ -78,9 +79,8 @@ bool EventLocator::Check(double t1, std::span<const double> y1) {
 
 bool EventLocator::CheckInside(const StepInterpolant& interpolant, double t0, double t1,
                                std::span<double> y, double& t_found) {
-  const std::size_t samples = count_ == 0 ? 0 : system_->EventSamples();
-  for (std::size_t i = 1; i <= samples; ++i) {
-    const double t = t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(samples + 1);
+  for (std::size_t i = 1; i <= samples_; ++i) {
+    const double t = t0 + (t1 - t0) * static_cast<double>(i) / static_cast<double>(samples_ + 1);
     interpolant.Interpolate(t, y);
     system_->Events(t, y, g_mid_);
     for (std::size_t k = 0; k < count_; ++k) {

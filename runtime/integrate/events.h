@@ -81,6 +81,7 @@ class EventLocator {
 
   OdeSystem* system_ = nullptr;
   std::size_t count_ = 0;
+  std::size_t samples_ = 0;      // OdeSystem::EventSamples, read once in Reset
   std::vector<double> g_start_;  // at the step start
   std::vector<double> g_end_;    // at the step end
   std::vector<double> g_low_;    // Illinois bracket
