@@ -2,8 +2,8 @@
 # The standard library's body family (stdlib/humans/*.sled but male50), made from male50 by
 # scripts/scale_body.py. Each body's stated inputs are published figures of the Hybrid III dummy
 # of that size; the segment masses and lengths come from published regression equations where
-# one covers the body (scripts/segment_regressions.py), and child3 is scaled. The sources are
-# written into each file's header.
+# one covers the body (scripts/segment_regressions.py). The sources are written into each
+# file's header.
 #
 #   scripts/body_family.sh [OUT_DIR]     (default: stdlib/humans)
 #
@@ -47,20 +47,13 @@ scale --name child6 --stature 45.0in --mass 51.6lb --regression child6 --head-le
   --source "scaled adult ones; a child's ranges of motion and neck stiffness differ (not modelled)." \
   > "$out/child6.sled"
 
-# Jensen's (1989) proportions start at 4 years: no regression here covers a 3-year-old, so child3
-# stays male50 scaled to the Hybrid III 3-year-old's published segment weights.
-scale --name child3 --stature 37.2in --mass 34.09lb \
-  --segment-mass head=5.92lb --segment-mass neck=1.65lb --segment-mass torso=14.42lb \
-  --segment-mass upper_arms=1.86lb --segment-mass lower_arms=2.10lb \
-  --segment-mass upper_legs=4.26lb --segment-mass lower_legs=2.68lb --segment-mass feet=1.20lb \
-  --head-length 181.0mm \
-  --title "a 15-segment 3-year-old child, the Hybrid III 3-year-old's size, scaled (no regression)" \
-  --source "Stature 37.2 in (945 mm): $nhtsa_family" \
+# Jensen's (1989) regressions of the segments' shares on age, at 3 years: one year below their
+# sample, an extrapolation the header states.
+scale --name child3 --stature 37.2in --mass 34.09lb --regression child3 --head-length 181.0mm \
+  --title "a 15-segment 3-year-old child, the Hybrid III 3-year-old's size" \
+  --source "Stature 37.2 in (945 mm) and weight 34.09 lb (15.46 kg; the family table rounds it to" \
+  --source "34.1): $nhtsa_family" \
   --source "(https://one.nhtsa.gov/Research/HYBRID-III-3%E2%80%93Year-Old-Physical-Data)." \
-  --source "Segment weights (lb) from the same page: head 5.92, neck 1.65, torso with jacket" \
-  --source "14.42, and per side upper arm 0.93, lower arm and hand 1.05, upper leg 2.13, lower leg" \
-  --source "1.34, foot 0.60; total 34.09 lb (15.46 kg; the family table rounds it to 34.1). The" \
-  --source "torso is shared between thorax, abdomen and pelvis in male50's proportions." \
   --source "Head length 181 mm: derived (no published length found) from the 20 in (508 mm) head" \
   --source "circumference Humanetics gives for this dummy, with male50's head ellipse proportions" \
   --source "(its 200 x 156 mm ellipse is 561 mm round; 200 mm x 508 / 561 = 181 mm)." \

@@ -38,9 +38,13 @@ Bodies from published regression equations instead of uniform scaling:
   makes the total --mass (the header gives it: how far the regression's own sum is off). A
   regression that gives a segment a non-positive mass, or a share of the body mass or a length
   ratio far from male50's, is refused: the equations are being used outside their sample.
-  Moments of inertia follow the segment's mass and lengths as without --regression (the
-  published moments extrapolate badly at the 5th female's size, see docs/load_cases.md);
-  centres of mass stay at male50's place along each segment.
+  Moments of inertia (male and female): male50's times the published regression's moment at
+  the stated size over its moment at male50's, per axis, where that stays within INERTIA_BAND
+  of the moment male50's radii of gyration give at the new mass and lengths and keeps the
+  triangle inequality; otherwise (and for the children) they follow the segment's mass and
+  lengths as without --regression. Centres of mass stay at male50's place along each segment.
+  --regression child3       segment masses from Jensen's (1989) regressions of the shares on
+                            age at 3 years (one year below its sample); lengths scaled.
 
   --deflecting-chest        adds a sternum segment in front of the thorax on a slip joint `chest`
                             (x forward) with a force-deflection flexure and viscous damping, so
@@ -53,6 +57,7 @@ checks each body's total mass and standing height (computed from its geometry) a
 import argparse
 import re
 import sys
+import textwrap
 from pathlib import Path
 
 import segment_regressions
@@ -111,6 +116,7 @@ class Reference:
     def __init__(self, text):
         self.text = text
         self.masses = {}
+        self.inertias = {}  # segment -> its principal moments about x, y, z [kg*m^2]
         self.parent = {}  # child -> (parent, at_parent, at_child)
         self.ellipsoids = {}  # segment -> [(semi_axes, center)]
         self.root = re.search(r"^\s*reference = (\w+)", text, re.M).group(1)
@@ -124,6 +130,9 @@ class Reference:
             m = re.match(r"mass = (" + NUMBER + r") kg", s)
             if m and segment:
                 self.masses[segment] = float(m.group(1))
+            m = re.match(r"inertia = (.*) kg\*m\^2", s)
+            if m and segment:
+                self.inertias[segment] = vector(m.group(1))
             m = re.match(r"ellipsoid \{ semi_axes = (.*) mm\s+center = (.*) mm \}", s)
             if m and segment:
                 self.ellipsoids.setdefault(segment, []).append(
@@ -284,8 +293,69 @@ def regress(ref, name, stature, mass):
                 raise SystemExit(f"scale_body: the {name} regression makes {segment} "
                                  f"{lengths[segment]:.2f} times male50's length {where} (the "
                                  f"stature {overall:.2f} times): outside its sample")
-    return {"masses": masses, "lengths": lengths, "sum": regression_sum,
+    return {"masses": masses, "lengths": lengths, "sum": regression_sum, "total": mass,
+            "inertia": inertia_ratios(ref, name, model, mass, stature_cm),
             "citation": model["citation"]}
+
+
+def inertia_axes(segment):
+    """The regressions' axes for a segment's x, y and z moments: a foot's long axis is x."""
+    return ("si", "ml", "ap") if segment.startswith("foot") else ("ap", "ml", "si")
+
+
+def inertia_ratios(ref, name, model, mass, stature_cm):
+    """Per male50 segment, its moments about x, y and z at the stated size over the same
+    regressions' at male50's (78 kg, 175.3 cm), or None where the equations give a moment that is
+    not positive. A segment that several source segments make up (the forearm and hand) takes
+    the ratio of their sums, which leaves out the parallel-axis terms of their offsets."""
+    if "inertia" not in model:
+        return {}
+    at_size, at_reference = (
+        {axis: segment_regressions.evaluate(table[axis], m, h) for axis in table}
+        for table, m, h in ((model["inertia"][0], mass, stature_cm),
+                            (model["inertia"][1], segment_regressions.REFERENCE_MASS_KG,
+                             segment_regressions.REFERENCE_STATURE_CM)))
+    ratios = {}
+    for segment in ref.masses:
+        sources = segment_regressions.source_of(name, segment, at_size["ap"])
+        values = [(sum(at_size[a][x] for x in sources), sum(at_reference[a][x] for x in sources))
+                  for a in inertia_axes(segment)]
+        ratios[segment] = None if min(min(v) for v in values) <= 0 else [v / r for v, r in values]
+    return ratios
+
+
+# How far a regressed moment may stray from the one male50's radii of gyration give at the new
+# segment's mass and lengths: a radius of gyration within about -18 % to +22 % of male50's
+# proportion. Outside it the regression is being used away from its subjects (Shan and Bohn's
+# women's thigh at the 5th female's size, for one, has 0.40 of the scaled moment).
+INERTIA_BAND = (0.67, 1.5)
+
+
+def triangle_holds(moments):
+    """Principal moments of a real body: each at most the sum of the other two."""
+    return all(2 * m <= sum(moments) * (1 + 1e-9) for m in moments)
+
+
+def choose_inertia(ref, segment, mass_factor, lengths, regression):
+    """A segment's factors on male50's moments about x, y, z and whether they are the
+    regression's: the regression's ratios (times the mass normalization) where every axis is
+    inside INERTIA_BAND of the scaled moment and the moments keep the triangle inequality; else
+    the scaled ones (mass ratio times the two length ratios across each axis)."""
+    f = lengths
+    scaled = [mass_factor * f[1] * f[2], mass_factor * f[0] * f[2], mass_factor * f[0] * f[1]]
+    ratios = (regression or {}).get("inertia", {}).get(segment)
+    if ratios:
+        normalized = [r * mass_factor_of_sum(regression) for r in ratios]
+        within = all(INERTIA_BAND[0] <= n / s <= INERTIA_BAND[1] for n, s in zip(normalized, scaled))
+        moments = [n * i for n, i in zip(normalized, ref.inertias[segment])]
+        if within and triangle_holds(moments):
+            return normalized, True
+    return scaled, False
+
+
+def mass_factor_of_sum(regression):
+    """The factor that made the regression's segment masses add up to the stated mass."""
+    return regression["total"] / regression["sum"]
 
 
 def main():
@@ -386,6 +456,16 @@ def main():
     achieved = ref.stature(lambda segment: axis_scale(segment)[2])
     mass_ratio = mass / ref_mass
 
+    # The masses written: a deflecting chest's sternum is taken from the thorax (the joints
+    # above still hold up both).
+    written = dict(masses)
+    if args.deflecting_chest:
+        sternum_mass = STERNUM_MASS * masses["thorax"] / ref.masses["thorax"]
+        written["thorax"] -= sternum_mass
+    inertia_factors = {segment: choose_inertia(ref, segment, written[segment] / ref.masses[segment],
+                                               axis_scale(segment), regression)
+                       for segment in ref.masses}
+
     # A joint's torques hold up what hangs beyond it: scaled by that mass's ratio M_j and the
     # child segment's length ratio L_j (its weight's lever), so the body stands and sits at the
     # reference's joint angles under gravity; damping by M_j * L_j^1.5 keeps the damping ratio.
@@ -458,7 +538,25 @@ def main():
             out.append(f"// segment times {fmt(rest / rest_ref, 5)} (what is left of the total).")
     else:
         out.append(f"// Masses times {fmt(mass_ratio, 5)}.")
-    out.append("// Each segment's moment about an axis times its mass ratio and the length ratios across it.")
+    regressed = [s.removesuffix("_l") for s in ref.masses
+                 if inertia_factors[s][1] and not s.endswith("_r")]
+    others = [s.removesuffix("_l") for s in ref.masses
+              if not inertia_factors[s][1] and not s.endswith("_r")]
+    text = ""
+    if regressed:
+        text = (f"Moments of inertia of {', '.join(regressed)}: male50's times the regression's "
+                "moment at this size over its moment at 78 kg and 175.3 cm, per axis, times "
+                f"{fmt(mass / regression['sum'], 5)}; each is within {fmt(INERTIA_BAND[0], 2)} to "
+                f"{fmt(INERTIA_BAND[1], 2)} times the moment male50's radii of gyration give at "
+                "the segment's mass and lengths, and the three keep the triangle inequality. ")
+    if others:
+        text += ("Moments of inertia" + (f" of {', '.join(others)} (the regression's fall "
+                                          "outside that band: the equations are used away from "
+                                          "their subjects there)" if regressed else "")
+                 + ": each about an axis times the segment's mass ratio and the length ratios "
+                 "across it (male50's radii of gyration, in proportion to the segment's lengths, "
+                 "kept).")
+    out.extend("// " + line for line in textwrap.wrap(text, 93))
     out.append("// Each joint's torque tables times M_j * L_j and its viscous damping times M_j * L_j^1.5,")
     out.append("// M_j the ratio of the mass beyond the joint and L_j the child segment's length ratio:")
     out.append("// they keep male50's joint angles under gravity and its damping ratios (an engineering")
@@ -519,12 +617,8 @@ def main():
                 new = new.replace(m.group(0), f"mass = {fmt(written[segment])} kg")
             m = re.search(r"inertia = (\(.*\)) kg\*m\^2", new)
             if m and segment:
-                # A moment about one axis goes as the mass times the lengths across it.
-                f = axis_scale(segment)
-                mass_factor = written[segment] / ref.masses[segment]
-                factor = [mass_factor * f[1] * f[2], mass_factor * f[0] * f[2],
-                          mass_factor * f[0] * f[1]]
-                new = new.replace(m.group(1), scale_vector(VECTOR.fullmatch(m.group(1)), factor,
+                new = new.replace(m.group(1), scale_vector(VECTOR.fullmatch(m.group(1)),
+                                                           inertia_factors[segment][0],
                                                            lambda v: fmt(v, 4)))
             if re.search(r"(semi_axes|center|h_point) = ", new) and " mm" in new:
                 factor = axis_scale(segment or ref.root)
@@ -544,12 +638,6 @@ def main():
                                   f"{fmt(float(m.group(1)) * viscous_factor(joint_child), 3)} N*m*s/rad")
             yield new
 
-    # The masses written: a deflecting chest's sternum is taken from the thorax (the joints
-    # above still hold up both).
-    written = dict(masses)
-    if args.deflecting_chest:
-        sternum_mass = STERNUM_MASS * masses["thorax"] / ref.masses["thorax"]
-        written["thorax"] -= sternum_mass
     lines = list(scaled_body_lines())
     out.append(f"body {args.name} {{")
     i = 0
