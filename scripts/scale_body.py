@@ -32,6 +32,8 @@ Bodies from published regression equations instead of uniform scaling:
                             (78 kg, 175.3 cm), all times the one factor that gives --stature.
   --regression child6       segment masses from Jensen's (1989) proportions at 6 years; lengths
                             scaled as without --regression (with --head-length).
+  --regression child3       segment masses from Jensen's (1989) regressions of the shares on
+                            age at 3 years (one year below its sample); lengths scaled.
   scripts/segment_regressions.py holds the coefficients and the citations. The regressions'
   segment masses are shared among male50's segments where a source segment covers several (head
   and neck; a whole trunk) in male50's proportions, and scaled together by the one factor that
@@ -43,8 +45,6 @@ Bodies from published regression equations instead of uniform scaling:
   of the moment male50's radii of gyration give at the new mass and lengths and keeps the
   triangle inequality; otherwise (and for the children) they follow the segment's mass and
   lengths as without --regression. Centres of mass stay at male50's place along each segment.
-  --regression child3       segment masses from Jensen's (1989) regressions of the shares on
-                            age at 3 years (one year below its sample); lengths scaled.
 
   --deflecting-chest        adds a sternum segment in front of the thorax on a slip joint `chest`
                             (x forward) with a force-deflection flexure and viscous damping, so
