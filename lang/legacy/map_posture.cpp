@@ -22,64 +22,10 @@
 
 #include "lang/legacy/ast_pieces.h"
 #include "lang/legacy/deck_mapper.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy::mapping {
 namespace {
-
-using Mat = std::array<std::array<double, 3>, 3>;
-
-constexpr double kPi = 3.14159265358979323846;
-
-Mat Identity() { return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
-
-Mat Multiply(const Mat& a, const Mat& b) {
-  Mat c{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
-    }
-  }
-  return c;
-}
-
-Mat Transpose(const Mat& a) {
-  Mat t{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) t[i][j] = a[j][i];
-  }
-  return t;
-}
-
-// Rz(yaw) Ry(pitch) Rx(roll), angles in degrees.
-Mat YawPitchRoll(const Vec3& ypr) {
-  const double cy = CosDegrees(ypr[0]), sy = SinDegrees(ypr[0]);
-  const double cp = CosDegrees(ypr[1]), sp = SinDegrees(ypr[1]);
-  const double cr = CosDegrees(ypr[2]), sr = SinDegrees(ypr[2]);
-  return {{{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
-           {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
-           {-sp, cp * sr, cp * cr}}};
-}
-
-// The z-y-x angles (degrees) of R = Rz(a) Ry(b) Rx(c), b in [-90, 90]; at b = +-90 degrees,
-// where only a - c (or a + c) is defined, c = 0. Rounded to 1e-9 degrees, so exact turns print
-// as such.
-Vec3 ZyxDegrees(const Mat& r) {
-  const double sb = std::clamp(-r[2][0], -1.0, 1.0);
-  const double b = std::asin(sb);
-  double a = 0, c = 0;
-  if (std::fabs(sb) < 1 - 1e-12) {
-    a = std::atan2(r[1][0], r[0][0]);
-    c = std::atan2(r[2][1], r[2][2]);
-  } else {
-    a = std::atan2(-r[0][1], r[1][1]);
-  }
-  Vec3 angles{a * 180 / kPi, b * 180 / kPi, c * 180 / kPi};
-  for (double& angle : angles) {
-    angle = std::round(angle * 1e9) / 1e9;
-    if (angle == 0) angle = 0;  // no -0
-  }
-  return angles;
-}
 
 bool IsIdentity(const Mat& r) {
   for (int i = 0; i < 3; ++i) {

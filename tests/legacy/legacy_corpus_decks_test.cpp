@@ -135,6 +135,17 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     if (field == "fluid_density") return {f.density.at(row)};
     if (field == "fluid_level") return {f.level.at(row)};
   }
+  if (field.rfind("load_", 0) == 0) {  // a row of the applied loads, by number (D.9 order)
+    const runtime::LoadTable& l = m.loads;
+    const auto row = static_cast<std::size_t>(std::stoul(index));
+    if (field == "load_segment") return {static_cast<double>(l.segment.at(row))};
+    if (field == "load_force_at") return at(l.force.at(row));
+    if (field == "load_torque_at") return at(l.torque.at(row));
+    if (field == "load_direction") return Of(l.direction.at(row));
+    if (field == "load_axis") return Of(l.axis.at(row));
+    if (field == "load_point") return Of(l.point.at(row));
+    if (field == "load_in_segment") return {static_cast<double>(l.in_segment.at(row))};
+  }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};
