@@ -189,10 +189,15 @@ class BodyReader : public DeckFields {
                  "spring, stop, damping and friction as a force against its displacement");
     } else if (jtype == 0) {
       joint.type = JointType::kBall;
+    } else if (jtype == 1 || jtype == -1) {
+      // ATB's pinned joint: it turns about HB, the y axis of its joint axes in the proximal
+      // segment (OUTPUT_JOINTS, UPDATE_JOINTS, INPUT_ROBOTICS); JTYPE -1 is its locked state.
+      joint.type = JointType::kPin;
+      joint.locked = jtype < 0;
     } else {
       Refuse(line1, 11, 14, fmt::format("JTYPE {} is not documented", jtype),
-             "the reference documents JTYPE 0 (ball and socket), 4 (Euler) and |JTYPE| >= 5 "
-             "(slip); convert this joint by hand");
+             "the reference documents JTYPE 0 (ball and socket), 1 and -1 (pin, unlocked and "
+             "locked), 4 (Euler) and |JTYPE| >= 5 (slip); convert this joint by hand");
     }
     SlipLock(joint, line1, jtype, ieuler, tension, compression);
     joint.axes_parent = Triple(line2, 15, 6, "YPR1, the joint axes in the proximal segment");
@@ -341,6 +346,11 @@ class BodyReader : public DeckFields {
              "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
              "61-72 blank");
     }
+    if (joint.type == JointType::kPin && HasAnyTerm(joint.twist)) {
+      Ignored(card, 37, 72, "a torsion spring of a pin joint",
+              "a pin keeps the joint's z axes turning about its y axis only, so ATB's torsion "
+              "angle stays 0 and the spring never acts; it is left out");
+    }
     if (joint.type == JointType::kSlip && HasAnyTerm(joint.twist)) {
       Refuse(card, 37, 72, "a torsion spring of a slip joint",
              "sled's slip joint has one characteristic, `flexure` (B.4.a columns 1-36); leave "
@@ -365,9 +375,11 @@ class BodyReader : public DeckFields {
   // B.5.a 19-30 and 49-54: the torque that unlocks a locked joint, and the torque and the
   // angular velocity below which an unlocked one locks (ATB's printout: "Max Torque for a Locked
   // Joint", "Min Torque for Unlocked Joint", "Min. Ang. Velocity for Unlocked Joint"). ATB's
-  // UPDATE_JOINTS tests them for joints of JTYPE other than 0 and 4, which sled converts as
-  // slip joints only, and for Euler joints in UPDATE_EULER_JOINTS, which the reference lacks.
-  void LockLevels(const JointCard& joint, const Card& card) {
+  // UPDATE_JOINTS tests them for joints of JTYPE other than 0 and 4: a pin's torque about its
+  // axis against the first (while locked) and the second (while unlocked; the velocity only
+  // without the second), as sled's `unlock_above` and `lock_below` do. Euler joints are tested
+  // in UPDATE_EULER_JOINTS, which the reference lacks.
+  void LockLevels(JointCard& joint, const Card& card) {
     const double unlock = r_.Real(card, 19, 24, "the torque that unlocks a locked joint");
     const double lock = r_.Real(card, 25, 30, "the torque below which the joint locks");
     const double rate = r_.Real(card, 49, 54, "the angular velocity below which it locks");
@@ -379,6 +391,9 @@ class BodyReader : public DeckFields {
       case JointType::kBall:
         Ignored(card, 19, 54, what + " of a ball joint (JTYPE 0)",
                 "ATB's UPDATE_JOINTS never locks or unlocks a joint of JTYPE 0; they are left out");
+        return;
+      case JointType::kPin:
+        PinLockLevels(joint, card, unlock, lock, rate);
         return;
       case JointType::kEuler:
         Refuse(card, 19, 54, what + " of an Euler joint",
@@ -393,6 +408,39 @@ class BodyReader : public DeckFields {
                "`lock_below` and `unlock_above` by hand");
         return;
     }
+  }
+
+  void PinLockLevels(JointCard& joint, const Card& card, double unlock, double lock, double rate) {
+    if (unlock < 0 || lock < 0 || rate < 0) {
+      Invalid(card, 19, 54,
+              fmt::format("a negative lock level (unlock above {}, lock below {}, rate {})", unlock,
+                          lock, rate),
+              "ATB compares them with a torque's size and an angular velocity: give them 0 "
+              "(none) or positive");
+      return;
+    }
+    if (lock == 0 && rate != 0) {
+      Refuse(card, 49, 54,
+             fmt::format("a pin that locks below an angular velocity of {} rad/{}", rate,
+                         deck_.units.time),
+             "sled locks a joint when its torque falls below `lock_below` (B.5.a columns "
+             "25-30), not by its speed; leave the field 0");
+      return;
+    }
+    if (lock != 0 && rate != 0) {
+      Ignored(card, 49, 54, "the angular velocity below which the pin locks",
+              "ATB tests it only when the torque level (columns 25-30) is 0 (UPDATE_JOINTS); it "
+              "is left out");
+    }
+    if (unlock != 0 && lock > unlock) {
+      Refuse(card, 19, 30,
+             fmt::format("a pin that locks below {} but unlocks above {}", lock, unlock),
+             "sled's `lock_below` is at most `unlock_above`, else the joint would lock and "
+             "unlock at once");
+      return;
+    }
+    joint.unlock_above = unlock;
+    joint.lock_below = lock;
   }
 
   // B.5.a (B.5.b and B.5.c for the second and third axes of an Euler joint, as INPUT_JOINTS

@@ -70,8 +70,9 @@ struct JointCard {
   double coulomb_rate = 0;  // B.5.a VISC(3): the rate of full Coulomb friction
   // A slip joint with a negative IEULER starts locked (UPDATE_JOINTS) and slides for good once
   // the size of its axial force passes `unlock_above` (COMP_MAX = -TENS_MAX; 0: never).
+  // A pin (JTYPE 1) locks when its torque falls below `lock_below`; JTYPE -1 starts locked.
   bool locked = false;
-  double unlock_above = 0;
+  double unlock_above = 0, lock_below = 0;
 };
 
 struct VehicleCard {

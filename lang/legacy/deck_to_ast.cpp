@@ -16,6 +16,7 @@
 #include "lang/ast/make_expr.h"
 #include "lang/legacy/ast_pieces.h"
 #include "lang/legacy/convert.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy::mapping {
 namespace {
@@ -358,6 +359,11 @@ void DeckMapper::MapBody(ast::Block& scenario) {
       axes.target = Path(child);
       Add(joint, std::move(axes));
     }
+    if (card.type == JointType::kPin) {
+      // ATB's pin turns about HB, the y axis of its joint axes in the proximal segment.
+      const Mat axes = YawPitchRoll(card.axes_parent);
+      Add(joint, Attribute("axis", Vector({axes[0][1], axes[1][1], axes[2][1]}, "")));
+    }
     // A slip joint's coordinate is a length: its spring, stop, damping and friction are a force
     // against its displacement, read in the deck's force and length units.
     const bool slip = card.type == JointType::kSlip;
@@ -383,7 +389,12 @@ void DeckMapper::MapBody(ast::Block& scenario) {
       Add(joint, Attribute("coulomb", Number(card.coulomb, slip ? F : F + "*" + L)));
     if (card.restitution != 0) Add(joint, Attribute("restitution", Number(card.restitution)));
     if (card.locked) Add(joint, Attribute("locked", Boolean(true)));
-    if (card.unlock_above != 0) Add(joint, Attribute("unlock_above", Number(card.unlock_above, F)));
+    // A slip joint's lock levels are forces, a pin's torques.
+    const std::string level_unit = slip ? F : F + "*" + L;
+    if (card.lock_below != 0)
+      Add(joint, Attribute("lock_below", Number(card.lock_below, level_unit)));
+    if (card.unlock_above != 0)
+      Add(joint, Attribute("unlock_above", Number(card.unlock_above, level_unit)));
     body.block->statements.push_back(std::move(joint));
   }
   scenario.statements.push_back(std::move(body));

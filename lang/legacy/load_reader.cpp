@@ -55,11 +55,11 @@ int ReadActuatorCount(DeckFields& f, const Card& d1) {
   const int nextcd = r.Integer(d1, 67, 72, "NEXTCD, the joint actuators");
   if (nextcd == 0) return 0;
   f.Refuse(d1, 67, 72,
-           fmt::format("NEXTCD is {}: F.10 joint actuators, ATB's PID torques on pin joints "
-                       "(JTYPE 1, which sled does not convert), their gains functions of the "
-                       "target angle; ATB's integral term is one sum shared by every actuator, "
-                       "and how the torque enters the equations of motion (the caller of "
-                       "JNTFNC) is not in the reference",
+           fmt::format("NEXTCD is {}: F.10 joint actuators, ATB's PID torques about pin "
+                       "joints, their gains functions of the target angle; ATB's integral term "
+                       "is one sum shared by every actuator, its angle and rate take opposite "
+                       "senses (JNTFNC), and how the torque enters the equations of motion (the "
+                       "caller of JNTFNC) is not in the reference",
                        nextcd),
            "drive the joint with a `load NAME on JOINT { torque = ... }` written by hand, or "
            "set NEXTCD to 0 and remove the D.1.b and F.10 cards");

@@ -100,16 +100,25 @@ void DeckMapper::MapPostures(ast::Block& scenario) {
       continue;
     }
     if (IsIdentity(relative)) continue;
-    if (joint.type != JointType::kBall && joint.type != JointType::kEuler) {
+    // A pin turns about its joint axes' y (its `axis`): R_J = Ry(angle), the pin's one angle.
+    const bool about_pin = joint.type == JointType::kPin && std::fabs(relative[1][1] - 1) < 1e-12;
+    if (joint.type != JointType::kBall && joint.type != JointType::kEuler && !about_pin) {
+      const bool slip = joint.type == JointType::kSlip;
       Report(DiagnosticKind::kDeckNotExpressible, where,
              fmt::format("card G.3.a (segment {}): an orientation that turns joint {}, a {} "
-                         "joint, from its axes",
-                         s + 1, s, joint.type == JointType::kSlip ? "slip" : "pin"),
-             "sled's slip joint keeps its child turned as its axes put it; give the segment "
-             "the orientation its joint's axes give it (B.3.b)");
+                         "joint, {}",
+                         s + 1, s, slip ? "slip" : "pin",
+                         slip ? "from its axes" : "about another axis than its pin"),
+             slip ? "sled's slip joint keeps its child turned as its axes put it; give the "
+                    "segment the orientation its joint's axes give it (B.3.b)"
+                  : "a pin turns its child about the y axis of its joint axes only; give the "
+                    "segment an orientation that pin reaches");
       continue;
     }
-    const Vec3 angles = ZyxDegrees(relative);
+    Vec3 angles = ZyxDegrees(relative);
+    if (about_pin) {
+      angles = {AboutYDegrees(relative), 0, 0};
+    }
     ast::Statement initial =
         Declaration("initial", Path(body_ + "." + joints_[s - 1]),
                     CardComment("G.3.a", card.line == 0 ? joint.line : card.line) +

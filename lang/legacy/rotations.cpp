@@ -62,6 +62,11 @@ Vec3 ZyxDegrees(const Mat& r) {
   return angles;
 }
 
+double AboutYDegrees(const Mat& r) {
+  const double angle = std::round(std::atan2(r[0][2], r[0][0]) * 180 / kPi * 1e9) / 1e9;
+  return angle == 0 ? 0 : angle;  // no -0
+}
+
 std::optional<Mat> OrderedYawPitchRoll(const Vec3& ypr, const std::array<int, 3>& order) {
   const int sum = order[0] + order[1] + order[2];
   Mat r = Identity();

@@ -31,4 +31,7 @@ std::optional<Mat> OrderedYawPitchRoll(const Vec3& ypr, const std::array<int, 3>
 // as such.
 Vec3 ZyxDegrees(const Mat& r);
 
+// The angle (degrees, in (-180, 180], rounded as ZyxDegrees) of R = Ry(angle).
+double AboutYDegrees(const Mat& r);
+
 }  // namespace sled::lang::legacy
