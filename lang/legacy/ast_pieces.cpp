@@ -47,7 +47,7 @@ ast::Expr Vector(const Vec3& v, std::string_view unit) {
   ast::Expr expr;
   expr.kind = ast::ExprKind::kVector;
   for (const double c : v) expr.operands.push_back(Number(c));
-  expr.unit = MakeUnit(unit);
+  if (!unit.empty()) expr.unit = MakeUnit(unit);
   return expr;
 }
 
@@ -68,6 +68,13 @@ ast::Expr String(std::string text) {
   ast::Expr expr;
   expr.kind = ast::ExprKind::kString;
   expr.text = std::move(text);
+  return expr;
+}
+
+ast::Expr Boolean(bool value) {
+  ast::Expr expr;
+  expr.kind = ast::ExprKind::kBool;
+  expr.text = value ? "true" : "false";
   return expr;
 }
 
@@ -132,6 +139,10 @@ double CosDegrees(double degrees) {
 }
 double SinDegrees(double degrees) {
   return ExactCos(degrees - 90).value_or(std::sin(degrees * (std::numbers::pi / 180)));
+}
+Vec3 TurnedX(double yaw, double pitch) {
+  return {CosDegrees(yaw) * CosDegrees(pitch), SinDegrees(yaw) * CosDegrees(pitch),
+          -SinDegrees(pitch)};
 }
 
 // --- Names --------------------------------------------------------------------------------

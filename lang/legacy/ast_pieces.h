@@ -21,6 +21,7 @@ ast::Expr Number(double value, std::string_view unit = {});
 ast::Expr Vector(const Vec3& v, std::string_view unit);
 ast::Expr Path(const std::string& dotted);
 ast::Expr String(std::string text);
+ast::Expr Boolean(bool value);
 ast::Expr Call(std::string callee, std::vector<std::pair<std::string, ast::Expr>> arguments);
 ast::Statement Attribute(std::string keyword, ast::Expr value);
 ast::Statement Declaration(std::string keyword, ast::Expr target, std::string comment = {});
@@ -34,6 +35,9 @@ bool IsZero(const Vec3& v);
 std::optional<double> ExactCos(double degrees);
 double CosDegrees(double degrees);
 double SinDegrees(double degrees);
+// The x axis turned by `yaw` about z, then by `pitch` about the turned y (degrees): the first row
+// of ATB's direction-cosine matrix for yaw, pitch and roll (a roll turns x about itself).
+Vec3 TurnedX(double yaw, double pitch);
 
 // A deck label as a sled name: lower case, words joined by `_`, never a word the grammar or the
 // frames reserve, unique among `taken`. A name something else already has takes the `kind` of

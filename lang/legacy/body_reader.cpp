@@ -2,6 +2,7 @@
 // (B.5) and the per-segment convergence tests (B.6), as ATB V.3's INPUT_BCARDS and INPUT_JOINTS
 // read them.
 #include "lang/legacy/body_reader.h"
+#include "lang/legacy/rotations.h"
 
 #include <cmath>
 #include <string>
@@ -161,12 +162,9 @@ class BodyReader : public DeckFields {
     joint.at_parent = Triple(line1, 15, 6, "the joint's location in the proximal segment");
     joint.at_child = Triple(line1, 33, 6, "the joint's location in the distal segment");
     const int ieuler = r_.Integer(line1, 51, 54, "IEULER");
-    RefuseNonZero(line1, 55, 60, r_.Real(line1, 55, 60, "TENS_MAX"),
-                  "TENS_MAX (joint failure in tension)",
-                  "sled's joints do not fail; remove the limit");
-    RefuseNonZero(line1, 61, 66, r_.Real(line1, 61, 66, "COMP_MAX"),
-                  "COMP_MAX (joint failure in compression)",
-                  "sled's joints do not fail; remove the limit");
+    const double tension = r_.Real(line1, 55, 60, "TENS_MAX, the tension that unlocks a slip");
+    const double compression =
+        r_.Real(line1, 61, 66, "COMP_MAX, the compression that unlocks a slip");
     if (joint.parent < 0) {
       Refuse(line1, 7, 10, fmt::format("JNT is {}: a flexible chain", joint.parent),
              "flexible segment chains have no counterpart in sled; use ordinary joints");
@@ -191,30 +189,104 @@ class BodyReader : public DeckFields {
                  "spring, stop, damping and friction as a force against its displacement");
     } else if (jtype == 0) {
       joint.type = JointType::kBall;
+    } else if (jtype == 1 || jtype == -1) {
+      // ATB's pinned joint: it turns about HB, the y axis of its joint axes in the proximal
+      // segment (OUTPUT_JOINTS, UPDATE_JOINTS, INPUT_ROBOTICS); JTYPE -1 is its locked state.
+      joint.type = JointType::kPin;
+      joint.locked = jtype < 0;
     } else {
       Refuse(line1, 11, 14, fmt::format("JTYPE {} is not documented", jtype),
-             "the reference documents JTYPE 0 (ball and socket), 4 (Euler) and |JTYPE| >= 5 "
-             "(slip); convert this joint by hand");
+             "the reference documents JTYPE 0 (ball and socket), 1 and -1 (pin, unlocked and "
+             "locked), 4 (Euler) and |JTYPE| >= 5 (slip); convert this joint by hand");
     }
+    SlipLock(joint, line1, jtype, ieuler, tension, compression);
     joint.axes_parent = Triple(line2, 15, 6, "YPR1, the joint axes in the proximal segment");
     joint.axes_child = Triple(line2, 33, 6, "YPR2, the joint axes in the distal segment");
-    const Vec3 ypr3 = Triple(line2, 51, 6, "YPR3");
-    if (ypr3 != Vec3{}) {
-      Refuse(line2, 51, 68, "YPR3, a third set of joint-axis angles, is not zero",
-             "sled orients a joint's axes in its two segments only (`axes SEGMENT = ...`)");
+    const Vec3 ypr3 = Triple(line2, 51, 6, "YPR3, the Euler joint's centre of symmetry");
+    if (ypr3 != Vec3{} && joint.type == JointType::kEuler) {
+      Refuse(line2, 51, 68,
+             "YPR3, the centre of symmetry of an Euler joint (ATB's CNTR_SYM: its angles and "
+             "springs are measured from it), is not zero",
+             "sled's Euler joint springs act from zero angles; turn the joint's axes instead");
+    } else if (ypr3 != Vec3{}) {
+      Ignored(line2, 51, 68, "YPR3 of a joint that is not an Euler joint",
+              "ATB reads it for Euler joints only (OUTPUT_JOINTS); it is left out");
     }
-    for (int i = 0; i < 6; ++i) {
-      const int first = 69 + 2 * i;
-      const int order = r_.Integer(line2, first, first + 1, "IDYPR, a rotation order");
-      if (order != 0) {
-        Refuse(line2, first, first + 1,
-               fmt::format("IDYPR({}) is {}: a rotation order", i + 1, order),
-               "sled's angles are always yaw, pitch, roll (the default order 3, 2, 1); leave "
-               "IDYPR blank and convert the angles");
-        break;
-      }
-    }
+    RotationOrder(joint.axes_parent, line2, 69, "YPR1");
+    RotationOrder(joint.axes_child, line2, 75, "YPR2");
     deck_.joints.push_back(std::move(joint));
+  }
+
+  // B.3.b IDYPR: the rotation order of YPR1 (columns 69-74) or YPR2 (75-80), three axis numbers
+  // from `first`; 0 first (as blank) is ATB's 3, 2, 1, yaw, pitch and roll as sled reads them.
+  // Another order is turned into sled's yaw, pitch and roll of the same axes (DRCYPR's matrix).
+  void RotationOrder(Vec3& angles, const Card& card, int first, std::string_view of) {
+    std::array<int, 3> order{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int at = first + 2 * static_cast<int>(i);
+      order[i] = r_.Integer(card, at, at + 1, "IDYPR, a rotation order");
+    }
+    if (order[0] == 0) {
+      if (order[1] != 0 || order[2] != 0) {
+        Ignored(card, first, first + 5, fmt::format("IDYPR of {} without its first axis", of),
+                "ATB takes the default order 3, 2, 1 whenever the first number is 0 "
+                "(INPUT_JOINTS); the other two are left out");
+      }
+      return;
+    }
+    const std::optional<Mat> turn = OrderedYawPitchRoll(angles, order);
+    if (!turn) {
+      Invalid(card, first, first + 5,
+              fmt::format("IDYPR of {} is {}, {}, {}", of, order[0], order[1], order[2]),
+              "each number is an axis, 1 to 3 (x, y, z), negative as ATB's DRCYPR allows; ATB "
+              "stops above 3 (STOP 101)");
+      return;
+    }
+    angles = ZyxDegrees(*turn);
+  }
+
+  // B.3.a JTYPE, IEULER, TENS_MAX and COMP_MAX of a slip joint. ATB's UPDATE_JOINTS holds a
+  // joint of negative JTYPE locked (it unlocks one by turning the sign, when its torque passes
+  // B.5.a's VISC(4): never when that is 0, and B.5.a's levels of a slip joint are refused), and a
+  // slip joint whose IEULER is negative locked until the force along its axis leaves [TENS_MAX,
+  // COMP_MAX] (never, when both are 0), then lets it slide for good; it tests TENS_MAX and
+  // COMP_MAX for no other joint.
+  void SlipLock(JointCard& joint, const Card& card, int jtype, int ieuler, double tension,
+                double compression) {
+    const bool limits = tension != 0 || compression != 0;
+    if (joint.type == JointType::kSlip && jtype < 0) {
+      joint.locked = true;
+      if (ieuler < 0 && limits) {
+        Refuse(card, 55, 66,
+               "TENS_MAX and COMP_MAX of a slip joint also locked by its negative JTYPE",
+               "ATB releases the two locks separately; sled's joint has one: give the joint a "
+               "positive JTYPE, or set TENS_MAX and COMP_MAX to 0");
+      }
+      return;
+    }
+    if (joint.type != JointType::kSlip || ieuler >= 0) {
+      if (limits) {
+        Ignored(card, 55, 66,
+                fmt::format("TENS_MAX {} and COMP_MAX {} of a joint that is not a locked slip "
+                            "joint",
+                            tension, compression),
+                "ATB tests them only for a slip joint locked by a negative IEULER "
+                "(UPDATE_JOINTS); they are left out");
+      }
+      return;
+    }
+    joint.locked = true;
+    if (!limits) return;
+    if (compression > 0 && tension == -compression) {
+      joint.unlock_above = compression;
+      return;
+    }
+    Refuse(card, 55, 66,
+           fmt::format("a slip joint unlocked by an axial force outside [{}, {}] (TENS_MAX, "
+                       "COMP_MAX), a band not symmetric about zero",
+                       tension, compression),
+           "sled's locked slip joint slides once the size of its axial force passes one "
+           "`unlock_above`; give TENS_MAX = -COMP_MAX, or edit the converted joint");
   }
 
   JointSpring Spring(const Card& card, int first) {
@@ -274,6 +346,11 @@ class BodyReader : public DeckFields {
              "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
              "61-72 blank");
     }
+    if (joint.type == JointType::kPin && HasAnyTerm(joint.twist)) {
+      Ignored(card, 37, 72, "a torsion spring of a pin joint",
+              "a pin keeps the joint's z axes turning about its y axis only, so ATB's torsion "
+              "angle stays 0 and the spring never acts; it is left out");
+    }
     if (joint.type == JointType::kSlip && HasAnyTerm(joint.twist)) {
       Refuse(card, 37, 72, "a torsion spring of a slip joint",
              "sled's slip joint has one characteristic, `flexure` (B.4.a columns 1-36); leave "
@@ -295,6 +372,77 @@ class BodyReader : public DeckFields {
     }
   }
 
+  // B.5.a 19-30 and 49-54: the torque that unlocks a locked joint, and the torque and the
+  // angular velocity below which an unlocked one locks (ATB's printout: "Max Torque for a Locked
+  // Joint", "Min Torque for Unlocked Joint", "Min. Ang. Velocity for Unlocked Joint"). ATB's
+  // UPDATE_JOINTS tests them for joints of JTYPE other than 0 and 4: a pin's torque about its
+  // axis against the first (while locked) and the second (while unlocked; the velocity only
+  // without the second), as sled's `unlock_above` and `lock_below` do. Euler joints are tested
+  // in UPDATE_EULER_JOINTS, which the reference lacks.
+  void LockLevels(JointCard& joint, const Card& card) {
+    const double unlock = r_.Real(card, 19, 24, "the torque that unlocks a locked joint");
+    const double lock = r_.Real(card, 25, 30, "the torque below which the joint locks");
+    const double rate = r_.Real(card, 49, 54, "the angular velocity below which it locks");
+    if (unlock == 0 && lock == 0 && rate == 0) return;
+    const std::string what =
+        fmt::format("lock levels (unlock above {}, lock below {} or below {} rad/{})", unlock, lock,
+                    rate, deck_.units.time);
+    switch (joint.type) {
+      case JointType::kBall:
+        Ignored(card, 19, 54, what + " of a ball joint (JTYPE 0)",
+                "ATB's UPDATE_JOINTS never locks or unlocks a joint of JTYPE 0; they are left out");
+        return;
+      case JointType::kPin:
+        PinLockLevels(joint, card, unlock, lock, rate);
+        return;
+      case JointType::kEuler:
+        Refuse(card, 19, 54, what + " of an Euler joint",
+               "ATB locks an Euler joint's axes in UPDATE_EULER_JOINTS, which the reference does "
+               "not have; leave the fields 0, or give the converted joint `locked`, `lock_below` "
+               "and `unlock_above` by hand");
+        return;
+      default:
+        Refuse(card, 19, 54, what + " of a slip joint",
+               "ATB compares a slip joint's constraint torque with these levels, sled a slip "
+               "joint's axial force; leave the fields 0, or give the converted joint "
+               "`lock_below` and `unlock_above` by hand");
+        return;
+    }
+  }
+
+  void PinLockLevels(JointCard& joint, const Card& card, double unlock, double lock, double rate) {
+    if (unlock < 0 || lock < 0 || rate < 0) {
+      Invalid(card, 19, 54,
+              fmt::format("a negative lock level (unlock above {}, lock below {}, rate {})", unlock,
+                          lock, rate),
+              "ATB compares them with a torque's size and an angular velocity: give them 0 "
+              "(none) or positive");
+      return;
+    }
+    if (lock == 0 && rate != 0) {
+      Refuse(card, 49, 54,
+             fmt::format("a pin that locks below an angular velocity of {} rad/{}", rate,
+                         deck_.units.time),
+             "sled locks a joint when its torque falls below `lock_below` (B.5.a columns "
+             "25-30), not by its speed; leave the field 0");
+      return;
+    }
+    if (lock != 0 && rate != 0) {
+      Ignored(card, 49, 54, "the angular velocity below which the pin locks",
+              "ATB tests it only when the torque level (columns 25-30) is 0 (UPDATE_JOINTS); it "
+              "is left out");
+    }
+    if (unlock != 0 && lock > unlock) {
+      Refuse(card, 19, 30,
+             fmt::format("a pin that locks below {} but unlocks above {}", lock, unlock),
+             "sled's `lock_below` is at most `unlock_above`, else the joint would lock and "
+             "unlock at once");
+      return;
+    }
+    joint.unlock_above = unlock;
+    joint.lock_below = lock;
+  }
+
   // B.5.a (B.5.b and B.5.c for the second and third axes of an Euler joint, as INPUT_JOINTS
   // reads VISC(., 3J-2..3J)): viscous and Coulomb terms, the rate of full Coulomb friction
   // (VISC(3), which ATB requires above zero for every joint with a proximal segment: STOP 294),
@@ -309,12 +457,7 @@ class BodyReader : public DeckFields {
       const double viscous = r_.Real(card, 1, 6, "the viscous coefficient");
       const double coulomb = r_.Real(card, 7, 12, "the Coulomb friction torque");
       const double full = r_.Real(card, 13, 18, "the angular velocity of full Coulomb friction");
-      RefuseNonZero(card, 19, 24, r_.Real(card, 19, 24, "the maximum torque"),
-                    "the maximum friction torque", "sled's joint friction has no torque bounds");
-      RefuseNonZero(card, 25, 30, r_.Real(card, 25, 30, "the minimum torque"),
-                    "the minimum friction torque", "sled's joint friction has no torque bounds");
-      RefuseNonZero(card, 49, 54, r_.Real(card, 49, 54, "the minimum angular velocity"),
-                    "the minimum angular velocity", "sled's joint friction has no such threshold");
+      LockLevels(joint, card);
       const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
       if (joint.parent != 0 && full <= 0 && card.line != 0) {
         Invalid(card, 13, 18,

@@ -68,6 +68,11 @@ struct JointCard {
   Vec3 initial_angles{};             // Euler joints: ANG on B.4.b
   double viscous = 0, coulomb = 0, restitution = 0;
   double coulomb_rate = 0;  // B.5.a VISC(3): the rate of full Coulomb friction
+  // A slip joint with a negative IEULER starts locked (UPDATE_JOINTS) and slides for good once
+  // the size of its axial force passes `unlock_above` (COMP_MAX = -TENS_MAX; 0: never).
+  // A pin (JTYPE 1) locks when its torque falls below `lock_below`; JTYPE -1 starts locked.
+  bool locked = false;
+  double unlock_above = 0, lock_below = 0;
 };
 
 struct VehicleCard {
@@ -170,6 +175,18 @@ struct SpringCard {
   Ref first, second;
   Vec3 at_first{}, at_second{};
   double free_length = 0, linear = 0, quadratic = 0, damping = 0;
+};
+
+// D.9 (D.1.a NFORCE of them): a force or torque of magnitude f(time), function NFVNT, on body
+// segment |NFVSEG|: NFVSEG > 0 a force at `point` (segment axes, from its centre of mass) along
+// the x axis of the segment's axes turned by `orientation` (yaw, pitch, roll in degrees);
+// NFVSEG < 0 a torque about that axis. The direction turns with the segment (FORCE_TORQUE).
+struct LoadCard {
+  std::uint32_t line = 0;
+  Ref segment;   // NFVSEG, signed
+  Ref function;  // |NFVNT|
+  Vec3 point{}, orientation{};
+  bool torque() const { return segment.number < 0; }
 };
 
 struct FunctionCard {
@@ -305,6 +322,7 @@ struct Deck {
   std::uint32_t symmetry_line = 0;
   std::vector<Ref> symmetry;  // per segment
   std::vector<SpringCard> springs;
+  std::vector<LoadCard> loads;  // D.9
   std::vector<ConstraintCard> constraints;
   std::vector<AirbagCard> airbags;
   std::vector<FunctionCard> functions;

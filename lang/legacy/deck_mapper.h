@@ -25,7 +25,8 @@ class DeckMapper {
  public:
   // How a function is used: its argument and result units depend on it.
   // kSlip: a slip joint's spring, a force against its displacement along the slip axis.
-  enum class Use { kContact, kBelt, kJoint, kSlip };
+  // kLoadForce, kLoadTorque: a D.9 applied force or torque against time.
+  enum class Use { kContact, kBelt, kJoint, kSlip, kLoadForce, kLoadTorque };
 
   DeckMapper(const Deck& deck, DiagnosticConsumer& diagnostics)
       : deck_(deck),
@@ -80,6 +81,9 @@ class DeckMapper {
   // ellipsoid, declared on this frame the first time a card puts it there). Empty after a report.
   std::string Surface(const Ref& frame, const Ref& ellipsoid, ast::Block& scenario);
   void MapRestraints(ast::Block& scenario);
+  // D.9 (map_loads.cpp): `load NAME on SEGMENT { force  direction  point  frame = segment }`, or
+  // a `torque` about an `axis`.
+  void MapLoads(ast::Block& scenario);
   // `at FIRST = ...` and `at SECOND = ...` of a spring or constraint.
   void AddAttachments(ast::Statement& statement, const std::string& first, const Vec3& at_first,
                       const std::string& second, const Vec3& at_second);

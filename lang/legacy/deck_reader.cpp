@@ -4,6 +4,7 @@
 #include "lang/legacy/deck_fields.h"
 #include "lang/legacy/fluid_readers.h"
 #include "lang/legacy/initial_reader.h"
+#include "lang/legacy/load_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
 
@@ -262,16 +263,9 @@ class DeckReader : public DeckFields {
     const int springs = Count(d1, 31, 36, "NSD, the number of spring-dampers", kMaxSprings);
     harnesses_ = Count(d1, 37, 42, "NHRNSS, the number of harnesses", kMaxHarnesses);
     wind_functions_ = Count(d1, 43, 48, "NWINDF, the number of wind functions", kMaxFunction);
+    const int loads =
+        Count(d1, 55, 60, "NFORCE, the number of applied forces and torques", kMaxAppliedLoads);
     water_ = r_.Integer(d1, 61, 66, "NWATER, the water forces") != 0;
-    struct Unsupported {
-      int first;
-      const char* what;
-      const char* help;
-    };
-    static constexpr Unsupported kUnsupported[] = {
-        {55, "NFORCE (applied forces)", "sled has no prescribed force functions"},
-        {67, "NEXTCD (joint actuators)", "sled has no joint actuators"},
-    };
     // The F.5 cards of CVS-III and ATB-II decks, which follow the E cards when NJNTF is set: ATB
     // V.3 stops on them before reading any (INPUT_DCARDS, STOP 9), and neither its source nor the
     // CVS-III paper gives their columns, so the reading ends after the E cards.
@@ -302,13 +296,7 @@ class DeckReader : public DeckFields {
              "pressure, the deployment time and the vent and approximate the rest, a warning for "
              "each approximation (docs/legacy.md), or write the `airbag` by hand");
     }
-    for (const Unsupported& field : kUnsupported) {
-      const int value = r_.Integer(d1, field.first, field.first + 5, field.what);
-      if (value != 0) {
-        Refuse(d1, field.first, field.first + 5, fmt::format("{} is {}", field.what, value),
-               field.help);
-      }
-    }
+    actuators_ = ReadActuatorCount(*this, d1);
     for (int p = 0; p < planes; ++p) ReadPlane(p + 1);
     for (int b = 0; b < belts; ++b) ReadBelt(b + 1);
     ReadAirbags(*this, bags_, approximate_airbags_);
@@ -316,6 +304,7 @@ class DeckReader : public DeckFields {
     ReadConstraints(*this, constraints, bags_);
     ReadSymmetry();
     for (int s = 0; s < springs; ++s) ReadSpring(s + 1);
+    ReadAppliedLoads(*this, loads);
   }
 
   void ReadPlane(int number) {
@@ -653,6 +642,7 @@ class DeckReader : public DeckFields {
       ReadHarnesses(*this, harnesses_, bags_);
     }
     if (water_ && !r_.truncated() && !unknown_layout_ && !ReadWater(*this)) unknown_layout_ = true;
+    if (actuators_ > 0 && !r_.truncated() && !unknown_layout_) ReadActuators(*this, actuators_);
   }
 
   void ReadContact(const Card& card, bool with_plane, int owner, int owners) {
@@ -720,6 +710,7 @@ class DeckReader : public DeckFields {
   int wind_functions_ = 0;       // D.1.a NWINDF: E.6 cards after the E cards, then F.7
   bool water_ = false;           // D.1.a NWATER: the F.9 cards
   int bags_ = 0;                 // D.1.a NBAG
+  int actuators_ = 0;            // D.1.b NRTORQ: the F.10 cards
 };
 
 }  // namespace

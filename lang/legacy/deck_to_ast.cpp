@@ -16,6 +16,7 @@
 #include "lang/ast/make_expr.h"
 #include "lang/legacy/ast_pieces.h"
 #include "lang/legacy/convert.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy::mapping {
 namespace {
@@ -27,9 +28,8 @@ constexpr std::string_view kVipsUnit = "mph";
 // C.2.a: the vehicle's initial velocity in kVipsUnit, VIPS along its own x axis (yaw, then
 // pitch; the roll turns about x itself), the axis its half-sine pulse brings to rest.
 Vec3 VehicleVelocity(const VehicleCard& vehicle) {
-  const double yaw = vehicle.orientation[0], pitch = vehicle.orientation[1];
-  return {vehicle.speed * CosDegrees(yaw) * CosDegrees(pitch),
-          vehicle.speed * SinDegrees(yaw) * CosDegrees(pitch), -vehicle.speed * SinDegrees(pitch)};
+  const Vec3 x = TurnedX(vehicle.orientation[0], vehicle.orientation[1]);
+  return {vehicle.speed * x[0], vehicle.speed * x[1], vehicle.speed * x[2]};
 }
 
 // `v` turned by yaw, pitch and roll in degrees (about z, then y, then x: the rotation of sled's
@@ -82,6 +82,7 @@ ast::File DeckMapper::Map() {
   MapVehicles(body);
   MapSurfaces(body);
   MapRestraints(body);
+  MapLoads(body);
   MapWind(body);
   MapWater(body);
   MapFunctions(body);
@@ -163,11 +164,13 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
                              unloading->permanent_set);
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
-    CheckSign(*function, ref, use);
-    std::string name = NameOf(function->title, fmt::format("function_{}", function->number), taken_,
-                              use == Use::kContact || use == Use::kSlip ? "force"
-                              : use == Use::kJoint                      ? "torque"
-                                                                        : "webbing");
+    // An applied load's function may take either sign: it pushes against its direction.
+    if (use != Use::kLoadForce && use != Use::kLoadTorque) CheckSign(*function, ref, use);
+    std::string name =
+        NameOf(function->title, fmt::format("function_{}", function->number), taken_,
+               use == Use::kContact || use == Use::kSlip || use == Use::kLoadForce ? "force"
+               : use == Use::kJoint || use == Use::kLoadTorque                     ? "torque"
+                                                                                   : "webbing");
     found = function_names_.emplace(key, name).first;
     uses_.push_back({function, use, name, *unloading});
   }
@@ -302,9 +305,7 @@ void DeckMapper::MapBody(ast::Block& scenario) {
         Declaration("segment", Path(segments_[i]), CardComment("B.2.a", card.line));
     if (card.weight == 0) {
       Add(segment, Attribute("mass", Number(0, "kg")));
-      Add(segment, Attribute("singular", ast::Expr{}));
-      segment.block->statements.back().values[0].kind = ast::ExprKind::kBool;
-      segment.block->statements.back().values[0].text = "true";
+      Add(segment, Attribute("singular", Boolean(true)));
     } else {
       Add(segment, Attribute("mass", ast::MakeBinary('/', Number(card.weight, F), Path("deck_g"))));
       Add(segment, Attribute("inertia", Vector(card.inertia, F + "*" + T + "^2*" + L)));
@@ -358,6 +359,11 @@ void DeckMapper::MapBody(ast::Block& scenario) {
       axes.target = Path(child);
       Add(joint, std::move(axes));
     }
+    if (card.type == JointType::kPin) {
+      // ATB's pin turns about HB, the y axis of its joint axes in the proximal segment.
+      const Mat axes = YawPitchRoll(card.axes_parent);
+      Add(joint, Attribute("axis", Vector({axes[0][1], axes[1][1], axes[2][1]}, "")));
+    }
     // A slip joint's coordinate is a length: its spring, stop, damping and friction are a force
     // against its displacement, read in the deck's force and length units.
     const bool slip = card.type == JointType::kSlip;
@@ -382,6 +388,13 @@ void DeckMapper::MapBody(ast::Block& scenario) {
     if (card.coulomb != 0)
       Add(joint, Attribute("coulomb", Number(card.coulomb, slip ? F : F + "*" + L)));
     if (card.restitution != 0) Add(joint, Attribute("restitution", Number(card.restitution)));
+    if (card.locked) Add(joint, Attribute("locked", Boolean(true)));
+    // A slip joint's lock levels are forces, a pin's torques.
+    const std::string level_unit = slip ? F : F + "*" + L;
+    if (card.lock_below != 0)
+      Add(joint, Attribute("lock_below", Number(card.lock_below, level_unit)));
+    if (card.unlock_above != 0)
+      Add(joint, Attribute("unlock_above", Number(card.unlock_above, level_unit)));
     body.block->statements.push_back(std::move(joint));
   }
   scenario.statements.push_back(std::move(body));
@@ -430,14 +443,18 @@ void DeckMapper::MapFunctions(ast::Block& scenario) {
 ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use use,
                                              const std::string& name,
                                              const FunctionUnloading& unloading) {
+  const bool of_time = use == Use::kLoadForce || use == Use::kLoadTorque;
+  const bool torque = use == Use::kJoint || use == Use::kLoadTorque;
   const std::string argument_unit = use == Use::kContact || use == Use::kSlip ? L
                                     : use == Use::kJoint                      ? "deg"
+                                    : of_time                                 ? T
                                                                               : "";
-  const std::string result_unit = use == Use::kJoint ? F + "*" + L : F;
+  const std::string result_unit = torque ? F + "*" + L : F;
   const char* argument = use == Use::kContact || use == Use::kSlip ? "deflection"
                          : use == Use::kJoint                      ? "angle"
+                         : of_time                                 ? "time"
                                                                    : "strain";
-  const char* result = use == Use::kJoint ? "torque" : "force";
+  const char* result = torque ? "torque" : "force";
   ast::Statement statement =
       Declaration("function", Path(name),
                   CardComment("E.1", function.line) +

@@ -22,64 +22,10 @@
 
 #include "lang/legacy/ast_pieces.h"
 #include "lang/legacy/deck_mapper.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy::mapping {
 namespace {
-
-using Mat = std::array<std::array<double, 3>, 3>;
-
-constexpr double kPi = 3.14159265358979323846;
-
-Mat Identity() { return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
-
-Mat Multiply(const Mat& a, const Mat& b) {
-  Mat c{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
-    }
-  }
-  return c;
-}
-
-Mat Transpose(const Mat& a) {
-  Mat t{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) t[i][j] = a[j][i];
-  }
-  return t;
-}
-
-// Rz(yaw) Ry(pitch) Rx(roll), angles in degrees.
-Mat YawPitchRoll(const Vec3& ypr) {
-  const double cy = CosDegrees(ypr[0]), sy = SinDegrees(ypr[0]);
-  const double cp = CosDegrees(ypr[1]), sp = SinDegrees(ypr[1]);
-  const double cr = CosDegrees(ypr[2]), sr = SinDegrees(ypr[2]);
-  return {{{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
-           {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
-           {-sp, cp * sr, cp * cr}}};
-}
-
-// The z-y-x angles (degrees) of R = Rz(a) Ry(b) Rx(c), b in [-90, 90]; at b = +-90 degrees,
-// where only a - c (or a + c) is defined, c = 0. Rounded to 1e-9 degrees, so exact turns print
-// as such.
-Vec3 ZyxDegrees(const Mat& r) {
-  const double sb = std::clamp(-r[2][0], -1.0, 1.0);
-  const double b = std::asin(sb);
-  double a = 0, c = 0;
-  if (std::fabs(sb) < 1 - 1e-12) {
-    a = std::atan2(r[1][0], r[0][0]);
-    c = std::atan2(r[2][1], r[2][2]);
-  } else {
-    a = std::atan2(-r[0][1], r[1][1]);
-  }
-  Vec3 angles{a * 180 / kPi, b * 180 / kPi, c * 180 / kPi};
-  for (double& angle : angles) {
-    angle = std::round(angle * 1e9) / 1e9;
-    if (angle == 0) angle = 0;  // no -0
-  }
-  return angles;
-}
 
 bool IsIdentity(const Mat& r) {
   for (int i = 0; i < 3; ++i) {
@@ -154,16 +100,25 @@ void DeckMapper::MapPostures(ast::Block& scenario) {
       continue;
     }
     if (IsIdentity(relative)) continue;
-    if (joint.type != JointType::kBall && joint.type != JointType::kEuler) {
+    // A pin turns about its joint axes' y (its `axis`): R_J = Ry(angle), the pin's one angle.
+    const bool about_pin = joint.type == JointType::kPin && std::fabs(relative[1][1] - 1) < 1e-12;
+    if (joint.type != JointType::kBall && joint.type != JointType::kEuler && !about_pin) {
+      const bool slip = joint.type == JointType::kSlip;
       Report(DiagnosticKind::kDeckNotExpressible, where,
              fmt::format("card G.3.a (segment {}): an orientation that turns joint {}, a {} "
-                         "joint, from its axes",
-                         s + 1, s, joint.type == JointType::kSlip ? "slip" : "pin"),
-             "sled's slip joint keeps its child turned as its axes put it; give the segment "
-             "the orientation its joint's axes give it (B.3.b)");
+                         "joint, {}",
+                         s + 1, s, slip ? "slip" : "pin",
+                         slip ? "from its axes" : "about another axis than its pin"),
+             slip ? "sled's slip joint keeps its child turned as its axes put it; give the "
+                    "segment the orientation its joint's axes give it (B.3.b)"
+                  : "a pin turns its child about the y axis of its joint axes only; give the "
+                    "segment an orientation that pin reaches");
       continue;
     }
-    const Vec3 angles = ZyxDegrees(relative);
+    Vec3 angles = ZyxDegrees(relative);
+    if (about_pin) {
+      angles = {AboutYDegrees(relative), 0, 0};
+    }
     ast::Statement initial =
         Declaration("initial", Path(body_ + "." + joints_[s - 1]),
                     CardComment("G.3.a", card.line == 0 ? joint.line : card.line) +

@@ -36,6 +36,9 @@ const fs::path kCorpus = fs::path(SLED_SOURCE_ROOT) / "tests/legacy/corpus";
 
 std::vector<double> Of(const runtime::Vec3& v) { return {v.x(), v.y(), v.z()}; }
 std::vector<double> Diagonal(const runtime::Mat3& m) { return {m(0, 0), m(1, 1), m(2, 2)}; }
+std::vector<double> Rows(const runtime::Mat3& m) {
+  return {m(0, 0), m(0, 1), m(0, 2), m(1, 0), m(1, 1), m(1, 2), m(2, 0), m(2, 1), m(2, 2)};
+}
 
 // INDEX of a row: a number, or a name among `names` (the Model's segments, ellipsoids, planes).
 std::size_t IndexOf(const std::string& index, const std::vector<std::string>& names) {
@@ -78,6 +81,12 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "joint_stop") return {m.joint_stop.at(i)};
   if (field == "joint_twist_stop") return {m.joint_twist_stop.at(i)};
   if (field == "joint_restitution") return {m.joint_restitution.at(i)};
+  if (field == "joint_locked") return {static_cast<double>(m.joint_locked.at(i))};
+  if (field == "joint_lock_below") return {m.joint_lock_below.at(i)};
+  if (field == "joint_unlock_above") return {m.joint_unlock_above.at(i)};
+  if (field == "joint_axis") return Of(m.joint_axis.at(i));
+  if (field == "joint_frame_in_parent") return Rows(m.joint_frame_in_parent.at(i));
+  if (field == "joint_frame_in_child") return Rows(m.joint_frame_in_child.at(i));
   if (field == "joint_function_at")
     return at(m.joint_function.at(i).at(static_cast<std::size_t>(args.front())));
   if (field == "ellipsoid_semi_axes") return Of(c.ellipsoid_semi_axes.at(i));
@@ -134,6 +143,17 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     if (field == "fluid_drag") return {f.drag.at(row)};
     if (field == "fluid_density") return {f.density.at(row)};
     if (field == "fluid_level") return {f.level.at(row)};
+  }
+  if (field.rfind("load_", 0) == 0) {  // a row of the applied loads, by number (D.9 order)
+    const runtime::LoadTable& l = m.loads;
+    const auto row = static_cast<std::size_t>(std::stoul(index));
+    if (field == "load_segment") return {static_cast<double>(l.segment.at(row))};
+    if (field == "load_force_at") return at(l.force.at(row));
+    if (field == "load_torque_at") return at(l.torque.at(row));
+    if (field == "load_direction") return Of(l.direction.at(row));
+    if (field == "load_axis") return Of(l.axis.at(row));
+    if (field == "load_point") return Of(l.point.at(row));
+    if (field == "load_in_segment") return {static_cast<double>(l.in_segment.at(row))};
   }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};

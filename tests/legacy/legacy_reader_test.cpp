@@ -116,7 +116,7 @@ TEST(LegacyConvert, EachManglingGetsItsCode) {
       mangled("IN  LB", [](std::string& s) { s.replace(0, 4, "FURL"); }).Has("error[E0506]"));
   EXPECT_TRUE(mangled("LUMB", [](std::string& s) {
                 s.replace(54, 6, " 5000.");
-              }).Has("columns 55-60: TENS_MAX"));
+              }).Has("55-66: warning[W0503]: card B.3.a (joint 1), columns 55-66: TENS_MAX 5000"));
   // Shifting a card's fields one column to the right puts digits where blanks belong.
   EXPECT_GT(mangled("H    ", [](std::string& s) { s.insert(6, " "); }).errors, 0);
   // Extra cards after H.3.
