@@ -1,0 +1,143 @@
+// Cards ATB V.3 reads that change no simulated value: the F.4 globalgraphic-joint cards (their
+// functions act only in a JTYPE 3 joint, which B.3.a refuses) and the H.10 total-body
+// centre-of-gravity request (an output). Each is read, so the cards after it stay aligned, and
+// left out with a warning at its line; what ATB would stop on is an error at its columns.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "tests/legacy/legacy_test_deck.h"
+
+namespace sled::lang::legacy {
+namespace {
+
+using deck_testing::Converted;
+using deck_testing::Join;
+using deck_testing::Lines;
+using deck_testing::LineStarting;
+using deck_testing::ReadDeckFile;
+
+// seated_occupant has a D.4 airbag, converted only with --approximate-airbags.
+Converted ConvertLines(const std::vector<std::string>& lines) {
+  ConvertOptions options;
+  options.approximate_airbags = true;
+  return deck_testing::ConvertText(Join(lines, lines.size()), options);
+}
+
+std::vector<std::string> SeatedOccupant() {
+  return Lines(ReadDeckFile(deck_testing::kLegacyDir + "seated_occupant.ain"));
+}
+
+// The 1-based line of seated_occupant's F.4.a card (14 joints: one card of zeros), the line
+// before the F.6 comment.
+std::size_t GlobalCountLine(const std::vector<std::string>& lines) {
+  return LineStarting(lines, "# F.6") - 1;
+}
+
+TEST(LegacyGlobalGraphic, FunctionsOfAJointThatIsNotJtype3AreReadAndLeftOut) {
+  std::vector<std::string> lines = SeatedOccupant();
+  const std::size_t f4a = GlobalCountLine(lines);
+  ASSERT_EQ(lines[f4a - 1].substr(0, 8), "   0   0");
+  // Joint 2 gets two F.4.b cards (NJ, MS_SEG(3), NF(5), NX, NOUT).
+  lines[f4a - 1].replace(4, 4, "   2");
+  const std::vector<std::string> cards = {"   2   0   3   0  11   0   0   0   2   0   0",
+                                          "   2   0   4   0  11   0   0   0   2   0   0"};
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(f4a), cards.begin(), cards.end());
+  const Converted converted = ConvertLines(lines);
+  EXPECT_EQ(converted.errors, 0) << converted.All();
+  // One W0503 per card, at its line; the F.6 and G cards after them are still read in place.
+  for (std::size_t k = 1; k <= 2; ++k) {
+    EXPECT_TRUE(
+        converted.Has(fmt::format("deck.ain:{}:1-44: warning[W0503]: card F.4.b (joint 2, "
+                                  "contact {})",
+                                  f4a + k, k)))
+        << converted.All();
+  }
+  EXPECT_FALSE(converted.text.empty());
+}
+
+TEST(LegacyGlobalGraphic, WhatAtbStopsOnIsAnErrorAndARollingConstraintIsRefused) {
+  std::vector<std::string> lines = SeatedOccupant();
+  const std::size_t f4a = GlobalCountLine(lines);
+  lines[f4a - 1].replace(0, 4, "   3");
+  const std::vector<std::string> cards = {
+      "   2   0   3   0  11   0   0   0   2   0   0",   // NJ 2 on joint 1's card: STOP 14
+      "   1   0   3   0  11   0   0   0   0   0   0",   // NF(5) 0: STOP 105
+      "   1   0   3   0   0   0   0   0   2   0   0"};  // NF(1) 0: a rolling constraint
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(f4a), cards.begin(), cards.end());
+  const Converted converted = ConvertLines(lines);
+  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:1-4: error[E0512]", f4a + 1)))
+      << converted.All();
+  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:33-36: error[E0512]", f4a + 2)))
+      << converted.All();
+  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:17-20: error[E0507]", f4a + 3)))
+      << converted.All();
+}
+
+TEST(LegacyGlobalGraphic, ADeckWithoutJointsHasNoF4Card) {
+  // INPUT_FCARDS reads F.4 only when NJNT > 0: a one-segment deck goes from F.3.a to G.1.a (it
+  // read one more card before, the G.1.a, so the deck came out a card short).
+  const std::string deck = R"(# One segment on a floor: no joints, so no F.4.a card.
+# ---- A cards ----
+11/28/2026
+ONE SEGMENT ON A FLOOR
+CORPUS DECK 1
+IN  LB  SEC           0.          0.386.08800000386.08800000
+   0  200.001000  1.0E-4  0.5E-30.000001
+
+# ---- B cards ----
+     1     0        ONE                     0
+UPPR  20.000    1.   0.8   0.5    4.    3.    6.    0.    0.    0.   0
+
+# ---- C cards ----
+SLED AT 20 MPH
+    0.    0.    0.   20.   0.1    0.    0.    0.     0    0.    0. 0 0 0
+# ---- D cards ----
+     1     0     0     0     0     0     0     0     0     0     0     0
+   1    FLOOR
+        -50.        -50.         20.
+        -50.         50.         20.
+         50.        -50.         20.
+
+# ---- E cards ----
+   1    FLOOR FORCE
+          0.         -1.          0.          0.          0.
+     3
+          0.          0.          1.        500.          2.       2000.
+   2    FRICTION 0.3
+          0.          0.         0.3          0.          0.
+  99
+# ---- F cards ----
+   1
+   1   1   0   0   1   0   0   0   2       0
+
+# ---- G cards ----
+                                 0   0           1
+        0.        0.      -10.      100.        0.        0.  0  0
+
+# ---- H cards ----
+     1  0  1          0.          0.          2.     0
+
+     0
+
+     0
+
+     0
+     0
+     0
+     0
+     0
+     0
+     0
+)";
+  const Converted converted = deck_testing::ConvertText(deck);
+  EXPECT_EQ(converted.errors, 0) << converted.All();
+  EXPECT_FALSE(converted.Has("W0503")) << converted.All();
+  EXPECT_NE(converted.text.find("segment uppr"), std::string::npos) << converted.text;
+}
+
+}  // namespace
+}  // namespace sled::lang::legacy
