@@ -1,10 +1,12 @@
-// Cards ATB V.3 reads that change no simulated value: the F.4 globalgraphic-joint cards (their
-// functions act only in a JTYPE 3 joint, which B.3.a refuses) and the H.10 total-body
-// centre-of-gravity request (an output). Each is read, so the cards after it stay aligned, and
-// left out with a warning at its line; what ATB would stop on is an error at its columns.
+// Cards read so that the deck stays aligned: the F.4 globalgraphic-joint cards (their functions
+// act only in a JTYPE 3 joint, which B.3.a refuses: left out with a warning at their line) and
+// the G.4 to G.6 cards of ATB's equilibrium run (refused at G.1.a's I1, with no cascade). What
+// ATB would stop on is an error at its columns.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -137,6 +139,42 @@ SLED AT 20 MPH
   EXPECT_EQ(converted.errors, 0) << converted.All();
   EXPECT_FALSE(converted.Has("W0503")) << converted.All();
   EXPECT_NE(converted.text.find("segment uppr"), std::string::npos) << converted.text;
+}
+
+// G.1.a I1 = 15: one refusal at I1, the G.4 to G.6 cards read (no error in the H cards after
+// them), and INPUT_EQUILB's checks at their columns.
+TEST(LegacyEquilibrium, TheEquilibriumRunIsRefusedAtI1AndItsCardsAreRead) {
+  auto with_equilibrium = [](const std::vector<std::string>& cards) {
+    std::vector<std::string> lines = SeatedOccupant();
+    const std::size_t g1 = LineStarting(lines, "# ---- G cards") + 1;
+    lines[g1 - 1].resize(std::max<std::size_t>(lines[g1 - 1].size(), 34), ' ');  // a blank card
+    lines[g1 - 1].replace(30, 4, "  15");
+    const std::size_t h = LineStarting(lines, "# ---- H cards");
+    lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(h) - 1, cards.begin(), cards.end());
+    return std::make_pair(ConvertLines(lines), h);
+  };
+  // One variable (the z of segment 1's position, until its force on plane 1 is 150 lbf, moving
+  // segment 2 along) and one constraint of segment 1 on plane 1 (LTYPE 3) setting it.
+  const auto [refused, g4] = with_equilibrium(
+      {"   1   1", "   1   3   1    150.     2.0   1   1   1   2", "   1   1   3   1"});
+  EXPECT_EQ(refused.errors, 1) << refused.All();
+  EXPECT_TRUE(refused.Has(":31-34: error[E0507]: card G.1.a, columns 31-34: I1 = 15"))
+      << refused.All();
+  const auto [bad, line] = with_equilibrium(
+      {"  11   6", "   3   1   1    150.     2.0   1   1   0", "   1   1   5   1"});
+  EXPECT_TRUE(bad.Has(fmt::format("deck.ain:{}:1-4: error[E0512]: card G.4, columns 1-4", line)))
+      << bad.All();
+  EXPECT_TRUE(bad.Has(fmt::format("deck.ain:{}:5-8: error[E0512]", line))) << bad.All();
+  const Converted bad_cards =
+      with_equilibrium({"   1   1", "   3   4   0    150.     2.0   9   1   6", "   1   1   5   2"})
+          .first;
+  EXPECT_EQ(bad_cards.errors, 8) << bad_cards.All();  // I1 and the seven G.5 and G.6 fields
+  for (const char* field : {"1-4: error[E0512]: card G.5", "5-8: error[E0512]: card G.5",
+                            "9-12: error[E0512]: card G.5", "29-32: error[E0512]: card G.5",
+                            "37-40: error[E0512]: card G.5", "9-12: error[E0512]: card G.6",
+                            "13-16: error[E0512]: card G.6"}) {
+    EXPECT_TRUE(bad_cards.Has(field)) << field << "\n" << bad_cards.All();
+  }
 }
 
 }  // namespace
