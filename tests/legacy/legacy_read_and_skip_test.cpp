@@ -177,5 +177,32 @@ TEST(LegacyEquilibrium, TheEquilibriumRunIsRefusedAtI1AndItsCardsAreRead) {
   }
 }
 
+// F.8.d.1 guide rings: corpus guide_ring converts to harness.ain's two tied belts (the corpus
+// test compares its values); a ring that cannot be converted is refused at its columns.
+TEST(LegacyGuideRing, ARingWithoutASegmentBesideItOrOnASurfaceIsRefused) {
+  const std::vector<std::string> ring =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/guide_ring.ain"));
+  const std::size_t at = LineStarting(ring, "   3   0   0   0   0   0   0   0  -2");
+  // The ring right after the first anchor: no body segment between them.
+  std::vector<std::string> beside = ring;
+  std::swap(beside[at - 1], beside[at - 3]);
+  std::swap(beside[at], beside[at - 2]);
+  const Converted no_segment = deck_testing::ConvertText(Join(beside, beside.size()));
+  EXPECT_TRUE(no_segment.Has(fmt::format("deck.ain:{}:1-4: error[E0507]", at - 2)))
+      << no_segment.All();
+  // KE not 0 (a point on the vehicle's contact surface), and NPD at the ring.
+  std::vector<std::string> surface = ring;
+  surface[at - 1].replace(4, 4, "   3");
+  surface[at - 1].replace(8, 4, "   1");
+  const Converted on_surface = deck_testing::ConvertText(Join(surface, surface.size()));
+  EXPECT_TRUE(on_surface.Has(fmt::format("deck.ain:{}:5-8: error[E0507]", at))) << on_surface.All();
+  EXPECT_TRUE(on_surface.Has(fmt::format("deck.ain:{}:9-12: error[E0507]", at)))
+      << on_surface.All();
+  // The unchanged deck converts, its belt in two parts.
+  const Converted converted = deck_testing::ConvertText(Join(ring, ring.size()));
+  EXPECT_EQ(converted.errors, 0) << converted.All();
+  EXPECT_NE(converted.text.find("belt belt_1_2 {"), std::string::npos) << converted.text;
+}
+
 }  // namespace
 }  // namespace sled::lang::legacy
