@@ -353,6 +353,73 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
   EXPECT_LT(worst, 1e-7 * initial);
 }
 
+// A guide ring: webbing over a point R fixed in the ground, as the converter writes an ATB
+// harness point in a vehicle (two belts of a harness tied at R). At the start, with each sphere
+// (radius r, centre C) where the scene puts it, the webbing runs from R to its tangent point on the
+// sphere's far side, the direction from R turned from R->C by asin(r / |C - R|) away from the
+// belt's straight line. With 100 N of pretension and a frictionless ring both spans carry 100 N,
+// each pulls R toward its tangent point, and the ring's reaction is their sum: 2 T cos(phi / 2),
+// phi the angle between the spans.
+TEST(BeltGuideRing, TheRingTakesTheSumOfTheTwoSpansAlongTheirDirections) {
+  const std::string text = R"(scenario "guide ring" {
+  gravity = (0, 0, 0) m/s^2
+  time { end = 1 s  output_every = 1 ms }
+  function webbing = table(strain -> force) { 0 -> 0 N  1 -> 20000 N }
+  body one { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
+                         ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+  body two { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
+                         ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+  harness ring {
+    belt lead { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing  pretension = 100 N }
+    belt rest { path = (0, 0, 0) m -> two.s -> (0.3, 1, 0) m  force = webbing  pretension = 100 N }
+  }
+  initial one { position = (0.05, -0.5, 0) m }
+  initial two { position = (0.2, 0.5, 0) m }
+  output {
+    belt_force ring.lead
+    belt_force ring.rest
+  }
+}
+)";
+  const Model model = Compile(text);
+  ASSERT_EQ(model.belts.tie_points.size(), 1u);
+  Data data = runtime::MakeData(model);
+  ASSERT_TRUE(runtime::Forward(model, data, nullptr));
+  const std::vector<std::string> names = runtime::ChannelNames(model);
+  std::vector<double> values(names.size());
+  runtime::EvaluateChannels(model, data, values);
+  // Channels: lead's span1, span2, start xyz, end xyz (the ring); rest's span1, span2, start
+  // xyz (the ring), end xyz.
+  ASSERT_EQ(names.size(), 16u);
+  ASSERT_EQ(names[5], "ring.lead.belt_force.end.x [N]");
+  ASSERT_EQ(names[10], "ring.rest.belt_force.start.x [N]");
+  const double tension = 100.0, r = 0.02;
+  // The direction from R = 0 to the tangent point on a sphere at C, turned away from the line
+  // through R and the belt's other anchor A (the side the webbing lies on).
+  auto tangent_direction = [&](Vec3 c, Vec3 a) {
+    const double d = c.norm();
+    const double turn = std::asin(r / d);
+    const Vec3 along = c / d;
+    Vec3 away = c - a.normalized() * c.dot(a.normalized());  // C's offset from the line R-A
+    away = (away - along * away.dot(along)).normalized();    // its part normal to R->C
+    return Vec3(std::cos(turn) * along + std::sin(turn) * away);
+  };
+  const Vec3 u_in = tangent_direction({0.05, -0.5, 0}, {0, -1, 0});
+  const Vec3 u_out = tangent_direction({0.2, 0.5, 0}, {0.3, 1, 0});
+  const Vec3 on_ring_in(values[5], values[6], values[7]);
+  const Vec3 on_ring_out(values[10], values[11], values[12]);
+  EXPECT_NEAR(values[1], tension, 1e-6);  // lead's span at the ring
+  EXPECT_NEAR(values[8], tension, 1e-6);  // rest's span at the ring
+  EXPECT_LT((on_ring_in - tension * u_in).norm(), 1e-6) << on_ring_in.transpose();
+  EXPECT_LT((on_ring_out - tension * u_out).norm(), 1e-6) << on_ring_out.transpose();
+  const double phi = std::acos(u_in.dot(u_out));
+  const Vec3 reaction = on_ring_in + on_ring_out;
+  EXPECT_NEAR(reaction.norm(), 2 * tension * std::cos(phi / 2), 1e-6);
+  std::printf(
+      "  guide ring: reaction %.4f N at %.2f deg between the spans (2 T cos(phi/2) = %.4f)\n",
+      reaction.norm(), phi * 180 / kPi, 2 * tension * std::cos(phi / 2));
+}
+
 TEST(BeltOutputs, ChannelsNameEachSpanAndAnchor) {
   Scene scene;
   scene.pretension = 150.0;
