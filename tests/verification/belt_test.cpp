@@ -297,11 +297,10 @@ TEST(BeltFriction, SlipsAtTheCapstanRatio) {
   }
 }
 
-// A harness of two belts joined at a tie point (0, 0, 0), each wrapping its own sphere: only the
-// first sphere moves, and webbing runs through the frictionless tie point into the first belt,
-// so the second belt carries the same tension and pulls the second sphere.
-TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
-  const std::string text = R"(scenario "harness" {
+// The start of a scene of two free spheres of radius 2 cm and 1 kg, `one.s` and `two.s`, without
+// gravity, and a linear webbing of 20 kN per unit strain; the test adds its belts and closes it.
+std::string TwoSpheres(const std::string& name) {
+  return "scenario \"" + name + R"(" {
   gravity = (0, 0, 0) m/s^2
   time { end = 1 s  output_every = 1 ms }
   function webbing = table(strain -> force) { 0 -> 0 N  1 -> 20000 N }
@@ -309,6 +308,14 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
                          ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
   body two { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
                          ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+)";
+}
+
+// A harness of two belts joined at a tie point (0, 0, 0), each wrapping its own sphere: only the
+// first sphere moves, and webbing runs through the frictionless tie point into the first belt,
+// so the second belt carries the same tension and pulls the second sphere.
+TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
+  const std::string text = TwoSpheres("harness") + R"(
   harness straps {
     friction = 0
     belt left { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing }
@@ -361,14 +368,7 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
 // each pulls R toward its tangent point, and the ring's reaction is their sum: 2 T cos(phi / 2),
 // phi the angle between the spans.
 TEST(BeltGuideRing, TheRingTakesTheSumOfTheTwoSpansAlongTheirDirections) {
-  const std::string text = R"(scenario "guide ring" {
-  gravity = (0, 0, 0) m/s^2
-  time { end = 1 s  output_every = 1 ms }
-  function webbing = table(strain -> force) { 0 -> 0 N  1 -> 20000 N }
-  body one { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
-                         ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
-  body two { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
-                         ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+  const std::string text = TwoSpheres("guide ring") + R"(
   harness ring {
     belt lead { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing  pretension = 100 N }
     belt rest { path = (0, 0, 0) m -> two.s -> (0.3, 1, 0) m  force = webbing  pretension = 100 N }
