@@ -420,6 +420,54 @@ TEST(BeltGuideRing, TheRingTakesTheSumOfTheTwoSpansAlongTheirDirections) {
       reaction.norm(), phi * 180 / kPi, 2 * tension * std::cos(phi / 2));
 }
 
+// The same ring with friction 0.3: the first sphere runs into its belt at 2 m/s and draws
+// webbing through the ring from the second belt, whose sphere is too heavy to follow. The ring
+// holds while the lead span's tension is below exp(mu theta) times the other's, theta the angle
+// the webbing turns at the ring, computed here from the two spans' ends; once it slips the ratio
+// is exactly that (the capstan law), and the ring lets webbing through.
+TEST(BeltGuideRing, SlipsThroughTheRingAtTheCapstanRatio) {
+  const std::string text = TwoSpheres("guide ring with friction") + R"(
+  body heavy { segment s { mass = 1e6 kg  inertia = (1, 1, 1) kg*m^2
+                           ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+  harness ring {
+    friction = 0.3
+    belt lead { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing  pretension = 50 N }
+    belt rest { path = (0, 0, 0) m -> heavy.s -> (0.3, 1, 0) m  force = webbing
+                pretension = 50 N }
+  }
+  initial one { position = (0.05, -0.5, 0) m  velocity = (2, 0, 0) m/s }
+  initial heavy { position = (0.2, 0.5, 0) m }
+}
+)";
+  const Model model = Compile(text);
+  ASSERT_EQ(model.belts.tie_points.size(), 1u);
+  Data data = runtime::MakeData(model);
+  const double mu = 0.3;
+  double largest_ratio_error = 0.0, slipping_ratio_error = 0.0;
+  int slipping = 0;
+  ASSERT_TRUE(Simulate(model, data, "dopri5", 1e-10, Linspace(0, 0.02, 200), [&](const Data& d) {
+    // Spans: lead 0 (anchor to sphere), 1 (sphere to ring); rest 2 (ring to sphere), 3.
+    const Vec3 in = (d.belts.end[1] - d.belts.start[1]).normalized();   // toward the ring
+    const Vec3 out = (d.belts.end[2] - d.belts.start[2]).normalized();  // away from it
+    const double theta = std::acos(std::clamp(in.dot(out), -1.0, 1.0));
+    const double bound = std::exp(mu * theta);
+    const double ratio = d.belts.tension[1] / d.belts.tension[2];
+    largest_ratio_error = std::max(largest_ratio_error, ratio / bound - 1.0);
+    for (std::size_t j = 0; j < d.belts.mode.size(); ++j) {
+      if (d.belts.junction_tie[j] < 0 || d.belts.mode[j] == runtime::JunctionMode::kStick) continue;
+      ++slipping;
+      slipping_ratio_error = std::max(slipping_ratio_error, std::abs(ratio / bound - 1.0));
+    }
+  }));
+  std::printf(
+      "  guide ring: slipping at %d of 201 samples, tension ratio within %.1e of exp(mu "
+      "theta) there, never above it by more than %.1e\n",
+      slipping, slipping_ratio_error, largest_ratio_error);
+  EXPECT_GT(slipping, 10);
+  EXPECT_LT(slipping_ratio_error, 1e-8);
+  EXPECT_LT(largest_ratio_error, 1e-8);
+}
+
 TEST(BeltOutputs, ChannelsNameEachSpanAndAnchor) {
   Scene scene;
   scene.pretension = 150.0;
