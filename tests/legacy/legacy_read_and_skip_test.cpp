@@ -204,5 +204,32 @@ TEST(LegacyGuideRing, ARingWithoutASegmentBesideItOrOnASurfaceIsRefused) {
   EXPECT_NE(converted.text.find("belt belt_1_2 {"), std::string::npos) << converted.text;
 }
 
+// The same cards list-directed (.lin): F.4.b one READ of 11 items, G.5 one READ of 8 + NAV.
+TEST(LegacyReadAndSkip, ListDirectedDecksReadTheSameCards) {
+  std::vector<std::string> lines =
+      Lines(ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.lin"));
+  ConvertOptions options;
+  options.format = DeckFormat::kList;
+  const std::size_t f4a = LineStarting(lines, " 0  Card F.4.a");
+  lines[f4a - 1] = " 1  Card F.4.a";
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(f4a),
+               " 1 0 2 0 2 0 0 0 2 0 0  Card F.4.b");
+  const Converted global = deck_testing::ConvertText(Join(lines, lines.size()), options, "d.lin");
+  EXPECT_EQ(global.errors, 0) << global.All();
+  EXPECT_TRUE(global.Has(fmt::format("d.lin:{}:", f4a + 1))) << global.All();
+  EXPECT_TRUE(global.Has("warning[W0503]: card F.4.b (joint 1, contact 1)")) << global.All();
+  // I1 = 15 with one variable moving segment 2 along and one constraint: only I1's refusal.
+  const std::size_t g1 = LineStarting(lines, " 0 1  Card G.1.a");
+  lines[g1 - 1] = " 15 1  Card G.1.a";
+  const std::size_t h = LineStarting(lines, "# ---- H cards");
+  const std::vector<std::string> cards = {" 1 1  Card G.4", " 1 3 1 150. 2. 1 2 1 1  Card G.5",
+                                          " 1 2 3 1  Card G.6"};
+  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(h) - 1, cards.begin(), cards.end());
+  const Converted equilibrium =
+      deck_testing::ConvertText(Join(lines, lines.size()), options, "d.lin");
+  EXPECT_EQ(equilibrium.errors, 1) << equilibrium.All();
+  EXPECT_TRUE(equilibrium.Has("error[E0507]: card G.1.a, item 1")) << equilibrium.All();
+}
+
 }  // namespace
 }  // namespace sled::lang::legacy
