@@ -143,10 +143,13 @@ struct HarnessPoint {
   Ref friction;            // NF(5)
   Vec3 anchor{};           // an end: BAR(1..3) plus the F.8.d.2 offset, in the harness's frame
   int tie = 0;             // an end: the tie point (KS / 100), 0 for none
+  bool ring = false;       // a guide ring: a point between the ends fixed in the harness's frame
 };
 
 struct HarnessBeltCard {
   std::uint32_t line = 0;  // F.8.c
+  int number = 0;          // ATB's belt number in its harness
+  int part = 0;            // split at guide rings: 1, 2, ... from the first point; 0 unsplit
   Ref force;
   UnloadingRefs unloading;
   double slack = 0;  // XLONG

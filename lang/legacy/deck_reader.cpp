@@ -3,6 +3,7 @@
 #include "lang/legacy/body_reader.h"
 #include "lang/legacy/deck_fields.h"
 #include "lang/legacy/fluid_readers.h"
+#include "lang/legacy/global_graphic_reader.h"
 #include "lang/legacy/initial_reader.h"
 #include "lang/legacy/load_reader.h"
 #include "lang/legacy/output_reader.h"
@@ -627,15 +628,7 @@ class DeckReader : public DeckFields {
         ReadContact(card, false, s + 1, segments);
       }
     }
-    const std::vector<int> global = CountsPerItem("F.4.a", std::max(1, segments - 1), "(18I4)", 18,
-                                                  false, "a number of contacts", kMaxContacts / 10);
-    for (std::size_t j = 0; j < global.size(); ++j) {
-      if (global[j] != 0) {
-        Refuse(r_.Next("F.4.b", {"(18I4)"}), 1, 4, "a global-graphic joint contact",
-               "sled has no joint-surface contacts; remove the F.4 entries");
-        break;
-      }
-    }
+    ReadGlobalGraphicJoints(*this, static_cast<int>(deck_.joints.size()));
     if (bags_ > 0 && !r_.truncated()) ReadAirbagContacts(*this, bags_);
     if (wind_functions_ > 0 && !r_.truncated() && !ReadWind(*this)) unknown_layout_ = true;
     if (harnesses_ > 0 && !r_.truncated() && !unknown_layout_) {

@@ -4,7 +4,9 @@
 // its ellipsoid KE or fixed (KE = 0). sled's harness belts run from an anchor in the harness's
 // frame over body segments' ellipsoids to another anchor, and belts that end at the same anchor
 // exchange webbing there: the first and last points must be anchors in one frame, the others
-// wrapped body segments.
+// wrapped body segments. A guide ring (a point between the ends fixed in the harness's frame, KE
+// 0) splits the belt into two sled belts that end at the ring and are tied there: webbing passes
+// through it as through a tie point.
 #include <cmath>
 #include <map>
 #include <optional>
@@ -137,10 +139,17 @@ class HarnessReader {
                    "a harness belt runs from an anchor over at least one body segment to "
                    "another anchor: three points or more");
       }
+      belt.number = b + 1;
       for (int k = 0; k < count && !r_.truncated(); ++k) {
         ReadPoint(number, b + 1, k + 1, k == 0 || k + 1 == count, belt, frame);
       }
-      harness.belts.push_back(std::move(belt));
+      const double slack = belt.slack;
+      if (SplitAtRings(std::move(belt), harness.belts) && slack != 0) {
+        f_.Approximated(card, 21, 32,
+                        "the reference slack goes to the belt's part before its first guide "
+                        "ring; ATB lengthens the whole webbing, which differs where a ring's "
+                        "friction holds the webbing back");
+      }
     }
     harness.vehicle = frame.value_or(-1);
     CheckTiePoints(harness);
@@ -171,7 +180,11 @@ class HarnessReader {
       }
     }
     point.friction = f_.Reference(card, 33, 36, "NF(5), the friction function");
-    if (point.friction.number < 0) {
+    // A point between the ends on a vehicle or the ground (numbers past the body's): a guide ring.
+    point.ring = !end && ks > segments_ && ks <= 100;
+    if (point.friction.number < 0 && point.ring) {
+      point.friction.number = -point.friction.number;  // a fixed ring never lets the webbing go
+    } else if (point.friction.number < 0) {
       f_.Refuse(card, 33, 36,
                 "a negative friction function: a point the webbing may not leave (a ring)",
                 "sled's webbing leaves a segment when it lifts off; give the function's number "
@@ -230,13 +243,17 @@ class HarnessReader {
                   "split the belt there");
         return;
       }
-      if (ks < 1 || ks > segments_) {
-        f_.Refuse(card, 1, 4,
-                  fmt::format("KS is {}: a point between the belt's ends that is not on the body "
-                              "(a guide ring in a vehicle)",
-                              ks),
-                  "sled's belts run from an anchor over body segments to an anchor; end the "
-                  "belt at the guide or convert it by hand");
+      if (point.ring) {
+        ReadRing(card, ks, ke, npd, ndr,
+                 {reference[0] + offset[0], reference[1] + offset[1], reference[2] + offset[2]},
+                 frame, point);
+        out.points.push_back(point);
+        return;
+      }
+      if (ks < 1) {
+        f_.Invalid(card, 1, 4, "KS is 0 at a point between the belt's ends",
+                   "give the segment the webbing passes (a body segment, or a vehicle or the "
+                   "ground for a guide ring)");
         return;
       }
       if (ke != ks) {
@@ -270,6 +287,73 @@ class HarnessReader {
       point.segment = Ref{ks, r_.Range(card, 1, 4), card.label};
     }
     out.points.push_back(point);
+  }
+
+  // A guide ring: KS a vehicle or the ground (the harness's frame), KE 0, the point BAR plus the
+  // offset in that frame. It becomes the end of the belt's part before it and the start of the
+  // part after, tied to each other (SplitAtRings).
+  void ReadRing(const Card& card, int ks, int ke, int npd, int ndr, const Vec3& at,
+                std::optional<int>& frame, HarnessPoint& point) {
+    const std::optional<int> ring_frame = AnchorFrame(card, ks);
+    if (ring_frame) {
+      if (frame && *frame != *ring_frame) {
+        f_.Refuse(card, 1, 4, "a guide ring in another frame than the harness's anchors",
+                  "sled's harness holds its anchors and rings in one frame; split the harness");
+      }
+      frame = ring_frame;
+    }
+    if (ke != 0) {
+      f_.Refuse(card, 5, 8, fmt::format("KE is {}: a guide ring on a contact surface", ke),
+                "sled's guide rings are points; give the ring's point with KE = 0");
+    }
+    if (npd != 0 || ndr != 0) {
+      f_.Refuse(card, npd != 0 ? 9 : 13, npd != 0 ? 12 : 16,
+                "NPD or NDR at a guide ring (a preferred direction of its friction)",
+                "sled's ring holds the webbing back along the belt; leave NPD and NDR blank");
+    }
+    point.anchor = at;
+    point.segment = Ref{ks, r_.Range(card, 1, 4), card.label};
+    point.tie = next_ring_tie_++;
+  }
+
+  // A belt with guide rings becomes one belt per stretch between them, each ending at the ring
+  // it shares with the next, tied there with the ring's friction. Each stretch must pass a body
+  // segment (a sled belt does); XLONG stays with the first (exact when the rings are
+  // frictionless: the webbing then spreads over the parts freely).
+  // Returns whether a ring has friction.
+  bool SplitAtRings(HarnessBeltCard belt, std::vector<HarnessBeltCard>& belts) {
+    const std::size_t n = belt.points.size();
+    bool split = false;
+    bool friction = false;
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      split = split || belt.points[k].ring;
+      friction = friction || (belt.points[k].ring && belt.points[k].friction.number != 0);
+    }
+    if (!split) {
+      belts.push_back(std::move(belt));
+      return false;
+    }
+    std::size_t first = 0;
+    int part = 1;
+    for (std::size_t k = 1; k < n; ++k) {
+      if (!belt.points[k].ring && k + 1 != n) continue;
+      HarnessBeltCard piece = belt;
+      piece.part = part++;
+      piece.points.assign(belt.points.begin() + static_cast<std::ptrdiff_t>(first),
+                          belt.points.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+      if (piece.part > 1) piece.slack = 0;
+      if (piece.points.size() < 3) {
+        r_.ReportAt(DiagnosticKind::kDeckNotExpressible, belt.points[k].segment.where,
+                    fmt::format("card {}: no body segment between this point and the point on "
+                                "line {}, one of them a guide ring",
+                                belt.points[k].segment.card, belt.points[first].line),
+                    "a sled belt passes at least one body segment (E0414): a ring next to an "
+                    "anchor or another ring cannot be converted; anchor the belt at the ring");
+      }
+      belts.push_back(std::move(piece));
+      first = k;
+    }
+    return friction;
   }
 
   // ATB ties the ends that share a tie number; sled ties anchors of two belts that lie within
@@ -314,6 +398,7 @@ class HarnessReader {
   DeckFields& f_;
   DeckSource& r_;
   int segments_, bags_;
+  int next_ring_tie_ = 1000;  // guide rings' tie numbers, past ATB's (KS / 100 < 1000)
 };
 
 }  // namespace

@@ -4,6 +4,8 @@
 // INPUT_ORIENT read them.
 #include "lang/legacy/initial_reader.h"
 
+#include "lang/legacy/equilibrium_reader.h"
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -24,8 +26,16 @@ class InitialReader : public DeckFields {
     const int j1 = r_.Integer(g1, 35, 38, "J1");
     const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
     if (i1 == 15) {
-      Refuse(g1, 31, 34, "I1 = 15 asks for an equilibrium solve",
-             "use a `settle { duration = ... }` block instead, and remove the EQUILB cards");
+      Refuse(g1, 31, 34,
+             "I1 = 15 asks for ATB's equilibrium solve (EQUILB): it moves only the G.5 "
+             "coordinates (a segment's position or yaw, pitch or roll, with the segments listed "
+             "beside it) until each named segment's contact force on its plane is GX (or the "
+             "force of a G.6 constraint), and raises the locked joints' torque limits and the "
+             "fixed-point constraints' constants to what it finds",
+             "sled's `settle { duration = ... }` lets the whole body fall under gravity with "
+             "damping until it rests: every coordinate moves and the contact forces at rest are "
+             "the weight carried, not GX, so it is not converted to it; position the body by "
+             "hand or with `settle`, and set I1 to 0 (the G.4 to G.6 cards are then not read)");
     }
     // I3 = 0: every reference segment moves with the primary vehicle and the G.2 and G.3
     // velocities are not used (INPUT_LINEAR, INPUT_ORIENT); 1: the G cards give them; 2: the G
@@ -104,6 +114,7 @@ class InitialReader : public DeckFields {
       }
       deck_.initial_orientations.push_back(orientation);
     }
+    if (i1 == 15 && !r_.truncated()) ReadEquilibriumCards(*this);
   }
 
   // G.3.a ID4 (columns 70-72), the frame the yaw, pitch and roll turn from (INPUT_ORIENT,

@@ -379,7 +379,10 @@ void DeckMapper::MapHarnesses(ast::Block& scenario) {
         continue;
       }
       ast::Statement out =
-          Declaration("belt", Path(fmt::format("belt_{}", b + 1)), CardComment("F.8.c", belt.line));
+          Declaration("belt",
+                      Path(belt.part == 0 ? fmt::format("belt_{}", belt.number)
+                                          : fmt::format("belt_{}_{}", belt.number, belt.part)),
+                      CardComment("F.8.c", belt.line));
       AddBeltAttributes(out, std::move(path), std::move(*force), belt.slack, *wrap);
       Add(harness, std::move(out));
     }

@@ -197,21 +197,33 @@ class OutputReader {
   }
 
   // H.10.a (I6) MCG; per set H.10.b (24I3) the reference segment, N and N segments, and H.10.c
-  // (6F10.0,4I2) the origin, axes and rotation sequence. sled has no total-body output.
+  // (6F10.0,4I2) the origin, axes and rotation sequence. sled has no total-body output: the cards
+  // are read (so the deck stays aligned) and each set is left out with a W0504 that names it; an
+  // output changes no value of the run.
   void ReadTotalBodies() {
     const Card head = r_.Next("H.10.a", {"(I6)"});
     const int sets = f_.Count(head, 1, 6, "MCG, the number of total-body sets", kMaxTotalBodies);
-    if (sets > 0) {
-      f_.Refuse(head, 1, 6,
-                fmt::format("MCG is {}: the centre of gravity of a set of segments", sets),
-                "sled has no total-body output; request `position` of the segments instead and "
-                "set MCG to 0");
-    }
     for (int s = 0; s < sets && !r_.truncated(); ++s) {
       Card set = r_.Next(fmt::format("H.10.b (set {})", s + 1), {"(24I3)", 2});
       const int members = f_.Count(set, 4, 6, "N, the number of segments", 22);
       r_.Extend(set, members);
+      std::string segments;
+      for (int m = 0; m < members; ++m) {
+        const int at = 7 + 3 * m;
+        const int segment = r_.Integer(set, at, at + 2, "a segment of the set");
+        if (segment < 1 || segment > static_cast<int>(f_.deck().segments.size())) {
+          f_.Invalid(set, at, at + 2, fmt::format("segment {} is not a body segment", segment),
+                     "a total-body set lists body segments (1 to NSEG)");
+        }
+        segments += fmt::format("{}{}", m == 0 ? "" : ", ", segment);
+      }
       r_.Next(fmt::format("H.10.c (set {})", s + 1), {"(6F10.0,4I2)"});
+      f_.Approximated(set, 1, 6 + 3 * members,
+                      fmt::format("the centre of gravity of segments {} (H.10 set {}) is not "
+                                  "written: sled has no total-body output (no value of the run "
+                                  "changes; request `position` of each segment and weigh them by "
+                                  "their masses for it)",
+                                  segments, s + 1));
     }
   }
 

@@ -109,20 +109,30 @@ TEST(LegacyOutputs, PairsContinueOnASecondCardAfterEleven) {
       << converted.text;
 }
 
-// H.8's wind forces are read and not written (W0504: sled has no wind-force channel); H.10's
-// total-body centres of gravity are refused.
-TEST(LegacyOutputs, WindForcesAreNotWrittenAndTotalBodiesAreRefusedWhereAsked) {
-  const std::vector<std::string> deck =
-      Lines(WithHCards(kPointCards + "     0\n     0\n     0\n"
-                                     "     0\n     1  0  5\n     0\n"
-                                     "     1\n  1  2  1  2\n"
-                                     "        0.        0.        0.\n"));
+// H.8's wind forces and H.10's total-body centres of gravity are read and not written (W0504:
+// sled has neither channel; an output changes no value of the run), the cards after them in place.
+TEST(LegacyOutputs, WindForcesAndTotalBodiesAreReadAndNotWritten) {
+  auto deck_with_set = [](const std::string& set) {
+    return Lines(WithHCards(kPointCards +
+                            "     0\n     0\n     0\n"
+                            "     0\n     1  0  5\n     0\n"
+                            "     1\n" +
+                            set + "\n        0.        0.        0.\n"));
+  };
+  const std::vector<std::string> deck = deck_with_set("  1  2  1  2");
   const std::size_t h8 = LineStarting(deck, "# ---- H cards") + 11;
   const Converted converted = Convert(Join(deck));
+  EXPECT_EQ(converted.errors, 0) << converted.All();
   EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:1-6: warning[W0504]", h8))) << converted.All();
-  EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:1-6: error[E0507]", h8 + 2)))
+  EXPECT_TRUE(
+      converted.Has(fmt::format("deck.ain:{}:1-12: warning[W0504]: card H.10.b (set 1), "
+                                "columns 1-12: the centre of gravity of segments 1, 2",
+                                h8 + 3)))
       << converted.All();
   EXPECT_FALSE(converted.Has("E0510")) << converted.All();  // the H.10 cards are read
+  // A set member that is not a body segment is an error at its columns.
+  const Converted bad = Convert(Join(deck_with_set("  1  2  1 99")));
+  EXPECT_TRUE(bad.Has(fmt::format("deck.ain:{}:10-12: error[E0512]", h8 + 3))) << bad.All();
 }
 
 TEST(LegacyOutputs, ADeckEndingEarlyOrWithoutItsDummyCardIsWarned) {

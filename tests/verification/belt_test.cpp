@@ -297,11 +297,10 @@ TEST(BeltFriction, SlipsAtTheCapstanRatio) {
   }
 }
 
-// A harness of two belts joined at a tie point (0, 0, 0), each wrapping its own sphere: only the
-// first sphere moves, and webbing runs through the frictionless tie point into the first belt,
-// so the second belt carries the same tension and pulls the second sphere.
-TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
-  const std::string text = R"(scenario "harness" {
+// The start of a scene of two free spheres of radius 2 cm and 1 kg, `one.s` and `two.s`, without
+// gravity, and a linear webbing of 20 kN per unit strain; the test adds its belts and closes it.
+std::string TwoSpheres(const std::string& name) {
+  return "scenario \"" + name + R"(" {
   gravity = (0, 0, 0) m/s^2
   time { end = 1 s  output_every = 1 ms }
   function webbing = table(strain -> force) { 0 -> 0 N  1 -> 20000 N }
@@ -309,6 +308,14 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
                          ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
   body two { segment s { mass = 1 kg  inertia = (1e-4, 1e-4, 1e-4) kg*m^2
                          ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+)";
+}
+
+// A harness of two belts joined at a tie point (0, 0, 0), each wrapping its own sphere: only the
+// first sphere moves, and webbing runs through the frictionless tie point into the first belt,
+// so the second belt carries the same tension and pulls the second sphere.
+TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
+  const std::string text = TwoSpheres("harness") + R"(
   harness straps {
     friction = 0
     belt left { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing }
@@ -351,6 +358,114 @@ TEST(BeltHarness, FrictionlessTiePointPassesTheTension) {
   EXPECT_GT(largest, 100.0);
   EXPECT_LT(pulled, -0.1);
   EXPECT_LT(worst, 1e-7 * initial);
+}
+
+// A guide ring: webbing over a point R fixed in the ground, as the converter writes an ATB
+// harness point in a vehicle (two belts of a harness tied at R). At the start, with each sphere
+// (radius r, centre C) where the scene puts it, the webbing runs from R to its tangent point on the
+// sphere's far side, the direction from R turned from R->C by asin(r / |C - R|) away from the
+// belt's straight line. With 100 N of pretension and a frictionless ring both spans carry 100 N,
+// each pulls R toward its tangent point, and the ring's reaction is their sum: 2 T cos(phi / 2),
+// phi the angle between the spans.
+TEST(BeltGuideRing, TheRingTakesTheSumOfTheTwoSpansAlongTheirDirections) {
+  const std::string text = TwoSpheres("guide ring") + R"(
+  harness ring {
+    belt lead { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing  pretension = 100 N }
+    belt rest { path = (0, 0, 0) m -> two.s -> (0.3, 1, 0) m  force = webbing  pretension = 100 N }
+  }
+  initial one { position = (0.05, -0.5, 0) m }
+  initial two { position = (0.2, 0.5, 0) m }
+  output {
+    belt_force ring.lead
+    belt_force ring.rest
+  }
+}
+)";
+  const Model model = Compile(text);
+  ASSERT_EQ(model.belts.tie_points.size(), 1u);
+  Data data = runtime::MakeData(model);
+  ASSERT_TRUE(runtime::Forward(model, data, nullptr));
+  const std::vector<std::string> names = runtime::ChannelNames(model);
+  std::vector<double> values(names.size());
+  runtime::EvaluateChannels(model, data, values);
+  // Channels: lead's span1, span2, start xyz, end xyz (the ring); rest's span1, span2, start
+  // xyz (the ring), end xyz.
+  ASSERT_EQ(names.size(), 16u);
+  ASSERT_EQ(names[5], "ring.lead.belt_force.end.x [N]");
+  ASSERT_EQ(names[10], "ring.rest.belt_force.start.x [N]");
+  const double tension = 100.0, r = 0.02;
+  // The direction from R = 0 to the tangent point on a sphere at C, turned away from the line
+  // through R and the belt's other anchor A (the side the webbing lies on).
+  auto tangent_direction = [&](Vec3 c, Vec3 a) {
+    const double d = c.norm();
+    const double turn = std::asin(r / d);
+    const Vec3 along = c / d;
+    Vec3 away = c - a.normalized() * c.dot(a.normalized());  // C's offset from the line R-A
+    away = (away - along * away.dot(along)).normalized();    // its part normal to R->C
+    return Vec3(std::cos(turn) * along + std::sin(turn) * away);
+  };
+  const Vec3 u_in = tangent_direction({0.05, -0.5, 0}, {0, -1, 0});
+  const Vec3 u_out = tangent_direction({0.2, 0.5, 0}, {0.3, 1, 0});
+  const Vec3 on_ring_in(values[5], values[6], values[7]);
+  const Vec3 on_ring_out(values[10], values[11], values[12]);
+  EXPECT_NEAR(values[1], tension, 1e-6);  // lead's span at the ring
+  EXPECT_NEAR(values[8], tension, 1e-6);  // rest's span at the ring
+  EXPECT_LT((on_ring_in - tension * u_in).norm(), 1e-6) << on_ring_in.transpose();
+  EXPECT_LT((on_ring_out - tension * u_out).norm(), 1e-6) << on_ring_out.transpose();
+  const double phi = std::acos(u_in.dot(u_out));
+  const Vec3 reaction = on_ring_in + on_ring_out;
+  EXPECT_NEAR(reaction.norm(), 2 * tension * std::cos(phi / 2), 1e-6);
+  std::printf(
+      "  guide ring: reaction %.4f N at %.2f deg between the spans (2 T cos(phi/2) = %.4f)\n",
+      reaction.norm(), phi * 180 / kPi, 2 * tension * std::cos(phi / 2));
+}
+
+// The same ring with friction 0.3: the first sphere runs into its belt at 2 m/s and draws
+// webbing through the ring from the second belt, whose sphere is too heavy to follow. The ring
+// holds while the lead span's tension is below exp(mu theta) times the other's, theta the angle
+// the webbing turns at the ring, computed here from the two spans' ends; once it slips the ratio
+// is exactly that (the capstan law), and the ring lets webbing through.
+TEST(BeltGuideRing, SlipsThroughTheRingAtTheCapstanRatio) {
+  const std::string text = TwoSpheres("guide ring with friction") + R"(
+  body heavy { segment s { mass = 1e6 kg  inertia = (1, 1, 1) kg*m^2
+                           ellipsoid { semi_axes = (0.02, 0.02, 0.02) m } } }
+  harness ring {
+    friction = 0.3
+    belt lead { path = (0, -1, 0) m -> one.s -> (0, 0, 0) m  force = webbing  pretension = 50 N }
+    belt rest { path = (0, 0, 0) m -> heavy.s -> (0.3, 1, 0) m  force = webbing
+                pretension = 50 N }
+  }
+  initial one { position = (0.05, -0.5, 0) m  velocity = (2, 0, 0) m/s }
+  initial heavy { position = (0.2, 0.5, 0) m }
+}
+)";
+  const Model model = Compile(text);
+  ASSERT_EQ(model.belts.tie_points.size(), 1u);
+  Data data = runtime::MakeData(model);
+  const double mu = 0.3;
+  double largest_ratio_error = 0.0, slipping_ratio_error = 0.0;
+  int slipping = 0;
+  ASSERT_TRUE(Simulate(model, data, "dopri5", 1e-10, Linspace(0, 0.02, 200), [&](const Data& d) {
+    // Spans: lead 0 (anchor to sphere), 1 (sphere to ring); rest 2 (ring to sphere), 3.
+    const Vec3 in = (d.belts.end[1] - d.belts.start[1]).normalized();   // toward the ring
+    const Vec3 out = (d.belts.end[2] - d.belts.start[2]).normalized();  // away from it
+    const double theta = std::acos(std::clamp(in.dot(out), -1.0, 1.0));
+    const double bound = std::exp(mu * theta);
+    const double ratio = d.belts.tension[1] / d.belts.tension[2];
+    largest_ratio_error = std::max(largest_ratio_error, ratio / bound - 1.0);
+    for (std::size_t j = 0; j < d.belts.mode.size(); ++j) {
+      if (d.belts.junction_tie[j] < 0 || d.belts.mode[j] == runtime::JunctionMode::kStick) continue;
+      ++slipping;
+      slipping_ratio_error = std::max(slipping_ratio_error, std::abs(ratio / bound - 1.0));
+    }
+  }));
+  std::printf(
+      "  guide ring: slipping at %d of 201 samples, tension ratio within %.1e of exp(mu "
+      "theta) there, never above it by more than %.1e\n",
+      slipping, slipping_ratio_error, largest_ratio_error);
+  EXPECT_GT(slipping, 10);
+  EXPECT_LT(slipping_ratio_error, 1e-8);
+  EXPECT_LT(largest_ratio_error, 1e-8);
 }
 
 TEST(BeltOutputs, ChannelsNameEachSpanAndAnchor) {
