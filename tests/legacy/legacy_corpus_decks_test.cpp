@@ -119,6 +119,9 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   };
   if (field == "pair_energy_return_at") return factor(c.pair_function.at(i), true);
   if (field == "pair_permanent_set_at") return factor(c.pair_function.at(i), false);
+  if (field == "pair_rate_scaled_force_at") return at(c.pair_rate_scaled_force.at(i));
+  if (field == "pair_rate_scale_at") return at(c.pair_rate_scale.at(i));
+  if (field == "pair_rate_force_at") return at(c.pair_rate_force.at(i));
   if (field == "belt_energy_return_at") return factor(m.belts.function.at(i), true);
   if (field == "belt_permanent_set_at") return factor(m.belts.function.at(i), false);
   if (field == "mirror_twin") return {static_cast<double>(m.segment_mirror_twin.at(i))};
