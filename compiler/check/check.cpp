@@ -492,9 +492,12 @@ CheckedScenario Checker::Run(const ast::File& file) {
                                     parameter->value.dimension, parameter->value.bare, valid,
                                     parameter->range});
   }
+  defining_functions_ = true;
   for (const Pending& pending : functions_) {
     DefineFunction(*pending.scope, *pending.statement, pending.index);
   }
+  defining_functions_ = false;
+  ResolvePendingAtbLaws();
   CheckBodyDetails();
   CheckSceneElements();
   CheckContacts();

@@ -341,6 +341,11 @@ void BodyChecker::ReadJointCharacteristics(Scope& scope, const BoundBlock& bound
   if (only_for("spin", euler, "euler")) {
     joint.spin = ReadFunction(scope, bound, kind, "spin").value_or(joint.spin);
   }
+  RefuseAtbUnloading(joint.flexure, bound, "flexure", "a joint");
+  RefuseAtbUnloading(joint.twist, bound, "twist", "a joint");
+  RefuseAtbUnloading(joint.precession, bound, "precession", "a joint");
+  RefuseAtbUnloading(joint.nutation, bound, "nutation", "a joint");
+  RefuseAtbUnloading(joint.spin, bound, "spin", "a joint");
   joint.viscous =
       ReadQuantity(scope, bound, kind, "viscous", slip ? dim::kDamping : dim::kRotationalDamping)
           .value_or(joint.viscous);

@@ -163,11 +163,13 @@ std::optional<FunctionId> CheckContext::ExpectFunction(Scope& scope,
   return static_cast<FunctionId>(scenario_.functions.size() - 1);
 }
 
-void CheckContext::ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function) {
+void CheckContext::ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function,
+                                 int index) {
   function.energy_loss = ReadQuantity(scope, bound, BlockKind::kTable, "energy_loss").value_or(0);
   function.permanent_set =
       ReadQuantity(scope, bound, BlockKind::kTable, "permanent_set").value_or(0);
   function.unload_slope = ReadQuantity(scope, bound, BlockKind::kTable, "unload_slope");
+  ReadAtbUnloading(scope, bound, function, index);
   if (!function.unload_slope) return;
   // A straight unloading line of the given slope decides both the permanent deflection and the
   // energy returned: a permanent set or an energy loss besides would contradict it.
@@ -194,7 +196,8 @@ void CheckContext::RefuseUnloading(std::optional<FunctionId> id, const BoundBloc
   for (const auto& [attribute, value] :
        {std::pair{"energy_loss", function.energy_loss},
         std::pair{"permanent_set", function.permanent_set},
-        std::pair{"unload_slope", function.unload_slope.value_or(0.0)}}) {
+        std::pair{"unload_slope", function.unload_slope.value_or(0.0)},
+        std::pair{"unloading", function.atb_unloading ? 1.0 : 0.0}}) {
     if (value != 0.0) given += fmt::format("{}`{}`", given.empty() ? "" : ", ", attribute);
   }
   if (given.empty()) return;
@@ -273,7 +276,7 @@ bool CheckContext::BuildFunction(Scope& scope, const ast::Statement& statement,
   // Rows and unloading attributes live in the statement's block.
   BoundBlock bound;
   if (statement.block) bound = Bind(BlockKind::kTable, statement.block.get(), statement.range);
-  ReadUnloading(scope, bound, function);
+  ReadUnloading(scope, bound, function, index);
   if (form != "table" && !bound.rows.empty()) {
     Report(DiagnosticKind::kMisplacedStatement, bound.rows[0]->range,
            fmt::format("table rows given to `{}`", form), "rows need `table(x -> y)`",

@@ -177,7 +177,7 @@ void RestraintChecker::CheckContacts() {
     contact.impulse = ReadBool(bound, "impulse").value_or(false);
     contact.restitution =
         ReadQuantity(scope, bound, BlockKind::kContact, "restitution").value_or(0.0);
-    if (!force) continue;
+    if (!force || !ReadRateTerms(scope, bound, statement, contact)) continue;
     contact.force = *force;
     if (!firsts.empty() && firsts == seconds) {
       Report(DiagnosticKind::kJointToItself, statement.range,
@@ -194,6 +194,29 @@ void RestraintChecker::CheckContacts() {
       }
     }
   }
+}
+
+bool RestraintChecker::ReadRateTerms(Scope& scope, const BoundBlock& bound,
+                                     const ast::Statement& statement, Contact& contact) {
+  const auto scaled = ReadFunction(scope, bound, BlockKind::kContact, "rate_scaled_force");
+  const auto scale = ReadFunction(scope, bound, BlockKind::kContact, "rate_scale");
+  const auto rate_force = ReadFunction(scope, bound, BlockKind::kContact, "rate_force");
+  RefuseUnloading(scaled, bound, "rate_scaled_force", "a contact's rate term");
+  RefuseUnloading(scale, bound, "rate_scale", "a contact's rate term");
+  RefuseUnloading(rate_force, bound, "rate_force", "a contact's rate term");
+  if (scaled.has_value() != scale.has_value()) {
+    Report(DiagnosticKind::kMissingAttribute, statement.range,
+           fmt::format("`{}` without `{}`", scaled ? "rate_scaled_force" : "rate_scale",
+                       scaled ? "rate_scale" : "rate_scaled_force"),
+           "half of a rate term",
+           "the force adds rate_scaled_force(deflection) * rate_scale(deflection rate): give "
+           "both, or neither");
+    return false;
+  }
+  contact.rate_scaled_force = scaled.value_or(-1);
+  contact.rate_scale = scale.value_or(-1);
+  contact.rate_force = rate_force.value_or(-1);
+  return true;
 }
 
 void RestraintChecker::CheckRestraints() {

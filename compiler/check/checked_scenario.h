@@ -43,6 +43,12 @@ struct Function {
   double energy_loss = 0.0;
   double permanent_set = 0.0;
   std::optional<double> unload_slope;
+  // ATB's unloading law (`unloading = atb(...)`): the functions of the largest deflection that
+  // give the energy return R and the permanent set G (indices into CheckedScenario::functions;
+  // -1: none, G = 0).
+  bool atb_unloading = false;
+  int energy_return = -1;
+  int atb_permanent_set = -1;
   SourceRange range;
 };
 
@@ -161,6 +167,10 @@ struct Contact {
   SurfaceRef second;      // a plane or another ellipsoid
   FunctionId force = -1;  // deflection -> force
   double damping = 0.0;   // [N*s/m]
+  // ATB's rate-dependent terms: rate_scaled_force(d) * rate_scale(d') + rate_force(d').
+  FunctionId rate_scaled_force = -1;  // deflection -> force
+  FunctionId rate_scale = -1;         // deflection rate -> ratio
+  FunctionId rate_force = -1;         // deflection rate -> force
   double friction = 0.0;
   bool impulse = false;  // first-contact impulse
   double restitution = 0.0;

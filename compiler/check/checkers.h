@@ -56,6 +56,10 @@ class RestraintChecker : protected virtual CheckContext {
  protected:
   void CheckContacts();
   void CheckRestraints();
+  // ATB's rate-dependent terms of a contact (`rate_scaled_force`, `rate_scale`, `rate_force`);
+  // false after a report (one of the first two without the other is E0206).
+  bool ReadRateTerms(Scope& scope, const BoundBlock& bound, const ast::Statement& statement,
+                     Contact& contact);
 };
 
 // Applied forces and torques (check_loads.cpp).

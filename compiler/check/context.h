@@ -168,12 +168,24 @@ class CheckContext {
   BoundBlock Bind(BlockKind kind, const ast::Block* block, SourceRange owner_range);
   // The unloading attributes of a function's block (energy_loss, permanent_set, unload_slope)
   // into `function`: an unloading slope with either of the others is E0423.
-  void ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function);
+  void ReadUnloading(Scope& scope, const BoundBlock& bound, Function& function, int index = -1);
+  // `unloading = atb(energy_return = R, permanent_set = G)`: ATB's law, R and G each a number or
+  // a function of the largest deflection; with the other unloading attributes E0423.
+  // `index`: the function's FunctionId while the named functions are defined, whose law is
+  // then read by ResolvePendingAtbLaws once they all are (a factor may name a later one).
+  void ReadAtbUnloading(Scope& scope, const BoundBlock& bound, Function& function, int index);
+  void ReadAtbLaw(Scope& scope, const ast::Statement& law, const ast::Expr& call,
+                  Function& function);
+  void ResolvePendingAtbLaws();
   // Refuses (E0424) a function with unloading attributes as attribute `name` of an element that
   // evaluates its function the same way loading and unloading (`element`: a spring-damper's
   // stiffness, a load, an airbag's inflow), rather than ignoring them.
   void RefuseUnloading(std::optional<FunctionId> id, const BoundBlock& bound, AttributeKey name,
                        std::string_view element);
+  // Refuses (E0424) ATB's unloading law on an element other than a contact or a belt (a joint's
+  // torque), whose force law does not take it.
+  void RefuseAtbUnloading(std::optional<FunctionId> id, const BoundBlock& bound, AttributeKey name,
+                          std::string_view element);
   const ast::Statement* One(const BoundBlock& bound, AttributeKey name) const;
   // A statement that must be `keyword = value` (one value, no target or clauses).
   const ast::Expr* SingleValue(const ast::Statement& statement);
@@ -248,6 +260,14 @@ class CheckContext {
   std::vector<std::unique_ptr<Scope>> scopes_;
   std::vector<std::unique_ptr<Parameter>> parameters_;
   std::vector<bool> function_valid_;  // by FunctionId: false when its definition failed
+  // While the named functions are defined: ATB laws read once they all are.
+  struct PendingAtbLaw {
+    Scope* scope;
+    const ast::Statement* law;
+    int index;
+  };
+  bool defining_functions_ = false;
+  std::vector<PendingAtbLaw> pending_atb_laws_;
   Scope* scene_scope_ = nullptr;
   bool checking_module_ = false;  // the checked file is a module: no lints about unused names
   // `--set NAME=VALUE`, parsed; consumed by the scenario's `param` declarations.

@@ -48,6 +48,10 @@ std::string FunctionText(const CheckedScenario& s, FunctionId id) {
     out += fmt::format(" unload(energy_loss {} permanent_set {} slope {})", f.energy_loss,
                        f.permanent_set, f.unload_slope ? fmt::format("{}", *f.unload_slope) : "-");
   }
+  if (f.atb_unloading) {
+    out += fmt::format(" unload(atb energy_return f{} permanent_set f{})", f.energy_return,
+                       f.atb_permanent_set);
+  }
   return out;
 }
 

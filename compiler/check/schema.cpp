@@ -205,7 +205,10 @@ std::vector<BlockSpec> MakeSpecs() {
                    {Fraction("energy_loss", "fraction of energy dissipated on unloading"),
                     Fraction("permanent_set", "permanent deflection as a fraction of the largest"),
                     Positive("unload_slope", d::kDimensionless,
-                             "slope of the unloading line relative to the loading slope")},
+                             "slope of the unloading line relative to the loading slope"),
+                    Typed("unloading", V::kUnloading,
+                          "ATB's law: atb(energy_return = R, permanent_set = G), each a number "
+                          "or a function of the largest deflection")},
                    {}});
   specs.push_back(
       {BlockKind::kContact,
@@ -213,7 +216,13 @@ std::vector<BlockSpec> MakeSpecs() {
         NonNegative("damping", d::kDamping, "damping against deflection rate"),
         Quantity("friction", d::kDimensionless, "Coulomb friction coefficient", false, 0.0, 5.0),
         Bool("impulse", "an impulse at first contact"),
-        Fraction("restitution", "coefficient of restitution of the first-contact impulse")},
+        Fraction("restitution", "coefficient of restitution of the first-contact impulse"),
+        Function("rate_scaled_force", d::kLength, d::kForce,
+                 "ATB's F2: a force against deflection, times `rate_scale`"),
+        Function("rate_scale", d::kVelocity, d::kDimensionless,
+                 "ATB's F3: the factor of `rate_scaled_force` against deflection rate"),
+        Function("rate_force", d::kVelocity, d::kForce,
+                 "ATB's F4: a force against deflection rate")},
        {}});
   const std::vector<AttributeSpec> belt_attributes = {
       Typed("path", V::kBeltPath, "anchor -> segment -> ... -> anchor", true),

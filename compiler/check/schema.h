@@ -63,6 +63,7 @@ enum class ValueType {
   kLock,        // true, false, or a list of Euler axes
   kCriteria,    // hic15(segment), nij(joint), ...
   kPair,        // two names (symmetry pairs)
+  kUnloading,   // atb(energy_return = R, permanent_set = G)
 };
 
 struct AttributeSpec {

@@ -44,14 +44,20 @@ std::int32_t Lowering::Function(FunctionId id) {
 std::int32_t Lowering::TorqueFunction(FunctionId id, double joint_energy_loss) {
   if (id < 0) return -1;
   const compiler::Function& f = scenario_.functions[At(id, scenario_.functions.size(), "function")];
-  const bool own_unloading = f.energy_loss > 0 || f.permanent_set > 0 || f.unload_slope;
+  const bool own_unloading =
+      f.energy_loss > 0 || f.permanent_set > 0 || f.unload_slope || f.atb_unloading;
   if (!(joint_energy_loss > 0) || own_unloading) return Function(id);
   return AppendFunction(f, joint_energy_loss);
 }
 
 std::int32_t Lowering::AppendFunction(const compiler::Function& f, double energy_loss) {
+  // ATB's factors are functions of their own, appended first.
+  const std::int32_t atb_return = f.atb_unloading ? Function(f.energy_return) : -1;
+  const std::int32_t atb_set = f.atb_unloading ? Function(f.atb_permanent_set) : -1;
   runtime::FunctionTable& table = model_.functions;
   const auto id_in_model = static_cast<std::int32_t>(table.size());
+  table.atb_return.push_back(atb_return);
+  table.atb_set.push_back(atb_set);
   table.constant.push_back(f.kind == compiler::Function::Kind::kConstant ? f.constant : 0.0);
   table.energy_loss.push_back(energy_loss);
   table.permanent_set.push_back(f.permanent_set);

@@ -245,6 +245,9 @@ void LowerContacts(Lowering& lowering) {
                                       : surfaces.Ellipsoid(contact.second.index));
     table.pair_function.push_back(lowering.Function(contact.force));
     table.pair_damping.push_back(contact.damping);
+    table.pair_rate_scaled_force.push_back(lowering.Function(contact.rate_scaled_force));
+    table.pair_rate_scale.push_back(lowering.Function(contact.rate_scale));
+    table.pair_rate_force.push_back(lowering.Function(contact.rate_force));
     table.pair_damping_depth.push_back(runtime::kContactDampingDepth);
     table.pair_friction.push_back(contact.friction);
     table.pair_impulse.push_back(contact.impulse ? 1 : 0);

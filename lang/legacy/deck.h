@@ -29,6 +29,12 @@ struct Ref {
 // each a function of the largest deflection; number 0: none (R = 1, G = 0: elastic).
 struct UnloadingRefs {
   Ref r_factor, g_factor;
+  // Negative NF(2), NF(3), NF(4): ATB's rate-dependent force F2(D) F3(D') + F4(D')
+  // (FUNC_RATE_DEP), the functions |NF|; number 0: none. Only with no spike, R or G.
+  Ref rate_scaled_force, rate_scale, rate_force;
+  bool HasRateTerms() const {
+    return rate_scaled_force.number != 0 || rate_scale.number != 0 || rate_force.number != 0;
+  }
 };
 
 struct DeckUnits {

@@ -46,6 +46,28 @@ std::vector<int> DeckFields::CountsPerItem(const std::string& label, int items,
   return counts;
 }
 
+// Negative NF(2), NF(3), NF(4) (spike, R and G all zero or negative): F2 = |NF(2)| of the
+// deflection, F3 = |NF(3)| and F4 = |NF(4)| of its rate.
+void DeckFields::ReadRateTerms(const Card& card, int first, int spike, UnloadingRefs* unloading) {
+  unloading->rate_scaled_force = Ref{-spike, r_.Range(card, first + 4, first + 7), card.label};
+  unloading->rate_scale = unloading->r_factor;
+  unloading->rate_scale.number = -unloading->rate_scale.number;
+  unloading->rate_force = unloading->g_factor;
+  unloading->rate_force.number = -unloading->rate_force.number;
+  unloading->r_factor.number = unloading->g_factor.number = 0;
+  if ((unloading->rate_scaled_force.number == 0) != (unloading->rate_scale.number == 0)) {
+    const bool scaled = unloading->rate_scaled_force.number != 0;
+    const int at = scaled ? first + 4 : first + 8;
+    Ignored(card, at, at + 3,
+            fmt::format("{} without {}",
+                        scaled ? "NF(2), F2 of the rate-dependent force"
+                               : "NF(3), F3 of the rate-dependent force",
+                        scaled ? "NF(3)" : "NF(2)"),
+            "ATB multiplies F2(D) by F3(D'), 0 without either: the term is left out");
+    unloading->rate_scaled_force.number = unloading->rate_scale.number = 0;
+  }
+}
+
 void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction,
                                      UnloadingRefs* unloading) {
   *force = Reference(card, first, first + 3, "the force-deflection function");
@@ -63,14 +85,19 @@ void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Re
     const int at = first + 8 + 4 * i;
     *factors[i] = Reference(card, at, at + 3, names[i]);
   }
+  const bool positive =
+      spike > 0 || unloading->r_factor.number > 0 || unloading->g_factor.number > 0;
   if (spike < 0 || unloading->r_factor.number < 0 || unloading->g_factor.number < 0) {
-    const int at = spike < 0 ? first + 4 : unloading->r_factor.number < 0 ? first + 8 : first + 12;
-    Refuse(card, at, at + 3, "a negative function number (ATB's rate-dependent force)",
-           "with negative numbers in NF(2) to NF(4) ATB adds F2(D) F3(D') + F4(D') to the force "
-           "(D' the deflection rate, FUNC_RATE_DEP); sled's contact force depends on the "
-           "deflection only: add its rate term by hand as the contact's `damping`");
-    unloading->r_factor.number = std::max(unloading->r_factor.number, 0);
-    unloading->g_factor.number = std::max(unloading->g_factor.number, 0);
+    if (positive) {
+      Invalid(card, first + 4, first + 15,
+              "negative function numbers (ATB's rate-dependent force) beside a spike, R or G "
+              "function",
+              "ATB's rate-dependent force (FUNC_RATE_DEP) takes NF(2) to NF(4) all negative or "
+              "zero; it cannot be used with an inertial spike or R and G factors");
+      unloading->r_factor.number = unloading->g_factor.number = 0;
+    } else {
+      ReadRateTerms(card, first, spike, unloading);
+    }
   }
   *friction = Reference(card, first + 16, first + 19, "the friction function");
 }

@@ -34,8 +34,10 @@ class DeckFields {
   std::vector<int> CountsPerItem(const std::string& label, int items, std::string_view format,
                                  int per_card, bool one_read, std::string_view what, int limit);
   // Five function numbers from `first` (force-deflection, inertial spike, R factor, G factor,
-  // friction, 4 columns each): the spike and negative numbers (ATB's rate-dependent force) are
-  // refused; the R and G factors go to `unloading`, for the mapper to convert.
+  // friction, 4 columns each): the spike is refused; the R and G factors, or the functions of
+  // ATB's rate-dependent force (negative numbers, ReadRateTerms), go to `unloading`, for the
+  // mapper to convert.
+  void ReadRateTerms(const Card& card, int first, int spike, UnloadingRefs* unloading);
   void ReadFunctionNumbers(const Card& card, int first, Ref* force, Ref* friction,
                            UnloadingRefs* unloading);
 

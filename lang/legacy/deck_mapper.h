@@ -26,7 +26,23 @@ class DeckMapper {
   // How a function is used: its argument and result units depend on it.
   // kSlip: a slip joint's spring, a force against its displacement along the slip axis.
   // kLoadForce, kLoadTorque: a D.9 applied force or torque against time.
-  enum class Use { kContact, kBelt, kJoint, kSlip, kLoadForce, kLoadTorque };
+  // kContactFactor, kBeltFactor: an R or G factor that changes with the largest deflection of
+  // a contact's or a webbing's force function (its argument), to a ratio.
+  // kRateScaledForce, kRateScale, kRateForce: F2(D), F3(D'), F4(D') of ATB's rate-dependent
+  // contact force.
+  enum class Use {
+    kContact,
+    kBelt,
+    kJoint,
+    kSlip,
+    kLoadForce,
+    kLoadTorque,
+    kContactFactor,
+    kBeltFactor,
+    kRateScaledForce,
+    kRateScale,
+    kRateForce
+  };
 
   DeckMapper(const Deck& deck, DiagnosticConsumer& diagnostics)
       : deck_(deck),
@@ -45,20 +61,37 @@ class DeckMapper {
   // A joint of the body by deck number (B.3 order), or empty after reporting a bad number.
   std::string Joint(const Ref& ref);
   const FunctionCard* Function(const Ref& ref);
-  // The unloading attributes of a force function (map_unloading.cpp): none, or energy_loss and
-  // permanent_set from ATB's R and G factors.
+  // An R or G factor: a constant, or the name of its declared function of x_max.
+  struct FactorValue {
+    double constant = 0;
+    std::string function;
+    bool operator<(const FactorValue& other) const {
+      return std::tie(constant, function) < std::tie(other.constant, other.function);
+    }
+  };
+  // The unloading of a force function (map_unloading.cpp): elastic, or ATB's law with the R
+  // and G factors of the card that uses it.
   struct FunctionUnloading {
-    double energy_loss = 0, permanent_set = 0;
+    bool atb = false;
+    FactorValue r{1.0, {}}, g{0.0, {}};
   };
   // The name under which a function is declared for one kind of use (its units depend on it)
   // and one unloading (ATB's R and G factors of the card that uses it).
   std::optional<ast::Expr> FunctionFor(const Ref& ref, Use use, const UnloadingRefs& factors = {});
-  // A constant factor function's value, `none` for no function; empty after a report (a factor
-  // that is not a constant).
-  std::optional<double> Factor(const Ref& ref, std::string_view what, double none);
-  // The unloading of `function` under a card's R and G factors; empty after a report.
-  std::optional<FunctionUnloading> Unloading(const FunctionCard& function,
-                                             const UnloadingRefs& refs);
+  // A factor function's constant, or its declaration as a function of the argument of `use`'s
+  // force function; `none` for no function; empty after a report.
+  std::optional<FactorValue> Factor(const Ref& ref, Use use, double none);
+  // The unloading of a force function of `use` under a card's R and G factors; empty after a
+  // report.
+  std::optional<FunctionUnloading> Unloading(const UnloadingRefs& refs, Use use);
+  // `unloading = atb(...)` in a function's block, when it has ATB's law.
+  void AddUnloading(ast::Statement& statement, const FunctionUnloading& unloading);
+  // A contact's `rate_scaled_force`, `rate_scale` and `rate_force` from ATB's rate-dependent
+  // functions; false after a report.
+  bool AddRateTerms(ast::Statement& contact, const UnloadingRefs& refs);
+  // E0507 for rate-dependent functions on a card whose element (a belt's webbing) has none;
+  // true when it refused.
+  bool RefuseRateTerms(const UnloadingRefs& refs, std::string_view element);
   // E0512 at the function's E.1 card when it pushes the wrong way for `use` (as E0420 would).
   void CheckSign(const FunctionCard& function, const Ref& ref, Use use);
   // The largest friction coefficient the language takes (`friction`, 0 to 5).
@@ -139,8 +172,8 @@ class DeckMapper {
   std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
   std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
   std::set<int> placed_extras_;
-  // (number, use, energy_loss, permanent_set) -> the declared name
-  std::map<std::tuple<int, int, double, double>, std::string> function_names_;
+  // (number, use, ATB's law, R, G) -> the declared name
+  std::map<std::tuple<int, int, bool, FactorValue, FactorValue>, std::string> function_names_;
   std::vector<FunctionUse> uses_;
   std::set<int> used_;
   std::vector<std::pair<std::string, std::string>> contact_outputs_;

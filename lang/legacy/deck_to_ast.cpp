@@ -21,6 +21,20 @@
 namespace sled::lang::legacy::mapping {
 namespace {
 
+// The unit of coefficient k >= 1 of a polynomial from `argument` (a unit such as in, or in/s)
+// to `result` (empty: a ratio), with every divisor after the `/`: lbf/in^2, in^-1 (a ratio per
+// inch), lbf*s^2/in^2 (a force per (in/s)^2), s/in (a ratio per in/s).
+std::string CoefficientUnit(const std::string& result, const std::string& argument, std::size_t k) {
+  const auto slash = argument.find('/');
+  const std::string top = argument.substr(0, slash);
+  const std::string bottom = slash == std::string::npos ? "" : argument.substr(slash + 1);
+  const std::string power = k > 1 ? fmt::format("^{}", k) : "";
+  std::string numerator = result;
+  if (!bottom.empty()) numerator += (numerator.empty() ? "" : "*") + bottom + power;
+  if (numerator.empty()) return fmt::format("{}^-{}", top, k);
+  return numerator + "/" + top + power;
+}
+
 // C.2.a's VIPS is in miles per hour whatever A.3's units (the V.3 input description; ATB's
 // VINO12 turns it into the deck's length over time), so it keeps that unit in the scenario.
 constexpr std::string_view kVipsUnit = "mph";
@@ -158,17 +172,21 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
                                                  const UnloadingRefs& factors) {
   const FunctionCard* function = Function(ref);
   if (function == nullptr) return std::nullopt;
-  const auto unloading = Unloading(*function, factors);
+  const auto unloading = Unloading(factors, use);
   if (!unloading) return std::nullopt;
-  auto key = std::make_tuple(function->number, static_cast<int>(use), unloading->energy_loss,
-                             unloading->permanent_set);
+  auto key = std::make_tuple(function->number, static_cast<int>(use), unloading->atb, unloading->r,
+                             unloading->g);
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
+    const bool load = use == Use::kLoadForce || use == Use::kLoadTorque;
     // An applied load's function may take either sign: it pushes against its direction.
-    if (use != Use::kLoadForce && use != Use::kLoadTorque) CheckSign(*function, ref, use);
+    if (!load) CheckSign(*function, ref, use);
+    const bool factor = !load && use != Use::kContact && use != Use::kBelt &&
+                        use != Use::kJoint && use != Use::kSlip;
     std::string name =
         NameOf(function->title, fmt::format("function_{}", function->number), taken_,
-               use == Use::kContact || use == Use::kSlip || use == Use::kLoadForce ? "force"
+               factor ? "factor"
+               : use == Use::kContact || use == Use::kSlip || use == Use::kLoadForce ? "force"
                : use == Use::kJoint || use == Use::kLoadTorque                     ? "torque"
                                                                                    : "webbing");
     found = function_names_.emplace(key, name).first;
@@ -182,6 +200,9 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
 // torque has the sign of its angle. Constants and tables by their values, a polynomial near zero
 // by its lowest non-zero coefficient.
 void DeckMapper::CheckSign(const FunctionCard& function, const Ref& ref, Use use) {
+  // An R or G factor is a ratio ATB evaluates as given, of no direction, and the functions of
+  // ATB's rate-dependent force may have either sign.
+  if (use != Use::kContact && use != Use::kBelt && use != Use::kJoint && use != Use::kSlip) return;
   const bool both_ways = use == Use::kJoint || use == Use::kSlip;
   std::string wrong;
   switch (function.form) {
@@ -445,16 +466,23 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
                                              const FunctionUnloading& unloading) {
   const bool of_time = use == Use::kLoadForce || use == Use::kLoadTorque;
   const bool torque = use == Use::kJoint || use == Use::kLoadTorque;
-  const std::string argument_unit = use == Use::kContact || use == Use::kSlip ? L
-                                    : use == Use::kJoint                      ? "deg"
-                                    : of_time                                 ? T
-                                                                              : "";
-  const std::string result_unit = torque ? F + "*" + L : F;
-  const char* argument = use == Use::kContact || use == Use::kSlip ? "deflection"
-                         : use == Use::kJoint                      ? "angle"
-                         : of_time                                 ? "time"
-                                                                   : "strain";
-  const char* result = torque ? "torque" : "force";
+  const bool ratio =
+      use == Use::kContactFactor || use == Use::kBeltFactor || use == Use::kRateScale;
+  const bool of_rate = use == Use::kRateScale || use == Use::kRateForce;
+  const bool of_length = use == Use::kContact || use == Use::kSlip || use == Use::kContactFactor ||
+                         use == Use::kRateScaledForce;
+  const std::string argument_unit = of_length            ? L
+                                    : of_rate            ? L + "/" + T
+                                    : use == Use::kJoint ? "deg"
+                                    : of_time            ? T
+                                                         : "";
+  const std::string result_unit = ratio ? "" : torque ? F + "*" + L : F;
+  const char* argument = of_length            ? "deflection"
+                         : of_rate            ? "velocity"
+                         : use == Use::kJoint ? "angle"
+                         : of_time            ? "time"
+                                              : "strain";
+  const char* result = ratio ? "ratio" : torque ? "torque" : "force";
   ast::Statement statement =
       Declaration("function", Path(name),
                   CardComment("E.1", function.line) +
@@ -475,8 +503,7 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
       while (last > 2 && function.coefficients[last - 1] == 0) --last;
       for (std::size_t k = 0; k < last; ++k) {
         std::string unit = result_unit;
-        if (k > 0 && !argument_unit.empty())
-          unit += "/" + argument_unit + (k > 1 ? fmt::format("^{}", k) : "");
+        if (k > 0 && !argument_unit.empty()) unit = CoefficientUnit(result_unit, argument_unit, k);
         arguments.emplace_back("", Number(function.coefficients[k], unit));
       }
       statement.values.push_back(Call("polynomial", std::move(arguments)));
@@ -489,11 +516,7 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
       }
       break;
   }
-  if (unloading.energy_loss > 0)
-    Add(statement, Attribute("energy_loss", Number(unloading.energy_loss)));
-  if (unloading.permanent_set > 0) {
-    Add(statement, Attribute("permanent_set", Number(unloading.permanent_set)));
-  }
+  AddUnloading(statement, unloading);
   if (statement.block->statements.empty()) statement.block.reset();
   return statement;
 }

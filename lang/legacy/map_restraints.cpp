@@ -53,6 +53,7 @@ void DeckMapper::MapSurfaces(ast::Block& scenario) {
         "contact", Path(segment), CardComment(card.with_plane ? "F.1.b" : "F.3.b", card.line));
     contact.clauses.push_back({"with", {}, Path(other)});
     Add(contact, Attribute("force", std::move(*force)));
+    if (!AddRateTerms(contact, card.unloading)) continue;
     if (*friction != 0) Add(contact, Attribute("friction", Number(*friction)));
     if (card.output) contact_outputs_.emplace_back(segment, other);
     contacts.push_back(std::move(contact));
@@ -141,6 +142,7 @@ void DeckMapper::MapRestraints(ast::Block& scenario) {
     const std::string segment = Segment(card.segment, "segment");
     auto force = FunctionFor(card.force, Use::kBelt, card.unloading);
     const auto friction = Friction(card.friction);
+    if (RefuseRateTerms(card.unloading, "a belt")) continue;
     if (segment.empty() || !force || !friction) continue;
     ast::Statement belt = Declaration(
         "belt", Path(belts_[b]),
@@ -374,6 +376,7 @@ void DeckMapper::MapHarnesses(ast::Block& scenario) {
       path.push_back(Vector(belt.points.back().anchor, L));
       auto force = FunctionFor(belt.force, Use::kBelt, belt.unloading);
       const auto wrap = CommonFriction(wrap_friction, "a belt's wrapped segments");
+      if (RefuseRateTerms(belt.unloading, "a harness belt")) complete = false;
       if (!force || !wrap || !complete) {
         complete = false;
         continue;

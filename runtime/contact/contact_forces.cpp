@@ -6,8 +6,10 @@
 #include "runtime/contact/contact_reach.h"
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/mirror.h"
+#include "runtime/forces/atb_unloading.h"
 #include "runtime/forces/force_deflection.h"
 #include "runtime/forces/forces.h"
+#include "runtime/forces/functions.h"
 #include "runtime/forces/table_range.h"
 #include "runtime/run/energy.h"
 
@@ -63,6 +65,21 @@ ContactGeometry BoundedGeometry(const Model& model, Data& data, std::size_t k) {
     }
   }
   return PairGeometry(model, data, k);
+}
+
+// ATB's rate-dependent terms of pair k (FUNC_RATE_DEP): F2(d) F3(d') + F4(d'), d' the
+// deflection rate; 0 for a pair without them (or a Model built without the arrays).
+double RateDependentForce(const Model& model, std::size_t k, double deflection, double rate) {
+  const ContactTable& table = model.contacts;
+  double force = 0.0;
+  if (k < table.pair_rate_scaled_force.size() && table.pair_rate_scaled_force[k] >= 0) {
+    force += EvaluateFunction(model.functions, table.pair_rate_scaled_force[k], deflection) *
+             EvaluateFunction(model.functions, table.pair_rate_scale[k], rate);
+  }
+  if (k < table.pair_rate_force.size() && table.pair_rate_force[k] >= 0) {
+    force += EvaluateFunction(model.functions, table.pair_rate_force[k], rate);
+  }
+  return force;
 }
 
 }  // namespace
@@ -153,7 +170,8 @@ void AccumulateContactForces(const Model& model, Data& data) {
     const double depth = table.pair_damping_depth[k];
     const double ramp = depth > 0 ? std::min(1.0, g.deflection / depth) : 1.0;
     const double normal_force =
-        std::max(0.0, g.weight * (elastic + ramp * table.pair_damping[k] * rate));
+        std::max(0.0, g.weight * (elastic + RateDependentForce(model, k, g.deflection, rate) +
+                                  ramp * table.pair_damping[k] * rate));
     Vec3 force = normal_force * g.normal;
     const double mu = table.pair_friction[k];
     if (mu > 0 && normal_force > 0) {
@@ -167,7 +185,10 @@ void AccumulateContactForces(const Model& model, Data& data) {
     }
     state.deflection[k] = g.deflection;
     state.rate[k] = 0.0;
-    if (state.hysteresis[k] && g.deflection > state.history[k].max_deflection) {
+    // The rate the turn events watch: beyond the largest deflection, and everywhere under ATB's
+    // law, which also turns below it.
+    if (state.hysteresis[k] && (g.deflection > state.history[k].max_deflection ||
+                                AtbReturnFunction(model.functions, table.pair_function[k]) >= 0)) {
       state.rate[k] = -g.normal.dot(SurfacePointVelocity(model, data, k, 0, g.deepest_first) -
                                     SurfacePointVelocity(model, data, k, 1, g.deepest_second));
     }
@@ -221,7 +242,9 @@ void WatchContactTables(const Model& model, Data& data) {
 
 void TurnContactHistory(const Model& model, Data& data, std::size_t k) {
   ContactState& state = data.contacts;
-  if (!(state.deflection[k] > 0)) return;
+  // ATB's law also turns where the pair comes apart unloading (at zero deflection).
+  const bool atb = AtbReturnFunction(model.functions, model.contacts.pair_function[k]) >= 0;
+  if (!(state.deflection[k] > 0) && !atb) return;
   UpdateLoadingHistory(model.functions, model.contacts.pair_function[k], state.deflection[k],
                        state.history[k]);
 }

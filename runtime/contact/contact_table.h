@@ -40,6 +40,11 @@ struct ContactTable {
   std::vector<std::int32_t> pair_second;    // plane or ellipsoid, by pair_kind
   std::vector<std::int32_t> pair_function;  // deflection -> force, into Model::functions
   std::vector<double> pair_damping;         // [N*s/m]
+  // ATB's rate-dependent force (FUNC_RATE_DEP): F2(d) F3(d') + F4(d') added to the function's
+  // force, d' the deflection rate; into Model::functions, -1: none (F2 and F3 come together).
+  std::vector<std::int32_t> pair_rate_scaled_force;  // deflection -> force
+  std::vector<std::int32_t> pair_rate_scale;         // deflection rate -> ratio
+  std::vector<std::int32_t> pair_rate_force;         // deflection rate -> force
   // The damping grows linearly from zero at first touch to full at this deflection [m], so the
   // normal force (and the friction with it) has no jump when the surfaces meet; 0: full at once.
   std::vector<double> pair_damping_depth;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/forces/atb_unloading.h"
 #include "runtime/forces/functions.h"
 
 namespace sled::runtime {
@@ -36,11 +37,18 @@ bool HasHysteresis(const FunctionTable& functions, std::int32_t id) {
   if (id < 0) return false;
   const auto f = static_cast<std::size_t>(id);
   return functions.energy_loss[f] > 0 || functions.permanent_set[f] > 0 ||
-         UnloadSlope(functions, id) > 0;
+         UnloadSlope(functions, id) > 0 || AtbReturnFunction(functions, id) >= 0;
+}
+
+double TurnEventFunction(const FunctionTable& functions, std::int32_t id, double x, double rate,
+                         const LoadingHistory& history) {
+  if (AtbReturnFunction(functions, id) >= 0) return AtbTurnFunction(x, rate, history);
+  return x > history.max_deflection ? rate : 1.0;
 }
 
 double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, double x,
                              const LoadingHistory& history, double mirror) {
+  if (AtbReturnFunction(functions, id) >= 0) return AtbForce(functions, id, x, history);
   if (!HasHysteresis(functions, id) || x >= history.max_deflection)
     return Loading(functions, id, x, mirror);
   const double range = history.max_deflection - history.permanent;
@@ -50,6 +58,7 @@ double LoadingUnloadingForce(const FunctionTable& functions, std::int32_t id, do
 
 double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, double x,
                              const LoadingHistory& history, double mirror) {
+  if (AtbReturnFunction(functions, id) >= 0) return AtbSlope(functions, id, x, history);
   if (!HasHysteresis(functions, id) || x >= history.max_deflection) {
     return FunctionSlope(functions, id, mirror * x);  // d/dx of m f(m x) is f'(m x)
   }
@@ -61,6 +70,10 @@ double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, do
 
 void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
                           LoadingHistory& history, double mirror) {
+  if (AtbReturnFunction(functions, id) >= 0) {
+    TurnAtbHistory(functions, id, x, history);
+    return;
+  }
   if (id < 0 || !(x > history.max_deflection)) return;
   const auto f = static_cast<std::size_t>(id);
   history.max_deflection = x;

@@ -35,8 +35,17 @@ namespace sled::runtime {
 struct LoadingHistory {
   double max_deflection = 0.0;  // x_max
   double max_force = 0.0;       // f(x_max)
-  double permanent = 0.0;       // x_p
+  double permanent = 0.0;       // x_p (ATB's law: x_g, where the force reaches zero)
   double exponent = 1.0;        // n
+  // ATB's law only (runtime/forces/atb_unloading.h): the branch (unloading along the quadratic,
+  // or reloading along the cubic), R = 1 at x_max (unloads along f), R at x_max, the quadratic's
+  // A1 and A2 in x - x_g, and the cubic's start and coefficients in x - start.
+  bool unloading = false;
+  bool elastic = false;
+  double energy_return = 1.0;
+  double quadratic[2] = {0.0, 0.0};
+  double cubic_start = 0.0;
+  double cubic[4] = {0.0, 0.0, 0.0, 0.0};
 };
 
 // F(x) under the committed history.
@@ -48,12 +57,18 @@ double LoadingUnloadingSlope(const FunctionTable& functions, std::int32_t id, do
                              const LoadingHistory& history, double mirror = 1.0);
 
 // At a deflection x that turns (an event, or the start): a new largest deflection loads further
-// and moves the unloading curve.
+// and moves the unloading curve; under ATB's law also the turns below x_max (atb_unloading.h).
 void UpdateLoadingHistory(const FunctionTable& functions, std::int32_t id, double x,
                           LoadingHistory& history, double mirror = 1.0);
 
-// True when the function's unloading differs from its loading (an energy loss, a permanent set
-// or an unloading slope): only such force elements keep a history.
+// The event function of a turn of the history at the signed deflection x (below zero: apart)
+// moving at `rate`: it falls through zero where the history must change (runtime/run/system.cpp,
+// runtime/restraint/belt_events.cpp); 1 where nothing can change it.
+double TurnEventFunction(const FunctionTable& functions, std::int32_t id, double x, double rate,
+                         const LoadingHistory& history);
+
+// True when the function's unloading differs from its loading (an energy loss, a permanent set,
+// an unloading slope or ATB's law): only such force elements keep a history.
 bool HasHysteresis(const FunctionTable& functions, std::int32_t id);
 
 // The function's unloading slope relative to its loading slope; 0 when it has none (a Model

@@ -51,6 +51,11 @@ struct FunctionTable {
   std::vector<double> energy_loss;
   std::vector<double> permanent_set;
   std::vector<double> unload_slope;  // relative to the loading slope; 0 (or empty): none
+  // ATB's unloading law (runtime/forces/atb_unloading.h): the function of the largest
+  // deflection that gives the energy return R, and the one that gives the permanent set G (-1:
+  // G = 0). atb_return -1 (or empty): the function unloads by the parameters above instead.
+  std::vector<std::int32_t> atb_return;
+  std::vector<std::int32_t> atb_set;
   std::vector<double> points_x;
   std::vector<double> points_y;
   std::vector<double> coefficients;

@@ -42,6 +42,8 @@ const char* CountName(ModelCount count) {
       return "contact_plane";
     case ModelCount::kPair:
       return "contact_pair";
+    case ModelCount::kPairRate:
+      return "contact_pair_rate";
     case ModelCount::kContactGroup:
       return "contact_group";
     case ModelCount::kGroupPair:
@@ -115,6 +117,7 @@ std::size_t CountOf(const Model& m, ModelCount count) {
     case ModelCount::kPlane:
       return m.contacts.plane_name.size();
     case ModelCount::kPair:
+    case ModelCount::kPairRate:
       return m.contacts.pair_kind.size();
     case ModelCount::kContactGroup:
       return m.contacts.group_first.size();
@@ -158,8 +161,9 @@ std::size_t CountOf(const Model& m, ModelCount count) {
 
 bool CountMayBeEmpty(ModelCount count) {
   return count == ModelCount::kMirror || count == ModelCount::kSegmentDummy ||
-         count == ModelCount::kFunctionUnload || count == ModelCount::kOutputMirror ||
-         count == ModelCount::kOutputFrame || count == ModelCount::kOutputFilter;
+         count == ModelCount::kFunctionUnload || count == ModelCount::kPairRate ||
+         count == ModelCount::kOutputMirror || count == ModelCount::kOutputFrame ||
+         count == ModelCount::kOutputFilter;
 }
 
 namespace {

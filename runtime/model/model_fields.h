@@ -35,13 +35,14 @@ enum class ModelCount : std::uint8_t {
   kAuxiliary,       // nw
   kVehicle,         // vehicle_name
   kFunction,        // functions.kind
-  kFunctionUnload,  // per function, or empty when no function has an unloading slope
+  kFunctionUnload,  // per function, or empty (a Model built without unloading slopes or ATB's law)
   kFunctionPoint,   // functions.points_x
   kCoefficient,     // functions.coefficients
   kSpring,          // spring_name
   kEllipsoid,       // contacts.ellipsoid_name
   kPlane,           // contacts.plane_name
   kPair,            // contacts.pair_kind
+  kPairRate,        // per pair, or empty (a Model built without ATB's rate-dependent terms)
   kContactGroup,    // contacts.group_first
   kGroupPair,       // contacts.group_pairs
   kBelt,            // belts.name
@@ -124,6 +125,8 @@ enum FieldCheck : unsigned {
   X(Function, functions.energy_loss, Physics, None, kPlain)                                \
   X(Function, functions.permanent_set, Physics, None, kPlain)                              \
   X(FunctionUnload, functions.unload_slope, Physics, None, kNonNegative)                   \
+  X(FunctionUnload, functions.atb_return, Physics, Function, kOrNone)                      \
+  X(FunctionUnload, functions.atb_set, Physics, Function, kOrNone)                         \
   X(FunctionPoint, functions.points_x, Physics, None, kPlain)                              \
   X(FunctionPoint, functions.points_y, Physics, None, kPlain)                              \
   X(Coefficient, functions.coefficients, Physics, None, kPlain)                            \
@@ -154,6 +157,9 @@ enum FieldCheck : unsigned {
   X(Pair, contacts.pair_second, Physics, None, kPlain)                                     \
   X(Pair, contacts.pair_function, Physics, Function, kPlain)                               \
   X(Pair, contacts.pair_damping, Physics, None, kNonNegative)                              \
+  X(PairRate, contacts.pair_rate_scaled_force, Physics, Function, kOrNone)                     \
+  X(PairRate, contacts.pair_rate_scale, Physics, Function, kOrNone)                            \
+  X(PairRate, contacts.pair_rate_force, Physics, Function, kOrNone)                            \
   X(Pair, contacts.pair_damping_depth, Physics, None, kNonNegative)                        \
   X(Pair, contacts.pair_friction, Physics, None, kNonNegative)                             \
   X(Pair, contacts.pair_impulse, Physics, None, kPlain)                                    \

@@ -4,6 +4,8 @@
 
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/joint.h"
+#include "runtime/forces/atb_unloading.h"
+#include "runtime/forces/force_deflection.h"
 #include "runtime/restraint/belt_slip.h"
 #include "runtime/restraint/belts.h"
 
@@ -29,8 +31,21 @@ double Strain(const BeltState& state, std::size_t span) {
   return state.length[span] / state.rest_length[span] - 1.0;
 }
 
-bool Loads(const BeltState& state, std::size_t span) {
-  return state.hysteresis[span] && Strain(state, span) > state.history[span].max_deflection;
+// Whether the span's turn events need its strain rate now: while it loads beyond its largest
+// strain, and always under ATB's law, which turns below it too.
+bool WatchesRate(const Model& model, const BeltState& state, std::size_t span) {
+  if (!state.hysteresis[span]) return false;
+  const std::int32_t function = model.belts.function[Index(state.span_belt[span])];
+  return AtbReturnFunction(model.functions, function) >= 0 ||
+         Strain(state, span) > state.history[span].max_deflection;
+}
+
+// The span's turn event function (force_deflection.h): its strain rate while it loads beyond
+// its largest strain (and ATB's turns below it); 1 when nothing can turn its history.
+double TurnFunction(const Model& model, const BeltState& state, std::size_t span) {
+  if (!state.hysteresis[span]) return 1.0;
+  return TurnEventFunction(model.functions, model.belts.function[Index(state.span_belt[span])],
+                           Strain(state, span), state.strain_rate[span], state.history[span]);
 }
 
 double Extended(const Model& model, const BeltState& state, std::size_t span) {
@@ -78,7 +93,7 @@ void UpdateBeltRates(const Model& model, Data& data) {
   bool needed = false;
   for (std::size_t j = 0; j < state.mode.size() && !needed; ++j) needed = Slips(state.mode[j]);
   for (std::size_t span = 0; span < state.hysteresis.size() && !needed; ++span) {
-    needed = Loads(state, span);
+    needed = WatchesRate(model, state, span);
   }
   if (!needed) return;
   // The body point under each wrap's middle now: how far the body carries the webbing is how
@@ -135,7 +150,7 @@ void UpdateBeltRates(const Model& model, Data& data) {
 double BeltEventFunction(const Model& model, const Data& data, const BeltEvent& event) {
   const BeltState& state = data.belts;
   if (event.kind == BeltEventKind::kTurn) {
-    return Loads(state, event.index) ? state.strain_rate[event.index] : 1.0;
+    return TurnFunction(model, state, event.index);
   }
   const std::size_t j = event.index;
   const JunctionMode mode = state.mode[j];
@@ -176,7 +191,7 @@ void HandleBeltEvent(const Model& model, Data& data, const BeltEvent& event, int
     // flagship at 1e-9 that took the lap belt's second span off its unloading curve for 11 ms.
     UpdateBeltRates(model, data);
     for (std::size_t span = 0; span < state.hysteresis.size(); ++span) {
-      const bool turning = Loads(state, span) && state.strain_rate[span] <= kRateNoise;
+      const bool turning = TurnFunction(model, state, span) <= kRateNoise;
       if (span != event.index && !turning) continue;
       UpdateLoadingHistory(model.functions, model.belts.function[Index(state.span_belt[span])],
                            Strain(state, span), state.history[span]);

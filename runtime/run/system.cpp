@@ -13,6 +13,7 @@
 #include "runtime/dynamics/constraints.h"
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/joint.h"
+#include "runtime/forces/force_deflection.h"
 #include "runtime/forces/forces.h"
 #include "runtime/forces/functions.h"
 #include "runtime/forces/joint_hysteresis.h"
@@ -342,11 +343,12 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
     }
     if (events_[k].kind == EventKind::kContactTurn) {
       // The deflection rate while the pair loads beyond its largest deflection (it falls through
-      // zero where the deflection turns); 1 otherwise, when nothing can turn the history.
+      // zero where the deflection turns), and ATB's turns below it; 1 when nothing can turn the
+      // history. The signed deflection is minus the gap (below zero: apart).
       const std::size_t pair = events_[k].segment;
       const ContactState& contacts = data_.contacts;
-      g[k] = contacts.deflection[pair] > contacts.history[pair].max_deflection ? contacts.rate[pair]
-                                                                               : 1.0;
+      g[k] = TurnEventFunction(model_.functions, model_.contacts.pair_function[pair],
+                               -contacts.gap[pair], contacts.rate[pair], contacts.history[pair]);
       continue;
     }
     if (events_[k].kind == EventKind::kJointTurn) {

@@ -120,10 +120,19 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     const auto v = static_cast<std::size_t>(m.v_address.at(i));
     return {m.v0.at(v), m.v0.at(v + 1), m.v0.at(v + 2)};
   }
-  if (field == "pair_energy_loss")
-    return {m.functions.energy_loss.at(static_cast<std::size_t>(c.pair_function.at(i)))};
-  if (field == "pair_permanent_set")
-    return {m.functions.permanent_set.at(static_cast<std::size_t>(c.pair_function.at(i)))};
+  // ATB's R and G of a contact's or a belt's force function at a largest deflection (strain).
+  auto factor = [&](std::int32_t function, bool energy_return) {
+    const auto f = static_cast<std::size_t>(function);
+    const auto& ids = energy_return ? m.functions.atb_return : m.functions.atb_set;
+    return f < ids.size() && ids[f] >= 0 ? at(ids[f]) : std::vector<double>{};
+  };
+  if (field == "pair_energy_return_at") return factor(c.pair_function.at(i), true);
+  if (field == "pair_permanent_set_at") return factor(c.pair_function.at(i), false);
+  if (field == "pair_rate_scaled_force_at") return at(c.pair_rate_scaled_force.at(i));
+  if (field == "pair_rate_scale_at") return at(c.pair_rate_scale.at(i));
+  if (field == "pair_rate_force_at") return at(c.pair_rate_force.at(i));
+  if (field == "belt_energy_return_at") return factor(m.belts.function.at(i), true);
+  if (field == "belt_permanent_set_at") return factor(m.belts.function.at(i), false);
   if (field == "mirror_twin") return {static_cast<double>(m.segment_mirror_twin.at(i))};
   if (field == "output_count") return {static_cast<double>(m.output_kind.size())};
   if (field == "harness_friction") return {m.belts.harness_friction.at(i)};

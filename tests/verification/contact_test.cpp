@@ -1,11 +1,13 @@
 // Contacts against closed-form answers: a sphere dropped on a floor with the first-contact
 // impulse rebounds with the restitution times its impact speed; with an energy-losing force
 // function it rebounds with sqrt(1 - energy_loss) of it (the unloading curve returns that share
-// of the work); a linear spring–damper contact follows the damped oscillator during contact and
+// of the work), and under ATB's law with sqrt(R); a linear spring–damper contact (its damping
+// also given as ATB's rate-dependent terms) follows the damped oscillator during contact and
 // releases when its force falls to zero; a block sliding under Coulomb friction stops after
 // v^2 / (2 mu g).
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -30,6 +32,9 @@ struct Contact {
   double restitution = 0.0;
   double energy_loss = 0.0;
   double permanent_set = 0.0;
+  double atb_return = -1.0;  // ATB's law with these constant R and G when R >= 0
+  double atb_set = 0.0;
+  bool damping_as_rate_terms = false;  // the damping given as ATB's rate-dependent force
 };
 
 // A free sphere (a segment with one spherical ellipsoid at its centre of mass) above the floor
@@ -40,14 +45,37 @@ runtime::Model SphereOnFloor(double mass, double radius, double inertia, const C
   runtime::testing::AddSegment(model, "ball", -1, JointKind::kFree, mass, Vec3::Constant(inertia));
   model.q0[2] = z0;
   for (int i = 0; i < 3; ++i) model.v0[3 + static_cast<std::size_t>(i)] = v0[i];
+  // Function 0 the force; then ATB's R and G, and ATB's rate terms, when asked for.
   runtime::FunctionTable& f = model.functions;
-  f.kind = {runtime::FunctionTable::Kind::kPolynomial};
-  f.constant = {0};
-  f.first = {0};
-  f.count = {2};
-  f.energy_loss = {c.energy_loss};
-  f.permanent_set = {c.permanent_set};
-  f.coefficients = {0.0, c.stiffness};
+  auto append = [&f](std::vector<double> coefficients, std::int32_t atb_return = -1,
+                     std::int32_t atb_set = -1) {
+    f.kind.push_back(runtime::FunctionTable::Kind::kPolynomial);
+    f.constant.push_back(0);
+    f.first.push_back(static_cast<std::int32_t>(f.coefficients.size()));
+    f.count.push_back(static_cast<std::int32_t>(coefficients.size()));
+    f.coefficients.insert(f.coefficients.end(), coefficients.begin(), coefficients.end());
+    f.energy_loss.push_back(0);
+    f.permanent_set.push_back(0);
+    f.atb_return.push_back(atb_return);
+    f.atb_set.push_back(atb_set);
+    return static_cast<std::int32_t>(f.size() - 1);
+  };
+  const bool atb = c.atb_return >= 0;
+  append({0.0, c.stiffness}, atb ? 1 : -1, atb ? 2 : -1);
+  f.energy_loss[0] = c.energy_loss;
+  f.permanent_set[0] = c.permanent_set;
+  if (atb) {
+    append({c.atb_return});
+    append({c.atb_set});
+  }
+  // The damping as ATB's rate terms: F2(d) F3(d') + F4(d') = 2 N * (c/4 d' / N) + c/2 d'.
+  const double damping = c.damping_as_rate_terms ? 0.0 : c.damping;
+  std::int32_t scaled = -1, scale = -1, rate_force = -1;
+  if (c.damping_as_rate_terms) {
+    scaled = append({2.0});
+    scale = append({0.0, c.damping / 4});
+    rate_force = append({0.0, c.damping / 2});
+  }
   ContactTable& t = model.contacts;
   t.ellipsoid_name = {"ball"};
   t.ellipsoid_frame = {{FrameRef::Kind::kSegment, 0}};
@@ -66,7 +94,10 @@ runtime::Model SphereOnFloor(double mass, double radius, double inertia, const C
   t.pair_first = {0};
   t.pair_second = {0};
   t.pair_function = {0};
-  t.pair_damping = {c.damping};
+  t.pair_damping = {damping};
+  t.pair_rate_scaled_force = {scaled};
+  t.pair_rate_scale = {scale};
+  t.pair_rate_force = {rate_force};
   t.pair_damping_depth = {c.damping_depth};
   t.pair_friction = {c.friction};
   t.pair_impulse = {static_cast<std::uint8_t>(c.impulse ? 1 : 0)};
@@ -77,6 +108,21 @@ runtime::Model SphereOnFloor(double mass, double radius, double inertia, const C
 
 // The sphere's velocity in the world frame (a free joint's coordinates are in its own frame).
 Vec3 Velocity(const runtime::Data& d) { return d.rotation[0] * d.velocity[0].tail<3>(); }
+
+// A 1 kg sphere of radius 0.1 m meeting the floor at 2 m/s 10 mm away, without gravity.
+runtime::Model ImpactAt2MetresPerSecond(const Contact& c) {
+  runtime::Model model = SphereOnFloor(1.0, 0.1, 0.004, c, 0.11, Vec3(0, 0, -2));
+  model.gravity.setZero();
+  return model;
+}
+
+// Runs to 50 ms (long after the rebound) with `method` at 1e-10; the sphere's vertical speed.
+double SpeedAfter50ms(const runtime::Model& model, runtime::Data& data, const std::string& method) {
+  double speed = 0;
+  EXPECT_TRUE(Simulate(model, data, method, 1e-10, {0.05},
+                       [&](const runtime::Data& d) { speed = Velocity(d).z(); }));
+  return speed;
+}
 
 class ContactVerification : public ::testing::TestWithParam<std::string> {};
 
@@ -128,12 +174,9 @@ TEST_P(ContactVerification, EnergyLossGivesTheSquareRootRestitution) {
     Contact c;
     c.energy_loss = 0.36;
     c.permanent_set = set;
-    runtime::Model model = SphereOnFloor(1.0, 0.1, 0.004, c, 0.11, Vec3(0, 0, -2));
-    model.gravity.setZero();
+    const runtime::Model model = ImpactAt2MetresPerSecond(c);
     runtime::Data data = runtime::MakeData(model);
-    double speed = 0;
-    ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, {0.05},
-                         [&](const runtime::Data& d) { speed = Velocity(d).z(); }));
+    const double speed = SpeedAfter50ms(model, data, GetParam());
     EXPECT_NEAR(speed, 0.8 * 2.0, 1e-4) << set;
     // The work the contact absorbed (its power integrated with the state) is the kinetic energy
     // the sphere lost.
@@ -144,44 +187,68 @@ TEST_P(ContactVerification, EnergyLossGivesTheSquareRootRestitution) {
   }
 }
 
+TEST_P(ContactVerification, AtbUnloadingReturnsRAndLeavesAtThePermanentSet) {
+  // No gravity: a 1 kg sphere meets a 1e5 N/m floor at 2 m/s, so x_max = 2 / sqrt(1e5) and the
+  // loading energy is 2 J. ATB's quadratic with R = 0.6 and G = 0.25 (not clamped: A1 = 0.533 k,
+  // A2 = 0.8 k / d) returns 0.6 of it and reaches zero force at 0.25 x_max, where the sphere
+  // leaves at sqrt(0.6) * 2 m/s.
+  Contact c;
+  c.atb_return = 0.6;
+  c.atb_set = 0.25;
+  const runtime::Model model = ImpactAt2MetresPerSecond(c);
+  runtime::Data data = runtime::MakeData(model);
+  const double speed = SpeedAfter50ms(model, data, GetParam());
+  const double x_max = 2.0 / std::sqrt(1e5);
+  EXPECT_NEAR(speed, std::sqrt(0.6) * 2.0, 1e-6);
+  EXPECT_NEAR(data.contacts.history[0].max_deflection, x_max, 1e-6 * x_max);
+  EXPECT_NEAR(data.contacts.history[0].permanent, 0.25 * x_max, 1e-6 * x_max);
+  EXPECT_NEAR(data.energy.Absorbed(), 0.4 * 2.0, 1e-6);
+}
+
 TEST_P(ContactVerification, SpringDamperContactFollowsTheDampedOscillator) {
   // No gravity: m = 2 kg meets a contact k = 2e4 N/m, c = 40 N s/m (w = 100 rad/s, zeta = 0.1)
   // at 1 m/s after 10 ms. During contact delta = (v / wd) e^(-zeta w tau) sin(wd tau); the force
   // k delta + c delta' reaches zero while delta > 0, at wd tau = pi - atan(c wd / (k - c s)),
   // s = zeta w, and the sphere leaves with the rate it has there.
-  const double m = 2, k = 2e4, cd = 40, v = 1, r = 0.1, approach = 0.01;
-  Contact c;
-  c.stiffness = k;
-  c.damping = cd;
-  runtime::Model model = SphereOnFloor(m, r, 0.01, c, r + v * approach, Vec3(0, 0, -v));
-  model.gravity.setZero();
-  runtime::Data data = runtime::MakeData(model);
-  const double w = std::sqrt(k / m), zeta = cd / (2 * std::sqrt(k * m)), s = zeta * w;
-  const double wd = w * std::sqrt(1 - zeta * zeta);
-  const double release = (std::numbers::pi - std::atan(cd * wd / (k - cd * s))) / wd;
-  auto deflection = [&](double tau) { return v / wd * std::exp(-s * tau) * std::sin(wd * tau); };
-  auto rate = [&](double tau) {
-    return v / wd * std::exp(-s * tau) * (wd * std::cos(wd * tau) - s * std::sin(wd * tau));
-  };
-  const double peak = deflection(std::atan(wd / s) / wd);  // where the rate is zero
-  double worst = 0;
-  std::vector<double> times = Linspace(approach, approach + release, 200);
-  times.pop_back();  // the release itself is checked through the exit speed
-  times.push_back(approach + release + 0.005);
-  ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, times, [&](const runtime::Data& d) {
-    const double tau = d.time - approach;
-    const double expected =
-        tau < release ? deflection(tau)
-                      : deflection(release) + rate(release) * (tau - release);  // free flight
-    worst = std::max(worst, std::abs((r - d.position[0].z()) - expected));
-    if (tau < release) {
-      EXPECT_NEAR(d.contacts.normal_force[0], k * expected + cd * rate(tau), 1e-7 * k * peak);
-    } else {
-      EXPECT_EQ(d.contacts.normal_force[0], 0.0);
-      EXPECT_NEAR(Velocity(d).z(), -rate(release), 1e-7);  // the exit speed fixes the duration
-    }
-  }));
-  EXPECT_LT(worst, 1e-7 * peak);
+  // The damping given as ATB's rate-dependent terms F2(d) F3(d') + F4(d') (FUNC_RATE_DEP) that
+  // sum to c d' follows the same closed form.
+  for (const bool as_rate_terms : {false, true}) {
+    SCOPED_TRACE(as_rate_terms ? "ATB's rate terms" : "damping");
+    const double m = 2, k = 2e4, cd = 40, v = 1, r = 0.1, approach = 0.01;
+    Contact c;
+    c.stiffness = k;
+    c.damping = cd;
+    c.damping_as_rate_terms = as_rate_terms;
+    runtime::Model model = SphereOnFloor(m, r, 0.01, c, r + v * approach, Vec3(0, 0, -v));
+    model.gravity.setZero();
+    runtime::Data data = runtime::MakeData(model);
+    const double w = std::sqrt(k / m), zeta = cd / (2 * std::sqrt(k * m)), s = zeta * w;
+    const double wd = w * std::sqrt(1 - zeta * zeta);
+    const double release = (std::numbers::pi - std::atan(cd * wd / (k - cd * s))) / wd;
+    auto deflection = [&](double tau) { return v / wd * std::exp(-s * tau) * std::sin(wd * tau); };
+    auto rate = [&](double tau) {
+      return v / wd * std::exp(-s * tau) * (wd * std::cos(wd * tau) - s * std::sin(wd * tau));
+    };
+    const double peak = deflection(std::atan(wd / s) / wd);  // where the rate is zero
+    double worst = 0;
+    std::vector<double> times = Linspace(approach, approach + release, 200);
+    times.pop_back();  // the release itself is checked through the exit speed
+    times.push_back(approach + release + 0.005);
+    ASSERT_TRUE(Simulate(model, data, GetParam(), 1e-10, times, [&](const runtime::Data& d) {
+      const double tau = d.time - approach;
+      const double expected =
+          tau < release ? deflection(tau)
+                        : deflection(release) + rate(release) * (tau - release);  // free flight
+      worst = std::max(worst, std::abs((r - d.position[0].z()) - expected));
+      if (tau < release) {
+        EXPECT_NEAR(d.contacts.normal_force[0], k * expected + cd * rate(tau), 1e-7 * k * peak);
+      } else {
+        EXPECT_EQ(d.contacts.normal_force[0], 0.0);
+        EXPECT_NEAR(Velocity(d).z(), -rate(release), 1e-7);  // the exit speed fixes the duration
+      }
+    }));
+    EXPECT_LT(worst, 1e-7 * peak);
+  }
 }
 
 TEST_P(ContactVerification, SlidingBlockStopsAfterTheCoulombDistance) {

@@ -1,0 +1,123 @@
+// `unloading = atb(energy_return = R, permanent_set = G)`: ATB's unloading law on a function
+// (runtime/forces/atb_unloading.h), its factors each a number or a function of the largest
+// deflection. A named function's factors may be functions declared after it, so while the
+// named functions are defined (CheckContext::DefineFunction) the law is read once they all are
+// (ResolvePendingAtbLaws).
+#include <fmt/format.h>
+
+#include "compiler/check/context.h"
+
+namespace sled::compiler::internal {
+namespace {
+
+constexpr std::string_view kFormHelp =
+    "write `unloading = atb(energy_return = R, permanent_set = G)`, each a number or a function "
+    "of the largest deflection";
+
+}  // namespace
+
+void CheckContext::ReadAtbUnloading(Scope& scope, const BoundBlock& bound, Function& function,
+                                    int index) {
+  const ast::Statement* law = One(bound, "unloading");
+  const ast::Expr* value = law != nullptr ? SingleValue(*law) : nullptr;
+  if (value == nullptr) return;
+  const ast::Expr& call = *value;
+  if (call.kind != ast::ExprKind::kCall || call.PathText() != "atb") {
+    Report(DiagnosticKind::kWrongValueKind, call.range, "`unloading` takes ATB's law, `atb(...)`",
+           "not `atb(...)`", std::string(kFormHelp));
+    return;
+  }
+  // The other unloading attributes describe sled's own curve: with ATB's law they contradict it.
+  const AttributeKey others[] = {"energy_loss", "permanent_set", "unload_slope"};
+  for (const AttributeKey other : others) {
+    const ast::Statement* given = One(bound, other);
+    if (given == nullptr) continue;
+    Report(DiagnosticKind::kOverdeterminedUnloading, given->range,
+           fmt::format("`{}` and `unloading = atb(...)` both describe the unloading", other.view()),
+           "given with `unloading`",
+           "keep one: ATB's law takes its energy return and permanent set as arguments of "
+           "`atb(...)`");
+  }
+  function.energy_loss = function.permanent_set = 0.0;
+  function.unload_slope.reset();
+  if (defining_functions_ && index >= 0) {
+    pending_atb_laws_.push_back({&scope, law, index});
+    return;
+  }
+  ReadAtbLaw(scope, *law, call, function);
+}
+
+void CheckContext::ResolvePendingAtbLaws() {
+  for (const PendingAtbLaw& pending : pending_atb_laws_) {
+    const auto at = static_cast<std::size_t>(pending.index);
+    if (!function_valid_.at(at)) continue;
+    // A copy: reading the factors may add functions to scenario_.functions.
+    Function function = scenario_.functions[at];
+    ReadAtbLaw(*pending.scope, *pending.law, *SingleValue(*pending.law), function);
+    scenario_.functions[at] = std::move(function);
+  }
+  pending_atb_laws_.clear();
+}
+
+void CheckContext::ReadAtbLaw(Scope& scope, const ast::Statement& law, const ast::Expr& call,
+                              Function& function) {
+  const Dimension ratio = dim::kDimensionless;
+  const std::string form_help(kFormHelp);
+  bool ok = true;
+  for (const ast::Argument& argument : call.arguments) {
+    const bool is_return = argument.name == "energy_return";
+    if (!is_return && argument.name != "permanent_set") {
+      Report(DiagnosticKind::kUnknownArgument,
+             argument.name.empty() ? argument.value->range : argument.name_range,
+             argument.name.empty() ? std::string("`atb` takes named arguments")
+                                   : fmt::format("`atb` takes no argument `{}`", argument.name),
+             "unknown argument", form_help);
+      ok = false;
+      continue;
+    }
+    const auto id = ExpectFunction(scope, law, *argument.value, function.argument, ratio,
+                                   is_return ? "energy_return" : "permanent_set");
+    if (!id) {
+      ok = false;
+      continue;
+    }
+    // A constant factor is checked here; one that varies is evaluated as given, as ATB does.
+    const Function& factor = scenario_.functions[static_cast<std::size_t>(*id)];
+    const bool constant = factor.kind == Function::Kind::kConstant;
+    if (constant && is_return && !(factor.constant >= 0 && factor.constant <= 1)) {
+      Report(DiagnosticKind::kValueOutOfRange, argument.value->range,
+             fmt::format("an energy return of {} is outside 0 to 1", factor.constant),
+             "out of range", "R is the share of the loading energy that unloading gives back");
+      ok = false;
+    }
+    if (constant && !is_return && !(factor.constant >= 0 && factor.constant < 1)) {
+      Report(DiagnosticKind::kValueOutOfRange, argument.value->range,
+             fmt::format("a permanent set of {} is outside 0 to 1 (1 excluded)", factor.constant),
+             "out of range",
+             "G is where the force reaches zero, as a share of the largest deflection");
+      ok = false;
+    }
+    (is_return ? function.energy_return : function.atb_permanent_set) = *id;
+  }
+  if (ok && function.energy_return < 0) {
+    Report(DiagnosticKind::kMissingArgument, call.range, "`atb` needs `energy_return`",
+           "no energy return", form_help);
+    ok = false;
+  }
+  function.atb_unloading = ok;
+}
+
+void CheckContext::RefuseAtbUnloading(std::optional<FunctionId> id, const BoundBlock& bound,
+                                      AttributeKey name, std::string_view element) {
+  if (!id || *id < 0 || !scenario_.functions[static_cast<std::size_t>(*id)].atb_unloading) return;
+  const ast::Statement* statement = One(bound, name);
+  Report(DiagnosticKind::kUnloadingNotApplied,
+         statement ? statement->range : scenario_.functions[static_cast<std::size_t>(*id)].range,
+         fmt::format("the `{}` of {} does not unload by ATB's law (`unloading = atb(...)`)",
+                     name.view(), element),
+         "a function with ATB's unloading",
+         "ATB's law applies to contact forces and belt webbing; give a joint's torque "
+         "`energy_loss`, `permanent_set` or `unload_slope`, or the joint's own `energy_loss`");
+}
+
+}  // namespace sled::compiler::internal
