@@ -439,10 +439,19 @@ bool ComputeAccelerations(const Model& model, Data& data, Failure* failure) {
   return true;
 }
 
-bool Forward(const Model& model, Data& data, Failure* failure) {
+void ForwardElements(const Model& model, Data& data) {
   ++data.evaluations;
   ComputeKinematics(model, data);
-  ComputeForces(model, data);
+  ComputeElementForces(model, data);
+}
+
+bool Forward(const Model& model, Data& data, Failure* failure) {
+  ForwardElements(model, data);
+  return ForwardAccelerations(model, data, failure);
+}
+
+bool ForwardAccelerations(const Model& model, Data& data, Failure* failure) {
+  ComputeJointTorques(model, data);
   if (!ComputeAccelerations(model, data, failure)) {
     // A singular (massless) segment: the tree alone leaves its motion open; constraints on it
     // may settle it, solved together with the tree's equations.

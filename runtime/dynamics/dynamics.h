@@ -21,8 +21,14 @@ void ComputeKinematics(const Model& model, Data& data, std::span<const std::uint
 // not finite; `failure` then says which segment.
 bool ComputeAccelerations(const Model& model, Data& data, Failure* failure);
 
-// Kinematics, forces and accelerations at data.time.
+// Kinematics, forces and accelerations at data.time: ForwardElements, then ForwardAccelerations.
 bool Forward(const Model& model, Data& data, Failure* failure);
+// The first part of Forward (counted as an evaluation): kinematics and the force elements'
+// loads (ComputeElementForces), all that the event functions read but a lock level's.
+void ForwardElements(const Model& model, Data& data);
+// The rest of Forward, after ForwardElements at the same state: the joints' torques, the
+// accelerations, and the loop constraints' forces.
+bool ForwardAccelerations(const Model& model, Data& data, Failure* failure);
 
 // The spatial inertia of a segment about its centre of mass, in its frame.
 Mat6 SpatialInertia(const Model& model, std::size_t segment);

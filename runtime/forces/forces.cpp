@@ -124,6 +124,11 @@ void ComputeJointTorques(const Model& model, Data& data) {
 }
 
 void ComputeForces(const Model& model, Data& data) {
+  ComputeJointTorques(model, data);
+  ComputeElementForces(model, data);
+}
+
+void ComputeElementForces(const Model& model, Data& data) {
   for (std::size_t s = 0; s < model.nsegment(); ++s) {
     data.external[s].setZero();
     data.external[s].tail<3>() =
@@ -131,8 +136,6 @@ void ComputeForces(const Model& model, Data& data) {
   }
   data.vehicle_power = 0.0;
   data.applied_power = 0.0;
-  ComputeJointTorques(model, data);
-
   if (model.contacts.npair() > 0) AccumulateContactForces(model, data);
 
   for (std::size_t k = 0; k < model.nspring(); ++k) {

@@ -8,7 +8,13 @@
 
 namespace sled::runtime {
 
+// Every load at data's kinematics: ComputeJointTorques, then ComputeElementForces.
 void ComputeForces(const Model& model, Data& data);
+
+// The loads of everything but the joints' characteristics (gravity, contacts, springs, belts,
+// airbags, applied loads, fluids) into data.external (and the elements' own state: contact
+// deflections, belt tensions); none of them reads data.generalized_force.
+void ComputeElementForces(const Model& model, Data& data);
 
 // The joint characteristics alone (torque functions, viscous and Coulomb damping) into
 // data.generalized_force, which it zeroes first: functions of each joint's own q and v only.

@@ -1,5 +1,6 @@
 #include "runtime/forces/joint_hysteresis.h"
 
+#include <array>
 #include <cmath>
 
 #include "runtime/dynamics/joint.h"
@@ -116,8 +117,26 @@ double JointSpringTorque(const Model& model, const Data& data, std::size_t s, st
          LoadingUnloadingForce(model.functions, id, std::abs(angle), history, side.mirror);
 }
 
-double JointAxisAngle(const Model& model, const Data& data, std::size_t s, std::size_t k) {
-  return MotionOfAxis(model, data, s, k).angle;
+std::array<double, 3> JointAxisAngles(const Model& model, const Data& data, std::size_t s) {
+  const auto qa = static_cast<std::size_t>(model.q_address[s]);
+  switch (model.joint_kind[s]) {
+    case JointKind::kBall: {
+      // As BallAxis, without the rates: one decomposition for both axes.
+      Eigen::Quaterniond q = QuaternionAt(data.q, qa).normalized();
+      if (q.w() < 0) q.coeffs() = -q.coeffs();
+      const SwingTwist angles = DecomposeSwingTwist(q);
+      return {angles.flexure, angles.twist, 0.0};
+    }
+    case JointKind::kEuler:
+      return {data.q[qa], data.q[qa + 1], data.q[qa + 2]};
+    case JointKind::kPin:
+    case JointKind::kSlip:
+      return {data.q[qa], data.q[qa], data.q[qa]};
+    case JointKind::kFree:
+    case JointKind::kPlanar:
+      break;
+  }
+  return {0.0, 0.0, 0.0};
 }
 
 double JointTurnFunction(const Model& model, const Data& data, std::size_t h) {

@@ -54,9 +54,10 @@ void SetUpJointHistories(const Model& model, Data& data);
 double JointSpringTorque(const Model& model, const Data& data, std::size_t s, std::size_t k,
                          double angle);
 
-// The angle of axis `k` of the joint above segment `s` as its torque function reads it (a ball
-// joint's flexure: its size; a slip joint's travel).
-double JointAxisAngle(const Model& model, const Data& data, std::size_t s, std::size_t k);
+// The angles of the axes of the joint above segment `s` (as Model::joint_function, 0 for an
+// axis it does not have) as their torque functions read them (a ball joint's flexure: its size;
+// a slip joint's travel).
+std::array<double, 3> JointAxisAngles(const Model& model, const Data& data, std::size_t s);
 
 // The event function of history h: the rate of the angle's size while it loads beyond its
 // largest so far on its side, 1 otherwise (a locked axis cannot turn).

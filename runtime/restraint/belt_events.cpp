@@ -52,10 +52,10 @@ double Extended(const Model& model, const BeltState& state, std::size_t span) {
   return SpanForceAt(model, state, span, state.rest_length[span]).extended;
 }
 
-// The fields of `data` the central differences move (ComputeKinematics, EvaluateBelts), to and
-// from `copy`: same sizes both ways, so no allocation after the first (SetUpBelts).
+// The kinematics of `data` the central differences move (ComputeKinematics), to and from `copy`:
+// same sizes both ways, so no allocation after the first (SetUpBelts).
 template <typename From, typename To>
-void CopyEvaluation(From& from, To& to) {
+void CopyKinematics(From& from, To& to) {
   to.vehicle = from.vehicle;
   to.rotation = from.rotation;
   to.position = from.position;
@@ -64,12 +64,14 @@ void CopyEvaluation(From& from, To& to) {
   to.subspace_locked = from.subspace_locked;
   to.velocity = from.velocity;
   to.bias_acceleration = from.bias_acceleration;
-  to.belts = from.belts;
 }
 
 }  // namespace
 
-void SizeBeltRatesCopy(Data& data) { CopyEvaluation(data, data.belt_rates_copy); }
+void SizeBeltRatesCopy(Data& data) {
+  CopyKinematics(data, data.belt_rates_copy);
+  data.belt_rates_copy.belts = data.belts;
+}
 
 std::vector<BeltEvent> BeltEvents(const Model& model, const Data& data) {
   (void)model;
@@ -111,7 +113,8 @@ void UpdateBeltRates(const Model& model, Data& data) {
   // then back where Forward left them.
   const double t = data.time;
   Data::BeltRatesCopy& copy = data.belt_rates_copy;
-  CopyEvaluation(data, copy);
+  CopyKinematics(data, copy);
+  copy.belts = data.belts;
   std::copy(data.q.begin(), data.q.end(), state.rate_q.begin());
   PositionDerivative(model, data.q, data.v, data.locked, state.rate_dq);
   for (const double sign : {-1.0, 1.0}) {
@@ -144,7 +147,8 @@ void UpdateBeltRates(const Model& model, Data& data) {
   std::swap(copy.belts.slip_rate, state.slip_rate);
   std::swap(copy.belts.strain_rate, state.strain_rate);
   copy.belts.slip_iterations = state.slip_iterations;
-  CopyEvaluation(copy, data);
+  std::swap(data.belts, copy.belts);  // (the vectors' buffers: no second copy)
+  CopyKinematics(copy, data);
 }
 
 double BeltEventFunction(const Model& model, const Data& data, const BeltEvent& event) {

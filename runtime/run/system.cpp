@@ -1,6 +1,7 @@
 #include "runtime/run/system.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -100,6 +101,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
     const auto f = static_cast<std::size_t>(model.belts.function[b]);
     watches_tables_ = watches_tables_ || model.functions.kind[f] == FunctionTable::Kind::kTable;
   }
+  reads_accelerations_ = std::any_of(events_.begin(), events_.end(), [](const Event& event) {
+    return event.kind == EventKind::kLock;
+  });
   belt_events_ = BeltEvents(model, data);
   for (std::size_t k = 0; k < belt_events_.size(); ++k) events_.push_back({EventKind::kBelt, k});
   const AirbagTable& bags = model.airbags;
@@ -139,7 +143,7 @@ void MultibodySystem::Load(double t, std::span<const double> y) {
   LoadState(data_, t, y);
 }
 
-bool MultibodySystem::Evaluate(double t, std::span<const double> y) {
+bool MultibodySystem::EvaluateElements(double t, std::span<const double> y) {
   const auto controlled = static_cast<std::ptrdiff_t>(ControlledSize());
   if (evaluated_ && t == evaluated_t_ && y.size() == evaluated_y_.size() &&
       std::equal(y.begin(), y.begin() + controlled, evaluated_y_.begin())) {
@@ -153,13 +157,23 @@ bool MultibodySystem::Evaluate(double t, std::span<const double> y) {
   }
   Load(t, y);
   failure_ = Failure{};
-  if (!Forward(model_, data_, &failure_)) {
-    failure_.time = t;
-    return false;
-  }
+  ForwardElements(model_, data_);
   evaluated_ = true;
+  accelerated_ = false;
   evaluated_t_ = t;
   std::copy(y.begin(), y.end(), evaluated_y_.begin());
+  return true;
+}
+
+bool MultibodySystem::Evaluate(double t, std::span<const double> y) {
+  EvaluateElements(t, y);
+  if (accelerated_) return true;
+  if (!ForwardAccelerations(model_, data_, &failure_)) {
+    failure_.time = t;
+    evaluated_ = false;
+    return false;
+  }
+  accelerated_ = true;
   return true;
 }
 
@@ -212,6 +226,9 @@ bool MultibodySystem::StructuredJacobianAt(double t, std::span<const double> y,
                                            std::span<const double> dy, double step,
                                            StructuredJacobian& jacobian) {
   (void)dy;
+  // Form moves data_ through other states: an evaluation still to be completed by its
+  // accelerations cannot be completed from what it leaves.
+  if (!accelerated_) Invalidate();
   failure_ = Failure{};
   if (jacobian_.Form(data_, t, y, step, jacobian, &failure_)) return true;
   failure_.time = t;
@@ -319,18 +336,19 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
 }
 
 std::size_t MultibodySystem::EventSamples() const {
-  const bool levels = std::any_of(events_.begin(), events_.end(), [](const Event& event) {
-    return event.kind == EventKind::kLock;
-  });
-  return levels ? kLockEventSamples : 0;
+  return reads_accelerations_ ? kLockEventSamples : 0;
 }
 
 void MultibodySystem::Events(double t, std::span<const double> y, std::span<double> g) {
-  Evaluate(t, y);
+  // Only a lock level reads what the accelerations give (a locked joint's constraint torque).
+  if (reads_accelerations_) {
+    Evaluate(t, y);
+  } else {
+    EvaluateElements(t, y);
+  }
   if (!belt_events_.empty()) UpdateBeltRates(model_, data_);
   std::size_t angle_segment = model_.nsegment();
-  std::size_t angle_axis = 0;
-  double axis_angle = 0.0;
+  std::array<double, 3> axis_angles{};
   for (std::size_t k = 0; k < events_.size(); ++k) {
     if (events_[k].kind == EventKind::kContactImpulse ||
         events_[k].kind == EventKind::kContactTouch) {
@@ -356,14 +374,13 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       continue;
     }
     if (events_[k].kind == EventKind::kJointKink) {
-      // A table's rows of one joint axis are consecutive events: its angle is computed once.
+      // A joint's table rows are consecutive events: its angles are computed once.
       const Event& kink = events_[k];
-      if (kink.segment != angle_segment || kink.axis != angle_axis) {
+      if (kink.segment != angle_segment) {
         angle_segment = kink.segment;
-        angle_axis = kink.axis;
-        axis_angle = JointAxisAngle(model_, data_, kink.segment, kink.axis);
+        axis_angles = JointAxisAngles(model_, data_, kink.segment);
       }
-      g[k] = axis_angle - kink.row;
+      g[k] = axis_angles[kink.axis] - kink.row;
       continue;
     }
     if (events_[k].kind == EventKind::kContactKink) {
@@ -483,7 +500,7 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kBelt) {
-    if (direction < 0 && Evaluate(t, y)) {
+    if (direction < 0 && EvaluateElements(t, y)) {
       HandleBeltEvent(model_, data_, belt_events_[events_[k].segment], direction);
       Invalidate();
     }
@@ -494,14 +511,14 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kContactTurn) {
-    if (direction < 0 && Evaluate(t, y)) {
+    if (direction < 0 && EvaluateElements(t, y)) {
       TurnContactHistory(model_, data_, events_[k].segment);
       Invalidate();
     }
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kJointTurn) {
-    if (direction < 0 && Evaluate(t, y)) {
+    if (direction < 0 && EvaluateElements(t, y)) {
       TurnJointHistory(model_, data_, events_[k].segment);
       Invalidate();
     }

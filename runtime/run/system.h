@@ -52,6 +52,10 @@ class MultibodySystem : public OdeSystem {
   // (t, y) with nothing changed since: then data already holds its results. An output row on a
   // step end reads the evaluation the step made there. False (failure() says why) on failure.
   bool Evaluate(double t, std::span<const double> y);
+  // The same without the joints' torques and the accelerations (ForwardElements): what the
+  // event functions and the histories' switches read. A later Evaluate at the same (t, y)
+  // completes it.
+  bool EvaluateElements(double t, std::span<const double> y);
 
   // Copies a state vector into data (q, v, w, the work integrals, time) and back.
   void Load(double t, std::span<const double> y);
@@ -120,10 +124,12 @@ class MultibodySystem : public OdeSystem {
   Failure failure_;
   // The (t, y) of the last successful Forward, while data still holds its results.
   bool evaluated_ = false;
+  bool accelerated_ = false;  // and its accelerations too (not only EvaluateElements)
   double evaluated_t_ = 0.0;
   std::vector<double> evaluated_y_;
   std::vector<Event> events_;
   std::vector<BeltEvent> belt_events_;
+  bool reads_accelerations_ = false;            // a lock level's event (kLock) is among events_
   bool watches_tables_ = false;                 // some contact or belt has a tabulated function
   std::vector<double> saved_v_;                 // scratch for UnitResponse
   std::vector<double> event_v_;                 // velocities before an event's impulse
