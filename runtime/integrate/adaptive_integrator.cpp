@@ -422,10 +422,17 @@ AdvanceResult AdaptiveIntegrator::StepOnce(double t_stop, double fixed_step) {
     commit_pending_ = true;
 
     // The end of the bracket an event is located in: the step's end, or the first point inside
-    // the step where an event function that crossed back by the end had crossed.
+    // the step where an event function had crossed. The points inside are looked at even when
+    // some function crossed by the end: the bracket's ends alone do not show another that
+    // crossed and crossed back before (lock_cascade's hinge_3 fell below its unlock level and
+    // rose above it again within a step that also unlocked hinge_2, and never unlocked).
     double t_found = t1;
-    if (events_.active() &&
-        (events_.Check(t1, y1_) || events_.CheckInside(*this, t_, t1, y_event_, t_found))) {
+    bool found = false;
+    if (events_.active()) {
+      found = events_.Check(t1, y1_);
+      found = events_.CheckInside(*this, t_, t1, y_event_, t_found) || found;
+    }
+    if (found) {
       const double t_event = events_.Locate(*this, t_, t_found, EventTolerance(), y_event_);
       if (t_event < t1 && !redo_spent_) {
         // The step went past an event: its stages there saw the equations of the other side

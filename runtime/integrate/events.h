@@ -47,10 +47,10 @@ class EventLocator {
   // changed sign since the step start.
   bool Check(double t1, std::span<const double> y1);
 
-  // After Check found no crossing at the step's end: evaluates g at the system's EventSamples()
-  // points evenly inside [t0, t1] on `interpolant`; true, with `t_found` the first of them where
-  // a component has crossed since the step start (g there becomes the bracket's high end for
-  // Locate), when one has. `y` is scratch.
+  // After Check (whatever it found at the step's end): evaluates g at the system's
+  // EventSamples() points evenly inside [t0, t1] on `interpolant`; true, with `t_found` the first
+  // of them where a component has crossed since the step start (g there becomes the bracket's
+  // high end for Locate), when one has. `y` is scratch.
   bool CheckInside(const StepInterpolant& interpolant, double t0, double t1, std::span<double> y,
                    double& t_found);
 
