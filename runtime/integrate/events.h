@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -56,9 +57,10 @@ class EventLocator {
 
   // Locates the earliest root in [t0, t1] to `tolerance` in time on `interpolant`, and returns
   // the end of the final bracket: a time just past the root, where every crossing component has
-  // its new sign. Leaves y at that time in `y` and records the crossing components.
+  // its new sign. Leaves y at that time in `y` and records the crossing components. `t_probe`,
+  // when inside (t0, t1), is tried first: a guess that makes the first bracket narrow.
   double Locate(const StepInterpolant& interpolant, double t0, double t1, double tolerance,
-                std::span<double> y);
+                std::span<double> y, double t_probe = std::numeric_limits<double>::quiet_NaN());
 
   // After Locate: +1 or -1 for each component that crossed (g went up or down), 0 for the others.
   std::span<const int> crossings() const { return crossing_; }
