@@ -9,8 +9,9 @@ namespace {
 
 // A component crossed between two values when it left one strict side; reaching exactly zero
 // counts as crossing, starting from zero does not (such components are settled by Start).
-bool Crossed(double from, double to) {
-  return (from < 0.0 && to >= 0.0) || (from > 0.0 && to <= 0.0);
+// `direction` as OdeSystem::EventDirection: the crossings that count.
+bool Crossed(double from, double to, signed char direction) {
+  return (direction >= 0 && from < 0.0 && to >= 0.0) || (direction <= 0 && from > 0.0 && to <= 0.0);
 }
 
 // Bounds the Illinois iteration; each pass at least moves a bracket end inward, and the bracket
@@ -44,6 +45,10 @@ void EventLocator::Reset(OdeSystem& system) {
   g_high_.assign(count_, 0.0);
   g_mid_.assign(count_, 0.0);
   crossing_.assign(count_, 0);
+  direction_.assign(count_, 0);
+  for (std::size_t k = 0; k < count_; ++k) {
+    direction_[k] = static_cast<signed char>(system.EventDirection(k));
+  }
   // The first Start settles every component that begins exactly on its surface.
   settle_.assign(count_, 0);
 }
@@ -72,7 +77,7 @@ bool EventLocator::Check(double t1, std::span<const double> y1) {
   if (count_ == 0) return false;
   system_->Events(t1, y1, g_end_);
   for (std::size_t k = 0; k < count_; ++k) {
-    if (Crossed(g_start_[k], g_end_[k])) return true;
+    if (Crossed(g_start_[k], g_end_[k], direction_[k])) return true;
   }
   return false;
 }
@@ -84,7 +89,7 @@ bool EventLocator::CheckInside(const StepInterpolant& interpolant, double t0, do
     interpolant.Interpolate(t, y);
     system_->Events(t, y, g_mid_);
     for (std::size_t k = 0; k < count_; ++k) {
-      if (Crossed(g_start_[k], g_mid_[k])) {
+      if (Crossed(g_start_[k], g_mid_[k], direction_[k])) {
         std::copy(g_mid_.begin(), g_mid_.end(), g_end_.begin());
         t_found = t;
         return true;
@@ -101,7 +106,7 @@ long EventLocator::EarliestCrossing(std::span<const double> g_low,
   long best = -1;
   double best_fraction = -1.0;
   for (std::size_t k = 0; k < count_; ++k) {
-    if (!Crossed(g_low[k], g_high[k])) continue;
+    if (!Crossed(g_low[k], g_high[k], direction_[k])) continue;
     const double fraction = std::abs(g_high[k] / (g_high[k] - g_low[k]));
     if (fraction > best_fraction) {
       best_fraction = fraction;
@@ -170,7 +175,7 @@ double EventLocator::Locate(const StepInterpolant& interpolant, double t0, doubl
   interpolant.Interpolate(t_high, y);
   for (std::size_t k = 0; k < count_; ++k) {
     crossing_[k] = 0;
-    if (Crossed(g_start_[k], g_high_[k])) {
+    if (Crossed(g_start_[k], g_high_[k], direction_[k])) {
       crossing_[k] = g_start_[k] < 0.0 ? 1 : -1;
       settle_[k] = 1;
     }

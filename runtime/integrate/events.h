@@ -90,7 +90,8 @@ class EventLocator {
   std::vector<double> g_high_;
   std::vector<double> g_mid_;
   std::vector<int> crossing_;
-  std::vector<char> settle_;  // components whose start sign comes from the look-ahead
+  std::vector<signed char> direction_;  // OdeSystem::EventDirection, read once in Reset
+  std::vector<char> settle_;            // components whose start sign comes from the look-ahead
 };
 
 }  // namespace sled::runtime

@@ -322,6 +322,18 @@ bool MultibodySystem::HasSignedLockBand(std::size_t s) const {
   return model_.joint_lock_below[s] >= 0 && model_.v_count[s] == 1;
 }
 
+int MultibodySystem::EventDirection(std::size_t k) const {
+  // A loading history turns, and a belt's junction slips, sticks or re-anchors, only where its
+  // function falls through zero (HandleEvent); where it rises again (as a turn function does by
+  // a jump to 1 once the deflection is below its largest, or a rounding after the turn) nothing
+  // changes, and the step need not stop (on the flagship 17 such stops, each with a retake).
+  const EventKind kind = events_[k].kind;
+  return kind == EventKind::kContactTurn || kind == EventKind::kJointTurn ||
+                 kind == EventKind::kBelt
+             ? -1
+             : 0;
+}
+
 std::size_t MultibodySystem::EventSamples() const {
   const bool levels = std::any_of(events_.begin(), events_.end(), [](const Event& event) {
     return event.kind == EventKind::kLock;

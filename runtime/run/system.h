@@ -45,6 +45,7 @@ class MultibodySystem : public OdeSystem {
   // Three points inside each step when a joint locks or unlocks at a torque level: a constraint
   // torque passes a level and comes back within a step that its ends do not show.
   std::size_t EventSamples() const override;
+  int EventDirection(std::size_t k) const override;
   void Events(double t, std::span<const double> y, std::span<double> g) override;
   EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
 
