@@ -331,6 +331,10 @@ bool AdaptiveIntegrator::Restart(bool fixed, AdvanceResult* result) {
   }
   restart_pending_ = false;
   keep_step_ = false;
+  // RestartAt's first step is for the first step after it only. (Kept, it set the first step
+  // after every later event too: on the flagship, after `auto` first handed back to dopri5, each
+  // of about 100 events was followed by a step of 6.1e-5 s where 5e-4 s passed the error test.)
+  restart_step_ = 0.0;
   event_stop_ = std::numeric_limits<double>::infinity();
   redo_spent_ = false;
   return true;
