@@ -9,8 +9,9 @@ namespace {
 
 // A component crossed between two values when it left one strict side; reaching exactly zero
 // counts as crossing, starting from zero does not (such components are settled by Start).
-bool Crossed(double from, double to) {
-  return (from < 0.0 && to >= 0.0) || (from > 0.0 && to <= 0.0);
+// `direction` as OdeSystem::EventDirection: the crossings that count.
+bool Crossed(double from, double to, signed char direction) {
+  return (direction >= 0 && from < 0.0 && to >= 0.0) || (direction <= 0 && from > 0.0 && to <= 0.0);
 }
 
 // Bounds the Illinois iteration; each pass at least moves a bracket end inward, and the bracket
@@ -44,6 +45,10 @@ void EventLocator::Reset(OdeSystem& system) {
   g_high_.assign(count_, 0.0);
   g_mid_.assign(count_, 0.0);
   crossing_.assign(count_, 0);
+  direction_.assign(count_, 0);
+  for (std::size_t k = 0; k < count_; ++k) {
+    direction_[k] = static_cast<signed char>(system.EventDirection(k));
+  }
   // The first Start settles every component that begins exactly on its surface.
   settle_.assign(count_, 0);
 }
@@ -72,7 +77,7 @@ bool EventLocator::Check(double t1, std::span<const double> y1) {
   if (count_ == 0) return false;
   system_->Events(t1, y1, g_end_);
   for (std::size_t k = 0; k < count_; ++k) {
-    if (Crossed(g_start_[k], g_end_[k])) return true;
+    if (Crossed(g_start_[k], g_end_[k], direction_[k])) return true;
   }
   return false;
 }
@@ -84,7 +89,7 @@ bool EventLocator::CheckInside(const StepInterpolant& interpolant, double t0, do
     interpolant.Interpolate(t, y);
     system_->Events(t, y, g_mid_);
     for (std::size_t k = 0; k < count_; ++k) {
-      if (Crossed(g_start_[k], g_mid_[k])) {
+      if (Crossed(g_start_[k], g_mid_[k], direction_[k])) {
         std::copy(g_mid_.begin(), g_mid_.end(), g_end_.begin());
         t_found = t;
         return true;
@@ -101,7 +106,7 @@ long EventLocator::EarliestCrossing(std::span<const double> g_low,
   long best = -1;
   double best_fraction = -1.0;
   for (std::size_t k = 0; k < count_; ++k) {
-    if (!Crossed(g_low[k], g_high[k])) continue;
+    if (!Crossed(g_low[k], g_high[k], direction_[k])) continue;
     const double fraction = std::abs(g_high[k] / (g_high[k] - g_low[k]));
     if (fraction > best_fraction) {
       best_fraction = fraction;
@@ -112,7 +117,7 @@ long EventLocator::EarliestCrossing(std::span<const double> g_low,
 }
 
 double EventLocator::Locate(const StepInterpolant& interpolant, double t0, double t1,
-                            double tolerance, std::span<double> y) {
+                            double tolerance, std::span<double> y, double t_probe) {
   // Never ask for a bracket narrower than the time's own rounding.
   const double eps = std::numeric_limits<double>::epsilon();
   tolerance = std::max(tolerance, 4.0 * eps * std::max(std::abs(t0), std::abs(t1)));
@@ -127,6 +132,8 @@ double EventLocator::Locate(const StepInterpolant& interpolant, double t0, doubl
   int side = 0;
   int previous_side = -1;
   double weight = 1.0;
+  bool probe = t_probe > t0 && t_probe < t1;
+  double nudge = 1.0;  // how far the safeguard moves a trial point, in half tolerances
   for (int iteration = 0; iteration < kMaxRootIterations && tracked >= 0; ++iteration) {
     const double width = t_high - t_low;
     if (width <= tolerance) break;
@@ -137,11 +144,21 @@ double EventLocator::Locate(const StepInterpolant& interpolant, double t0, doubl
     }
     const auto k = static_cast<std::size_t>(tracked);
     double t_mid = t_high - width * g_high_[k] / (g_high_[k] - weight * g_low_[k]);
-    // Safeguard: keep the trial point at least half a tolerance (or a tenth of the bracket)
-    // inside, so each pass shrinks the bracket even when the secant lands on an end.
-    const double margin = std::min(std::max(0.5 * tolerance, 0.1 * width), 0.5 * width);
-    if (!(t_mid - t_low >= margin)) t_mid = t_low + margin;
-    if (!(t_high - t_mid >= margin)) t_mid = t_high - margin;
+    if (probe) t_mid = t_probe;  // (the caller's guess first)
+    probe = false;
+    // Safeguard: a trial point within half a tolerance of an end moves inside, by half a
+    // tolerance the first time (the secant has found the root: the bracket closes on it in one
+    // pass), ten times as far each time after in a row (it has not), and at most half the
+    // bracket. So each pass shrinks the bracket, and a secant trusted elsewhere converges
+    // superlinearly. (A tenth of the bracket at every pass took 12 passes per located event on
+    // the flagship; a tenth of it near an end only, as CVODE's cvRootfind, 7; this, 5.)
+    if (!(t_mid - t_low >= 0.5 * tolerance) || !(t_high - t_mid >= 0.5 * tolerance)) {
+      const double inside = std::min(0.5 * tolerance * nudge, 0.5 * width);
+      t_mid = t_mid - t_low < t_high - t_mid ? t_low + inside : t_high - inside;
+      nudge *= 10.0;
+    } else {
+      nudge = 1.0;
+    }
 
     interpolant.Interpolate(t_mid, y);
     system_->Events(t_mid, y, g_mid_);
@@ -163,7 +180,7 @@ double EventLocator::Locate(const StepInterpolant& interpolant, double t0, doubl
   interpolant.Interpolate(t_high, y);
   for (std::size_t k = 0; k < count_; ++k) {
     crossing_[k] = 0;
-    if (Crossed(g_start_[k], g_high_[k])) {
+    if (Crossed(g_start_[k], g_high_[k], direction_[k])) {
       crossing_[k] = g_start_[k] < 0.0 ? 1 : -1;
       settle_[k] = 1;
     }

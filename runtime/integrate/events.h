@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -47,18 +48,19 @@ class EventLocator {
   // changed sign since the step start.
   bool Check(double t1, std::span<const double> y1);
 
-  // After Check found no crossing at the step's end: evaluates g at the system's EventSamples()
-  // points evenly inside [t0, t1] on `interpolant`; true, with `t_found` the first of them where
-  // a component has crossed since the step start (g there becomes the bracket's high end for
-  // Locate), when one has. `y` is scratch.
+  // After Check (whatever it found at the step's end): evaluates g at the system's
+  // EventSamples() points evenly inside [t0, t1] on `interpolant`; true, with `t_found` the first
+  // of them where a component has crossed since the step start (g there becomes the bracket's
+  // high end for Locate), when one has. `y` is scratch.
   bool CheckInside(const StepInterpolant& interpolant, double t0, double t1, std::span<double> y,
                    double& t_found);
 
   // Locates the earliest root in [t0, t1] to `tolerance` in time on `interpolant`, and returns
   // the end of the final bracket: a time just past the root, where every crossing component has
-  // its new sign. Leaves y at that time in `y` and records the crossing components.
+  // its new sign. Leaves y at that time in `y` and records the crossing components. `t_probe`,
+  // when inside (t0, t1), is tried first: a guess that makes the first bracket narrow.
   double Locate(const StepInterpolant& interpolant, double t0, double t1, double tolerance,
-                std::span<double> y);
+                std::span<double> y, double t_probe = std::numeric_limits<double>::quiet_NaN());
 
   // After Locate: +1 or -1 for each component that crossed (g went up or down), 0 for the others.
   std::span<const int> crossings() const { return crossing_; }
@@ -88,7 +90,8 @@ class EventLocator {
   std::vector<double> g_high_;
   std::vector<double> g_mid_;
   std::vector<int> crossing_;
-  std::vector<char> settle_;  // components whose start sign comes from the look-ahead
+  std::vector<signed char> direction_;  // OdeSystem::EventDirection, read once in Reset
+  std::vector<char> settle_;            // components whose start sign comes from the look-ahead
 };
 
 }  // namespace sled::runtime

@@ -101,6 +101,14 @@ class OdeSystem {
   virtual void Events(double t, std::span<const double> y, std::span<double> g) {
     (void)t, (void)y, (void)g;
   }
+  // Which sign changes of g_k are events: -1 only falls through zero, +1 only rises, 0 both.
+  // A crossing the other way is no event: the step is neither stopped nor taken again there (a
+  // loading history's turn function rises again, through zero or by a jump to 1, where nothing
+  // happens).
+  virtual int EventDirection(std::size_t k) const {
+    (void)k;
+    return 0;
+  }
   // `direction` is +1 when g_k went from negative to positive, -1 the other way. Returns
   // kStateChanged when it changed y (an impulse): the integrator then starts afresh with its
   // starting-step heuristic; kModeChanged when only the system's equations changed (a joint locks

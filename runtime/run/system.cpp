@@ -70,6 +70,7 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
     if (kind != JointKind::kFree &&
         (model.joint_lock_below[s] >= 0 || model.joint_unlock_above[s] >= 0)) {
       events_.push_back({EventKind::kLock, s});
+      if (HasSignedLockBand(s)) events_.push_back({EventKind::kLockLower, s});
     }
   }
   for (std::size_t h = 0; h < data.joint_histories.size(); ++h) {
@@ -335,6 +336,22 @@ double MultibodySystem::JointTorqueMagnitude(std::size_t s) const {
   return std::sqrt(sum);
 }
 
+bool MultibodySystem::HasSignedLockBand(std::size_t s) const {
+  return model_.joint_lock_below[s] >= 0 && model_.v_count[s] == 1;
+}
+
+int MultibodySystem::EventDirection(std::size_t k) const {
+  // A loading history turns, and a belt's junction slips, sticks or re-anchors, only where its
+  // function falls through zero (HandleEvent); where it rises again (as a turn function does by
+  // a jump to 1 once the deflection is below its largest, or a rounding after the turn) nothing
+  // changes, and the step need not stop (on the flagship 17 such stops, each with a retake).
+  const EventKind kind = events_[k].kind;
+  return kind == EventKind::kContactTurn || kind == EventKind::kJointTurn ||
+                 kind == EventKind::kBelt
+             ? -1
+             : 0;
+}
+
 std::size_t MultibodySystem::EventSamples() const {
   return reads_accelerations_ ? kLockEventSamples : 0;
 }
@@ -398,6 +415,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
     }
     const std::size_t s = events_[k].segment;
     const auto qa = static_cast<std::size_t>(model_.q_address[s]);
+    const auto va = static_cast<std::size_t>(model_.v_address[s]);
     switch (events_[k].kind) {
       case EventKind::kStop: {
         // Positive inside the range of motion, negative past the stop.
@@ -414,14 +432,25 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
         break;
       case EventKind::kLock: {
         const bool locked = (data_.locked[s] & LockableAxes(s)) != 0;
-        const double torque = JointTorqueMagnitude(s);
-        // Rises through zero when an unlocked joint's torque falls below its lock level, or a
-        // locked joint's constraint torque exceeds its unlock level.
+        // Rises through zero when an unlocked joint's torque enters its lock band (from above,
+        // for a signed band), or a locked joint's constraint torque exceeds its unlock level.
         if (locked) {
-          g[k] = model_.joint_unlock_above[s] >= 0 ? torque - model_.joint_unlock_above[s] : -1.0;
+          g[k] = model_.joint_unlock_above[s] >= 0
+                     ? JointTorqueMagnitude(s) - model_.joint_unlock_above[s]
+                     : -1.0;
+        } else if (model_.joint_lock_below[s] < 0) {
+          g[k] = -1.0;
+        } else if (HasSignedLockBand(s)) {
+          g[k] = model_.joint_lock_below[s] - data_.generalized_force[va];
         } else {
-          g[k] = model_.joint_lock_below[s] >= 0 ? model_.joint_lock_below[s] - torque : -1.0;
+          g[k] = model_.joint_lock_below[s] - JointTorqueMagnitude(s);
         }
+        break;
+      }
+      case EventKind::kLockLower: {
+        // Rises through zero when an unlocked joint's signed torque enters its band from below.
+        const bool locked = (data_.locked[s] & LockableAxes(s)) != 0;
+        g[k] = locked ? -1.0 : model_.joint_lock_below[s] + data_.generalized_force[va];
         break;
       }
       case EventKind::kContactImpulse:
@@ -585,16 +614,12 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
         data_.locked[s] = static_cast<std::uint8_t>(data_.locked[s] & ~lockable);  // unlock
         break;
       }
-      // Lock: a plastic impulse stops the joint's relative motion on the axes that lock.
-      int axes[6];
-      const int count = ActiveAxes(model_, s, data_.locked[s], axes);
-      SmallMatrix directions = SmallMatrix::Zero(model_.v_count[s], count);
-      for (int c = 0; c < count; ++c) directions(axes[c], c) = 1.0;
-      ApplyJointImpulse(s, directions, SmallVector::Zero(count));
-      data_.locked[s] = static_cast<std::uint8_t>(data_.locked[s] | lockable);
-      for (int c = 0; c < count; ++c) data_.v[va + static_cast<std::size_t>(axes[c])] = 0.0;
+      LockJoint(s);
       break;
     }
+    case EventKind::kLockLower:
+      if (direction > 0 && (data_.locked[s] & LockableAxes(s)) == 0) LockJoint(s);
+      break;
     case EventKind::kContactImpulse:
     case EventKind::kContactTouch:
     case EventKind::kContactTurn:
@@ -606,6 +631,18 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
     case EventKind::kAirbagInflow:
       break;
   }
+}
+
+void MultibodySystem::LockJoint(std::size_t s) {
+  // A plastic impulse stops the joint's relative motion on the axes that lock.
+  const auto va = static_cast<std::size_t>(model_.v_address[s]);
+  int axes[6];
+  const int count = ActiveAxes(model_, s, data_.locked[s], axes);
+  SmallMatrix directions = SmallMatrix::Zero(model_.v_count[s], count);
+  for (int c = 0; c < count; ++c) directions(axes[c], c) = 1.0;
+  ApplyJointImpulse(s, directions, SmallVector::Zero(count));
+  data_.locked[s] = static_cast<std::uint8_t>(data_.locked[s] | LockableAxes(s));
+  for (int c = 0; c < count; ++c) data_.v[va + static_cast<std::size_t>(axes[c])] = 0.0;
 }
 
 std::string MultibodySystem::FailureReason() const {

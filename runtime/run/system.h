@@ -45,6 +45,7 @@ class MultibodySystem : public OdeSystem {
   // Three points inside each step when a joint locks or unlocks at a torque level: a constraint
   // torque passes a level and comes back within a step that its ends do not show.
   std::size_t EventSamples() const override;
+  int EventDirection(std::size_t k) const override;
   void Events(double t, std::span<const double> y, std::span<double> g) override;
   EventEffect HandleEvent(std::size_t k, int direction, double t, std::span<double> y) override;
 
@@ -77,10 +78,17 @@ class MultibodySystem : public OdeSystem {
   // contact pair's deflection passes an inner row of its tabulated torque or force function,
   // where the slope jumps (a stop's table going from 0 to 30,000 N*m/rad, a foam's from 100 to
   // 167 N/mm); they only stop the step there, so that no step's stages straddle the kink.
+  // kLock: a locked joint's constraint torque passes its unlock level, or an unlocked joint's
+  // torque enters its lock band (|torque| < lock_below). For a joint with one axis (pin, slip)
+  // the band has two edges, each a signed event function that no step can jump: kLock is the
+  // upper edge (lock_below - torque), kLockLower the lower one (lock_below + torque). A swing
+  // through the whole band within one step changes their signs at the step's ends, where
+  // lock_below - |torque| was negative at both.
   enum class EventKind {
     kStop,
     kTwistStop,
     kLock,
+    kLockLower,
     kContactImpulse,
     kContactTouch,
     kContactTurn,
@@ -114,6 +122,11 @@ class MultibodySystem : public OdeSystem {
   // The torque the joint's characteristic applies (unlocked) or the constraint torque it carries
   // about its joint point (locked), as a magnitude.
   double JointTorqueMagnitude(std::size_t segment) const;
+  // True when the joint's unlocked torque has one component with a sign (pin, slip): its lock
+  // band then has the two signed edges kLock and kLockLower.
+  bool HasSignedLockBand(std::size_t segment) const;
+  // Locks the joint's lockable axes with a plastic impulse (kLock, kLockLower).
+  void LockJoint(std::size_t segment);
   std::uint8_t LockableAxes(std::size_t segment) const;
 
   // Forgets the last evaluation (data was changed some other way).

@@ -244,22 +244,84 @@ TEST_P(NumericsSuiteCases, StiffViscousDecayFollowsItsClosedForm) {
 // hinge's torque can pass its level and come back within one long step, where the signs at the
 // step's ends show nothing: the event functions are also sampled inside each step
 // (OdeSystem::EventSamples). Before, the exponential method found none at 5e-2, Rosenbrock none
-// at 2e-3 and 5e-2, dopri5 none at 1e-3.
+// at 2e-3 and 5e-2, dopri5 none at 1e-3. An unlocked hinge's spring torque swings through the
+// whole band of its lock level (|torque| < lock_below) within one step at loose tolerances:
+// with the band's edges as two signed event functions (kLock, kLockLower in
+// runtime/run/system.h) that crossing changes their signs at the step's ends; with
+// lock_below - |torque| alone dopri5 and auto found 4 of the 8 at 1e-3 and looser.
 TEST(LockLevelEvents, NoLockOrUnlockIsSteppedOverAtLooseTolerances) {
-  for (const std::string method : {"exponential", "rosenbrock", "cvs"}) {
-    for (const double tolerance : {5e-2, 3e-2, 1e-2, 5e-3, 2e-3, 1e-3, 1e-4}) {
+  for (const std::string method : {"dopri5", "auto", "exponential", "rosenbrock", "cvs"}) {
+    for (const double tolerance : {5e-2, 3e-2, 1e-2, 5e-3, 2e-3, 1e-3, 1e-4, 1e-5, 1e-6}) {
       const RunResult run = RunCase("lock_cascade", method, tolerance);
       ASSERT_FALSE(run.failed()) << method << " at " << tolerance;
       EXPECT_EQ(run.summary.stats.events, 8) << method << " at " << tolerance;
     }
   }
-  // dopri5's steps at loose tolerances are long enough to swing a hinge through the whole band
-  // of its lock level between two samples (a known hole, docs/runtime.md "Events"): it finds
-  // the four unlocks there, and every event from 1e-4 down.
-  for (const double tolerance : {1e-2, 1e-3}) {
-    EXPECT_GE(RunCase("lock_cascade", "dopri5", tolerance).summary.stats.events, 4) << tolerance;
+}
+
+// Two equal rods joined by a sprung hinge, free in space, released with the hinge at 40 deg:
+// the hinge swings through straight, through its lock band (|torque| < lock_below, 1 mrad wide
+// on each side) in about 70 us, far less than one step at any tolerance here. It must lock at the
+// band's edge, lock_below / flexure, once. With zero angular momentum the rods turn by -theta/2
+// and theta/2 and their centres move along the bisector, so the kinetic energy is
+// M(theta) theta'^2 with M = m l^2 sin^2(theta/2) / 16 + I / 4, and the time to reach the edge is
+// the integral of sqrt(M / (k (theta0^2 - theta^2) / 2)) d theta. With lock_below - |torque| as
+// the event function dopri5 and auto found no lock at any tolerance down to 1e-6.
+TEST(LockLevelEvents, AHingeSwingingThroughItsLockBandWithinOneStepLocksAtItsEdge) {
+  const double mass = 0.5, length = 0.25, inertia = mass * length * length / 12;
+  const double flexure = 20, lock_below = 0.02, theta0 = 40 * kPi / 180;
+  const double edge = lock_below / flexure;
+  // theta = theta0 sin(u): the integrand is smooth in u (Simpson's rule).
+  const double u0 = std::asin(edge / theta0);
+  const int n = 2000;
+  const double du = (kPi / 2 - u0) / n;
+  double lock_time = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double theta = theta0 * std::sin(u0 + i * du);
+    const double m_theta =
+        mass * length * length * std::pow(std::sin(theta / 2), 2) / 16 + inertia / 4;
+    const double weight = (i == 0 || i == n) ? 1 : (i % 2 == 1 ? 4 : 2);
+    lock_time += weight * std::sqrt(m_theta / (0.5 * flexure)) * du / 3;
   }
-  EXPECT_EQ(RunCase("lock_cascade", "dopri5", 1e-4).summary.stats.events, 8);
+  for (const std::string& method : AllIntegrators()) {
+    for (const double tolerance : {5e-2, 1e-3, 1e-6}) {
+      const Compiled compiled = CompileText(fmt::format(R"(
+scenario "a hinge swings through its lock band" {{
+  time {{ end = 60 ms  output_every = 1 ms }}
+  integrator {} {{ tolerance = {} }}
+  symmetry planar
+  body chain {{
+    segment link_1 {{ mass = 0.5 kg  inertia = (0.0026041666666666665, 0.0026041666666666665, 0.00005) kg*m^2 }}
+    segment link_2 {{ mass = 0.5 kg  inertia = (0.0026041666666666665, 0.0026041666666666665, 0.00005) kg*m^2 }}
+    joint hinge : pin(link_1 -> link_2) {{
+      at link_1 = (0, 0, -125) mm
+      at link_2 = (0, 0, 125) mm
+      axis = (0, 1, 0)
+      flexure = 20 N*m/rad
+      lock_below = 0.02 N*m
+    }}
+  }}
+  initial chain.hinge {{ angles = (40, 0, 0) deg }}
+  output {{ joint_angle chain.hinge }}
+}}
+)",
+                                                        method, tolerance));
+      ASSERT_EQ(compiled.errors, "");
+      const RunResult run = sled::Simulate(compiled.model());
+      ASSERT_FALSE(run.failed()) << method << " at " << tolerance;
+      EXPECT_EQ(run.summary.stats.events, 1) << method << " at " << tolerance;
+      const auto angle = Channel(run.series, "chain.hinge.joint_angle.axis [rad]");
+      // Locked at the edge from the row after the lock on, swinging before it.
+      for (std::size_t row = 0; row < angle.size(); ++row) {
+        const double t = TimeAt(run.series, row);
+        if (t >= lock_time) {
+          EXPECT_NEAR(angle[row], edge, 1e-6 * edge) << method << " at " << tolerance << ", " << t;
+        } else {
+          EXPECT_GT(angle[row], edge * (1 + 1e-6)) << method << " at " << tolerance << ", " << t;
+        }
+      }
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryIntegrator, NumericsSuiteCases,
