@@ -56,6 +56,8 @@ class RestraintChecker : protected virtual CheckContext {
  protected:
   void CheckContacts();
   void CheckRestraints();
+  // An airbag's `model` and the attributes of ATB's free bag (check_airbag_model.cpp).
+  void CheckAirbagModel(Scope& scope, const BoundBlock& bound, Airbag& bag);
 };
 
 // Applied forces and torques (check_loads.cpp).

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "runtime/airbag/airbag_forces.h"
+#include "runtime/airbag/free_bag.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_impulse.h"
 #include "runtime/contact/contact_reach.h"
@@ -471,8 +472,15 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
                                                     std::span<double> y) {
   Invalidate();
   if (events_[k].kind == EventKind::kAirbagFull) {
-    data_.airbags.full[events_[k].segment] = direction > 0 ? 1 : 0;
-    return EventEffect::kModeChanged;
+    const std::size_t b = events_[k].segment;
+    data_.airbags.full[b] = direction > 0 ? 1 : 0;
+    if (!model_.airbags.free_bag[b] || direction <= 0) return EventEffect::kModeChanged;
+    // ATB's free bag is full: its motion starts where the envelope sits, as its frame moves.
+    Load(t, y);
+    ComputeKinematics(model_, data_);
+    StartFreeBag(model_, data_, b);
+    Store(y);
+    return EventEffect::kStateChanged;
   }
   if (events_[k].kind == EventKind::kAirbagInflow) {
     // Just past the event's time (which it may have been located a hair before).
