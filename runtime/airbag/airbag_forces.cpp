@@ -100,10 +100,9 @@ void ComputeAirbagForces(const Model& model, Data& data) {
       Penetration penetration;
       state.scale[b] =
           energy > 0 ? UnfoldedScale(model, data, b, frame, gas_volume, penetration) : 0.0;
-      for (std::size_t c = static_cast<std::size_t>(table.first_contact[b]);
-           c < static_cast<std::size_t>(table.first_contact[b] + table.contact_count[b]); ++c) {
-        state.force[c].setZero();
-      }
+      const auto first = static_cast<std::size_t>(table.first_contact[b]);
+      const auto count = static_cast<std::size_t>(table.contact_count[b]);
+      for (std::size_t c = first; c < first + count; ++c) state.force[c].setZero();
       state.pressure[b] = ambient;
       state.volume[b] = gas_volume;
       state.vent_flow[b] = 0.0;
