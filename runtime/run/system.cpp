@@ -108,6 +108,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
     if (bags.deploy_time[b] > model.start_time) {
       events_.push_back({EventKind::kAirbagInflow, b, bags.deploy_time[b]});
     }
+    if (bags.free_bag[b] && bags.vent_opening_pressure[b] > 0 && bags.vent_area[b] > 0) {
+      events_.push_back({EventKind::kAirbagVent, b});
+    }
     const double spent = AirbagInflowEnd(model, b);
     if (std::isfinite(spent) && spent > model.start_time) {
       events_.push_back({EventKind::kAirbagInflow, b, spent});
@@ -378,6 +381,12 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       g[k] = t - events_[k].time;
       continue;
     }
+    if (events_[k].kind == EventKind::kAirbagVent) {
+      const std::size_t b = events_[k].segment;
+      g[k] = data_.airbags.pressure[b] - model_.airbags.ambient_pressure[b] -
+             model_.airbags.vent_opening_pressure[b];
+      continue;
+    }
     const std::size_t s = events_[k].segment;
     const auto qa = static_cast<std::size_t>(model_.q_address[s]);
     switch (events_[k].kind) {
@@ -415,6 +424,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       case EventKind::kBelt:
       case EventKind::kAirbagFull:
       case EventKind::kAirbagInflow:
+      case EventKind::kAirbagVent:
         break;
     }
   }
@@ -496,7 +506,7 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kContactTouch || events_[k].kind == EventKind::kJointKink ||
-      events_[k].kind == EventKind::kContactKink) {
+      events_[k].kind == EventKind::kContactKink || events_[k].kind == EventKind::kAirbagVent) {
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kContactTurn) {
@@ -593,6 +603,7 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
     case EventKind::kBelt:
     case EventKind::kAirbagFull:
     case EventKind::kAirbagInflow:
+    case EventKind::kAirbagVent:
       break;
   }
 }
