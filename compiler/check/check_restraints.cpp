@@ -357,6 +357,7 @@ void RestraintChecker::CheckRestraints() {
         }
       }
     }
+    CheckAirbagModel(scope, bound, bag);
   }
   for (const Pending& pending : springs_) {
     SpringDamper& spring = scenario_.springs[static_cast<std::size_t>(pending.index)];

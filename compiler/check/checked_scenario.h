@@ -221,6 +221,12 @@ struct Airbag {
   double gas_constant = 287.0;  // [J/(kg K)]
   double discharge_coefficient = 0.6;
   std::vector<int> contact_segments;
+  // `model = atb_free`: ATB's free bag (polytropic gas, square-root vent, a free body on a spring).
+  bool free_bag = false;
+  double bag_mass = 0.0;               // [kg]
+  double mass_factor = 1.0;            // ATB's CMASS
+  double tether_stiffness = 0.0;       // [N/m]
+  double vent_opening_pressure = 0.0;  // gauge [Pa]
   SourceRange range;
 };
 

@@ -60,6 +60,8 @@ class RestraintChecker : protected virtual CheckContext {
   // false after a report (one of the first two without the other is E0206).
   bool ReadRateTerms(Scope& scope, const BoundBlock& bound, const ast::Statement& statement,
                      Contact& contact);
+  // An airbag's `model` and the attributes of ATB's free bag (check_airbag_model.cpp).
+  void CheckAirbagModel(Scope& scope, const BoundBlock& bound, Airbag& bag);
 };
 
 // Applied forces and torques (check_loads.cpp).

@@ -256,7 +256,17 @@ std::vector<BlockSpec> MakeSpecs() {
                  "specific gas constant of the gas; default 287 J/kg/K (air)"),
         Quantity("discharge_coefficient", d::kDimensionless,
                  "discharge coefficient of the vent; default 0.6", false, 0.0, 1.0, true),
-        References("contacts", "segment", "segments the bag can touch")},
+        References("contacts", "segment", "segments the bag can touch"),
+        Typed("model", V::kWord,
+              "`energy` (default): sled's energy-balance bag, fixed in its frame; `atb_free`: "
+              "ATB's free bag, a polytropic gas, a square-root vent and a free body on a spring"),
+        NonNegative("bag_mass", d::kMass, "mass of the bag's fabric (atb_free); default 0"),
+        Positive("mass_factor", d::kDimensionless,
+                 "the moving mass over the gas and fabric mass, ATB's CMASS (atb_free); default 1"),
+        NonNegative("tether_stiffness", d::kStiffness,
+                    "spring from the back pole to `position` (atb_free); default 0"),
+        NonNegative("vent_opening_pressure", d::kPressure,
+                    "gauge pressure above which the vent flows (atb_free); default 0")},
        {}});
   specs.push_back(
       {BlockKind::kSpring,

@@ -178,8 +178,8 @@ std::vector<CommandHelp> MakeCommands() {
        R"(  -o, --output FILE      write the scenario here (default: standard output)
   --deck=ain|lin         read a deck of another extension as this format
   --blank-zero           read blank columns as zeros (FORTRAN IV decks; .ain only)
-  --approximate-airbags  convert D.4 airbags to sled's bag, with a warning for each
-                         approximation (without it a deck with airbags is refused)
+  --approximate-airbags  deprecated, does nothing: D.4 airbags convert to ATB's free
+                         bag (`model = atb_free`) by default
   --diagnostics=rich|compact
                          the style of diagnostics
 )",

@@ -172,9 +172,14 @@ int RunConvert(const Options& options) {
     convert.format = *format;
     convert.blanks = options.blank_zero ? sled::lang::legacy::BlankMode::kZero
                                         : sled::lang::legacy::BlankMode::kIgnore;
-    convert.approximate_airbags = options.approximate_airbags;
     const auto ast = sled::lang::legacy::ConvertDeck(sources, *file, convert);
     if (!collector.has_errors()) text = sled::lang::Format(ast);
+  }
+  if (options.approximate_airbags) {
+    std::fputs(
+        "sled convert: warning: --approximate-airbags is deprecated and does nothing: D.4 "
+        "airbags convert to ATB's free bag (`model = atb_free`) by default\n",
+        stderr);
   }
   PrintDiagnostics(sources, collector, options.compact, ColorWanted());
   if (collector.has_errors()) return kExitInputErrors;

@@ -92,11 +92,17 @@ void LowerAirbags(Lowering& lowering) {
     table.gamma.push_back(bag.gamma);
     table.gas_constant.push_back(bag.gas_constant);
     table.source.push_back(lowering.Position(bag.range));
-    // The gas starts empty: mass, then internal energy.
+    table.free_bag.push_back(bag.free_bag ? 1 : 0);
+    table.bag_mass.push_back(bag.bag_mass);
+    table.mass_factor.push_back(bag.mass_factor);
+    table.tether_stiffness.push_back(bag.tether_stiffness);
+    table.vent_opening_pressure.push_back(bag.vent_opening_pressure);
+    // The gas starts empty (mass, then internal energy or, for ATB's free bag, the mass vented);
+    // a free bag's motion states are set when it is full.
     table.state_address.push_back(model.nw);
-    model.w0.push_back(0.0);
-    model.w0.push_back(0.0);
-    model.nw += 2;
+    const std::int32_t states = table.state_count(table.size() - 1);
+    model.w0.insert(model.w0.end(), static_cast<std::size_t>(states), 0.0);
+    model.nw += states;
     table.first_contact.push_back(static_cast<std::int32_t>(table.ncontact()));
     for (int segment : bag.contact_segments) LowerBagContact(lowering, bag, segment);
     table.contact_count.push_back(static_cast<std::int32_t>(table.ncontact()) -

@@ -1,5 +1,6 @@
 #include "lang/legacy/airbag_inflow.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -60,6 +61,33 @@ InflowTable TabulateCylinder(const Cylinder& c) {
   table.valid = std::isfinite(table.delivered);
   for (const auto& [t, f] : table.rows) table.valid = table.valid && std::isfinite(f);
   return table;
+}
+
+BagFill FillFreeBag(const Cylinder& c, double bag_volume) {
+  const double k1 = c.gamma - 1;
+  const double pressure = c.supply_pressure + c.ambient_pressure;                // CYP0
+  const double weight = c.volume * pressure / (c.gas_constant * c.temperature);  // V0 rho0
+  const double largest = c.volume / c.gamma * pressure / c.ambient_pressure;     // CYVMAX
+  // The weight delivered and the volume it takes at the ambient pressure, against Q.
+  auto delivered = [&](double q) { return weight * (1 - std::pow(q, -2 / k1)); };
+  auto ambient_volume = [&](double q) { return largest * (1 - std::pow(q, -2 * c.gamma / k1)); };
+  BagFill fill;
+  fill.fills = largest > bag_volume;
+  if (!fill.fills) {
+    fill.reference_temperature = c.temperature / c.gamma;
+    return fill;
+  }
+  const double q_full = std::pow(1 - bag_volume / largest, -k1 / (2 * c.gamma));
+  const double per_weight = bag_volume / delivered(q_full);  // SWITCH
+  fill.reference_temperature = per_weight * c.ambient_pressure / c.gas_constant;
+  constexpr int kSamples = 2000;
+  for (int k = 1; k <= kSamples; ++k) {
+    const double q = 1 + (q_full - 1) * k / kSamples;
+    const double difference = std::abs(ambient_volume(q) - per_weight * delivered(q));
+    fill.largest_unfolding_difference =
+        std::max(fill.largest_unfolding_difference, difference / bag_volume);
+  }
+  return fill;
 }
 
 }  // namespace sled::lang::legacy

@@ -41,4 +41,21 @@ struct InflowTable {
 
 InflowTable TabulateCylinder(const Cylinder& cylinder);
 
+// ATB's free bag holds its gas at the ambient pressure while it unfolds: AIRBGG gives the volume
+// CYV the cylinder's delivered gas takes there, CYVMAX (1 - Q^(-2 gamma / (gamma - 1))), which is
+// not proportional to the weight delivered, V0 rho0 (1 - Q^(-2 / (gamma - 1))); AIRBG3 freezes
+// their ratio, SWITCH, when the bag becomes full, and the polytropic law of the full bag uses it.
+// sled's free bag takes a volume proportional to its gas mass at the ambient pressure,
+// m R T_ref / p_a. `reference_temperature` is the T_ref that makes the ratio ATB's SWITCH at
+// the fill (with nothing in the bag's way): the full bag's gas law is then ATB's exactly.
+// `largest_unfolding_difference` is the largest difference, over the unfolding, between the two
+// volumes, as a share of the bag's volume. When the cylinder's whole gas takes less than the bag
+// (`fills` false), T_ref is the limit of the ratio, T0 / gamma.
+struct BagFill {
+  bool fills = false;
+  double reference_temperature = 0;
+  double largest_unfolding_difference = 0;
+};
+BagFill FillFreeBag(const Cylinder& cylinder, double bag_volume);
+
 }  // namespace sled::lang::legacy

@@ -1,12 +1,11 @@
-// D.4 and F.6: airbags (ATB's INPUT_AIRBAGS and INPUT_AIRBAG_FORCE; the model from AIRBAG and
-// AIRBGG). ATB's bag is a free rigid body of weight XBM, held to its deployment point by the
-// spring SPRK and pushed off its reaction panels (ellipsoids, D.4.g and D.4.h); its gas is
-// polytropic, fed by a cylinder that empties through a choked throat from CYTD, and vents in
-// proportion to the square root of the gauge pressure once above CYPV. sled's bag is fixed in its
-// frame, balances the gas's energy, takes an inflow function and vents by isentropic orifice
-// flow. The gas constants, the ambient pressure, the deployment time and the vent's area and
-// discharge coefficient carry over; the rest only approximately, so a deck converts its airbags
-// only when asked (--approximate-airbags), with a W0504 for each approximation.
+// D.4 and F.6: airbags (ATB's INPUT_AIRBAGS and INPUT_AIRBAG_FORCE; the model from AIRBAG,
+// AIRBGG and AIRBG3), converted to sled's `model = atb_free` bag. ATB's bag unfolds with its
+// vehicle until the cylinder's gas fills it, then is a free rigid body of weight XBM (times CMASS
+// with its gas), held to its deployment point by the spring SPRK and pushed off its reaction
+// panels (ellipsoids, D.4.g and D.4.h); its gas is polytropic, fed by a cylinder that empties
+// through a choked throat from CYTD, and vents as the square root of the gauge pressure once
+// above CYPV. The full bag's gas law and vent convert exactly; the cylinder, the unfolding, the
+// panels and the bag's rotation with a W0504 each that says by how much they differ.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -40,8 +39,7 @@ Vec3 Rotated(const Vec3& yaw_pitch_roll_deg, const Vec3& v) {
 
 class AirbagReader {
  public:
-  AirbagReader(DeckFields& fields, bool approximate)
-      : f_(fields), r_(fields.source()), approximate_(approximate) {}
+  explicit AirbagReader(DeckFields& fields) : f_(fields), r_(fields.source()) {}
 
   void Read(int number) {
     const std::string bag = fmt::format("airbag {}", number);
@@ -58,7 +56,7 @@ class AirbagReader {
     const Vec3 deploy = f_.Triple(place, 37, 12, "the deployment point");
     const Card d = r_.Next(fmt::format("D.4.d ({})", bag), {"(6F12.0)"});
     airbag.cylinder_line = d.line;
-    const double weight = r_.Real(d, 1, 12, "XBM, the bag's weight");
+    airbag.bag_weight = r_.Real(d, 1, 12, "XBM, the bag's weight");
     airbag.deploy_at = r_.Real(d, 13, 24, "CYTD, the time the cylinder starts to empty");
     airbag.ambient_pressure = r_.Real(d, 25, 36, "CYPA, the ambient pressure");
     Cylinder cylinder;
@@ -70,14 +68,14 @@ class AirbagReader {
     airbag.gamma = r_.Real(e, 13, 24, "CYK, the ratio of specific heats");
     airbag.gas_constant = r_.Real(e, 25, 36, "CYR, the gas constant");
     cylinder.throat_area = r_.Real(e, 37, 48, "CYAT, the throat's area");
-    const double vent_pressure = r_.Real(e, 49, 60, "CYPV, the venting pressure");
+    airbag.vent_pressure = r_.Real(e, 49, 60, "CYPV, the venting pressure");
     airbag.vent_discharge = r_.Real(e, 61, 72, "CYCD0, the vent's discharge coefficient");
     const Card f = r_.Next(fmt::format("D.4.f ({})", bag), {"(6F12.0)", 5});
     airbag.vent_area = r_.Real(f, 1, 12, "CYA0, the vent's area");
-    const double spring = r_.Real(f, 13, 24, "SPRK, the deployment spring");
-    r_.Real(f, 25, 36, "VSCS");
-    r_.Real(f, 37, 48, "CK");
-    r_.Real(f, 49, 60, "CMASS, the bag's mass factor");
+    airbag.spring = r_.Real(f, 13, 24, "SPRK, the deployment spring");
+    const double viscous = r_.Real(f, 25, 36, "VSCS");
+    const double ck = r_.Real(f, 37, 48, "CK");
+    airbag.mass_factor = r_.Real(f, 49, 60, "CMASS, the bag's mass factor");
     if (panels < 1 || panels > kMaxPanels) {
       f_.Invalid(head, 21, 24, fmt::format("NPANEL is {}", panels),
                  "a bag has 1 to 4 reaction panels; the first holds its deployment point");
@@ -95,11 +93,12 @@ class AirbagReader {
         panel_location = location;
         panel_offset = offset;
         panel_orientation = orientation;
-        if (approximate_) {
-          f_.Approximated(g, 1, 72,
-                          "the reaction panels hold ATB's free bag at its deployment point; "
-                          "sled's bag is fixed there, so they are not converted");
-        }
+        f_.Approximated(g, 1, 72,
+                        "ATB pushes its full bag off the reaction panels (the gauge pressure on "
+                        "the area each cuts, their volume taken from the gas) and pulls it by "
+                        "SPRK only while it does not cut the first; sled's free bag has no "
+                        "panels: SPRK holds it at all times and the panels take no volume (not "
+                        "measured: the panels' volume depends on the bag's motion)");
       }
     }
     if (head.line == 0 || r_.truncated()) return;
@@ -115,19 +114,28 @@ class AirbagReader {
     cylinder.temperature = airbag.gas_temperature;
     cylinder.ambient_pressure = airbag.ambient_pressure;
     cylinder.g = f_.deck().g;
-    if (!Valid(airbag, cylinder, shape, d, e, f) || !approximate_) return;
+    if (!Valid(airbag, cylinder, shape, d, e, f)) return;
     if (panel_orientation != Vec3{} || airbag.orientation != Vec3{}) {
       f_.Unverified(place, 1, 72,
                     "a turned bag or reaction panel: the bag is taken to deploy along its own -x "
                     "axis (ATB's DPVCTR), its axes and the first panel's turned by yaw, pitch "
                     "and roll; ATB's DRCYPR, which builds them, is not in the reference");
     }
-    if (weight != 0 || spring != 0 || cg_offset != Vec3{}) {
-      f_.Approximated(f, 13, 60,
-                      "ATB's bag is a free rigid body (weight XBM, C.G. offset, mass factor "
-                      "CMASS) held to its deployment point by the spring SPRK, unfolding by ATB's "
-                      "own law; sled's bag is fixed at the deployment point in the vehicle and "
-                      "unfolds as its gas fills it (docs/runtime.md)");
+    if (cg_offset != Vec3{}) {
+      f_.Approximated(shape, 37, 72,
+                      "ATB's bag turns about its C.G. offset from the ellipsoid's centre; sled's "
+                      "free bag does not turn, so the offset is not used");
+    }
+    f_.Approximated(f, 13, 24,
+                    "ATB's full bag is a rigid body that also turns under the pressure's torque "
+                    "(moments of inertia CMASS (gas + 2/3 XBM) / G times its semi-axes' "
+                    "(b^2 + c^2) / 5); sled's free bag translates with that mass and keeps the "
+                    "vehicle's axes (not measured)");
+    if (viscous != 0 || ck != 0) {
+      f_.Approximated(f, 25, 48,
+                      "VSCS and CK enter ATB's contact of the bag (BGG), which is not in the "
+                      "reference; sled's bag pushes with the gauge pressure times the contact "
+                      "area only, so they are not converted");
     }
     const InflowTable table = TabulateCylinder(cylinder);
     if (!table.valid) {
@@ -145,18 +153,7 @@ class AirbagReader {
                                 "(99.9 % of the gas), which delivers {:.4f} % of the cylinder's "
                                 "gas",
                                 table.rows.size(), table.step, table.end, 100 * table.delivered));
-    f_.Approximated(e, 13, 36,
-                    "ATB's gas is polytropic, its pressure set by the gas it holds and the bag's "
-                    "volume; sled balances the gas's energy, with the inflow at CYT0 (the "
-                    "temperature is read as kelvin and the gas constant per kelvin, which leaves "
-                    "every product of the two, all that ATB uses, unchanged)");
-    if (airbag.vent_area > 0 && airbag.vent_discharge > 0) {
-      f_.Approximated(e, 49, 72,
-                      fmt::format("ATB vents in proportion to the square root of the gauge "
-                                  "pressure{}; sled's vent is isentropic orifice flow through "
-                                  "CYCD0 times CYA0 as soon as the pressure exceeds the ambient",
-                                  vent_pressure > 0 ? " once it exceeds CYPV" : ""));
-    }
+    FillBag(airbag, cylinder, e);
     f_.deck().airbags.push_back(std::move(airbag));
   }
 
@@ -190,6 +187,13 @@ class AirbagReader {
             "give the gas constant (per weight: length / temperature)");
     require(cylinder.throat_area > 0, e, 37, "CYAT is not positive", "give the throat's area");
     require(airbag.vent_area >= 0, f, 1, "CYA0 is negative", "a vent's area is 0 or more");
+    require(airbag.bag_weight >= 0, d, 1, "XBM is negative", "give the bag's weight, 0 or more");
+    require(airbag.vent_pressure >= 0, e, 49, "CYPV is negative",
+            "the vent opens at a gauge pressure, 0 or more");
+    require(airbag.spring >= 0, f, 13, "SPRK is negative",
+            "give the spring's stiffness, 0 or more");
+    require(airbag.mass_factor > 0, f, 49, "CMASS is not positive",
+            "ATB divides by the bag's mass, CMASS times its gas and fabric weight over G");
     if (airbag.gamma <= 1 || airbag.gamma > 5.0 / 3) {
       f_.Refuse(e, 13, 24, fmt::format("CYK is {}", airbag.gamma),
                 "sled's `gamma` is above 1 and at most 5/3");
@@ -203,15 +207,41 @@ class AirbagReader {
     return ok;
   }
 
+  // The full bag's polytropic law and vent, exact to ATB: the reference temperature that gives
+  // ATB's SWITCH, and the vent's coefficient at the density ATB vents at (the ambient pressure
+  // over R CYT0, against sled's over R T_ref).
+  void FillBag(AirbagCard& airbag, const Cylinder& cylinder, const Card& e) {
+    const double volume = 4.0 / 3.0 * std::numbers::pi * airbag.semi_axes[0] * airbag.semi_axes[1] *
+                          airbag.semi_axes[2];
+    const BagFill fill = FillFreeBag(cylinder, volume);
+    airbag.reference_temperature = fill.reference_temperature;
+    airbag.vent_discharge *= std::sqrt(fill.reference_temperature / airbag.gas_temperature);
+    if (!fill.fills) {
+      f_.Approximated(e, 13, 36,
+                      "the cylinder's whole gas takes less than the bag's volume at CYPA: the "
+                      "bag never fills, in ATB as in sled; the gas's reference temperature is "
+                      "CYT0 / CYK, which gives it ATB's volume at the ambient pressure");
+      return;
+    }
+    f_.Approximated(
+        e, 13, 36,
+        fmt::format("the full bag's polytropic law is ATB's (the reference "
+                    "temperature {:.6g} K gives ATB's SWITCH at the fill); while it "
+                    "unfolds, ATB's envelope holds the volume the delivered gas takes "
+                    "at CYPA by the cylinder's law, sled's a volume proportional to "
+                    "the gas's mass: they differ by at most {:.3g} % of the bag's "
+                    "volume, and meet at the fill",
+                    fill.reference_temperature, 100 * fill.largest_unfolding_difference));
+  }
+
   DeckFields& f_;
   DeckSource& r_;
-  bool approximate_;
 };
 
 }  // namespace
 
-void ReadAirbags(DeckFields& fields, int count, bool approximate) {
-  AirbagReader reader(fields, approximate);
+void ReadAirbags(DeckFields& fields, int count) {
+  AirbagReader reader(fields);
   for (int j = 0; j < count && !fields.source().truncated(); ++j) reader.Read(j + 1);
 }
 

@@ -30,7 +30,7 @@ ast::File ConvertDeck(const SourceManager& sources, FileId deck, const ConvertOp
   } else {
     source = std::make_unique<CardReader>(sources, deck, options.blanks, tracking);
   }
-  const Deck read = ReadDeck(*source, options.approximate_airbags);
+  const Deck read = ReadDeck(*source);
   if (tracking.seen_error()) return ast::File{deck, {}};
   ast::File file = DeckToAst(read, tracking);
   file.file = deck;

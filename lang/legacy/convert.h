@@ -22,7 +22,8 @@ struct ConvertOptions {
   DiagnosticConsumer* diagnostics = nullptr;  // required
   DeckFormat format = DeckFormat::kFixed;
   BlankMode blanks = BlankMode::kIgnore;  // kZero: FORTRAN IV blanks-as-zeros (--blank-zero, .ain)
-  // Convert airbags to sled's bag, with a warning for each approximation (--approximate-airbags).
+  // Deprecated and ignored (--approximate-airbags): D.4 airbags convert to ATB's free bag
+  // (`model = atb_free`) by default; `sled convert` warns that the option does nothing.
   bool approximate_airbags = false;
 };
 

@@ -122,8 +122,8 @@ struct ConstraintCard {
   Vec3 at_first{}, at_second{};
 };
 
-// D.4 and F.6: an airbag, converted only with --approximate-airbags: held fixed at its deployment
-// point in the primary vehicle, its gas constants mapped and its cylinder tabulated.
+// D.4 and F.6: an airbag, ATB's free bag, deploying from its point in the primary vehicle, its
+// gas constants mapped and its cylinder tabulated.
 struct AirbagCard {
   std::uint32_t line = 0;           // D.4.a
   std::uint32_t cylinder_line = 0;  // D.4.d
@@ -135,6 +135,13 @@ struct AirbagCard {
   double ambient_pressure = 0, gas_temperature = 0, gamma = 0;
   double gas_constant = 0;  // CYR, per weight (length / temperature)
   double vent_discharge = 0, vent_area = 0;
+  // ATB's free bag: the temperature that gives ATB's SWITCH (FillFreeBag), the vent's discharge
+  // coefficient rescaled to the density ATB vents at, and the bag's body.
+  double reference_temperature = 0;
+  double bag_weight = 0;                          // XBM
+  double vent_pressure = 0;                       // CYPV
+  double spring = 0;                              // SPRK
+  double mass_factor = 0;                         // CMASS
   std::vector<std::pair<double, double>> inflow;  // time since CYTD -> mass flow (F * T / L)
   std::uint32_t contact_line = 0;                 // F.6
   std::vector<Ref> contacts;                      // F.6's segments

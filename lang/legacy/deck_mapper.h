@@ -121,8 +121,8 @@ class DeckMapper {
   void AddAttachments(ast::Statement& statement, const std::string& first, const Vec3& at_first,
                       const std::string& second, const Vec3& at_second);
   std::string FrameName(const DeckFrame& frame) const;
-  // D.4 and F.6 (--approximate-airbags): `airbag NAME on PRIMARY { ... }`, fixed at the
-  // deployment point, with the cylinder's flow as a named inflow table.
+  // D.4 and F.6: `airbag NAME on PRIMARY { model = atb_free ... }`, ATB's free bag, with the
+  // cylinder's flow as a named inflow table.
   void MapAirbags(ast::Block& scenario);
   // D.6: `constraint constraint_N : fixed_point(A -> B) { at A = ...  at B = ... }`.
   void MapConstraints(ast::Block& scenario);

@@ -57,8 +57,7 @@ std::string Upper(std::string text) {
 
 class DeckReader : public DeckFields {
  public:
-  DeckReader(DeckSource& reader, Deck& deck, bool approximate_airbags)
-      : DeckFields(reader, deck), approximate_airbags_(approximate_airbags) {}
+  DeckReader(DeckSource& reader, Deck& deck) : DeckFields(reader, deck) {}
 
   Deck Read() {
     ReadA();
@@ -283,24 +282,10 @@ class DeckReader : public DeckFields {
              "NJNTF to 0 and remove the F.5 cards, as ATB V.3 asks");
       unknown_layout_ = true;
     }
-    if (bags_ > 0 && !approximate_airbags_) {
-      Refuse(d1, 13, 18,
-             fmt::format("NBAG is {}: ATB's airbags are free rigid bodies (weight XBM, held to "
-                         "the deployment point by the spring SPRK, pushed off the reaction "
-                         "panels of D.4.g and D.4.h) with a polytropic gas fed by a cylinder "
-                         "(CYSP, CYV0, CYAT, CYCD) from CYTD and vented as the square root of "
-                         "the pressure above CYPV; sled's bag is fixed in its frame, balances "
-                         "the gas's energy, takes an inflow function and vents by isentropic "
-                         "orifice flow",
-                         bags_),
-             "convert with --approximate-airbags to carry over the gas constants, the ambient "
-             "pressure, the deployment time and the vent and approximate the rest, a warning for "
-             "each approximation (docs/legacy.md), or write the `airbag` by hand");
-    }
     actuators_ = ReadActuatorCount(*this, d1);
     for (int p = 0; p < planes; ++p) ReadPlane(p + 1);
     for (int b = 0; b < belts; ++b) ReadBelt(b + 1);
-    ReadAirbags(*this, bags_, approximate_airbags_);
+    ReadAirbags(*this, bags_);
     for (int e = 0; e < ellipsoids; ++e) ReadEllipsoid(e + 1);
     ReadConstraints(*this, constraints, bags_);
     ReadSymmetry();
@@ -697,7 +682,6 @@ class DeckReader : public DeckFields {
     }
   }
 
-  bool approximate_airbags_;
   bool unknown_layout_ = false;  // the deck goes on with cards whose layout is not known
   int harnesses_ = 0;            // D.1.a NHRNSS
   int wind_functions_ = 0;       // D.1.a NWINDF: E.6 cards after the E cards, then F.7
@@ -708,9 +692,9 @@ class DeckReader : public DeckFields {
 
 }  // namespace
 
-Deck ReadDeck(DeckSource& source, bool approximate_airbags) {
+Deck ReadDeck(DeckSource& source) {
   Deck deck;
-  return DeckReader(source, deck, approximate_airbags).Read();
+  return DeckReader(source, deck).Read();
 }
 
 }  // namespace sled::lang::legacy

@@ -11,8 +11,6 @@
 
 namespace sled::lang::legacy {
 
-// `approximate_airbags`: convert D.4 airbags to sled's model (--approximate-airbags); without
-// it a deck with airbags is refused at D.1.a's NBAG.
-Deck ReadDeck(DeckSource& source, bool approximate_airbags = false);
+Deck ReadDeck(DeckSource& source);
 
 }  // namespace sled::lang::legacy

@@ -230,8 +230,8 @@ std::string DeckMapper::FrameName(const DeckFrame& frame) const {
   return "ground";
 }
 
-// D.4 and F.6 (--approximate-airbags): `airbag NAME on PRIMARY { ... }`, fixed at the
-// deployment point, with the cylinder's flow as a named inflow table.
+// D.4 and F.6: `airbag NAME on PRIMARY { model = atb_free ... }`, ATB's free bag deploying from
+// its point, with the cylinder's flow as a named inflow table.
 void DeckMapper::MapAirbags(ast::Block& scenario) {
   for (std::size_t b = 0; b < deck_.airbags.size(); ++b) {
     const AirbagCard& card = deck_.airbags[b];
@@ -255,6 +255,7 @@ void DeckMapper::MapAirbags(ast::Block& scenario) {
         CardComment("D.4.a", card.line) + (card.title.empty() ? "" : ": " + card.title) +
             (card.contact_line ? fmt::format(" (F.6, line {})", card.contact_line) : ""));
     airbag.clauses.push_back({"on", {}, Path(Primary())});
+    Add(airbag, Attribute("model", Path("atb_free")));
     Add(airbag, Attribute("position", Vector(card.deploy_point, L)));
     // ATB's bag deploys along its -x; sled's along its x: turn the axes half a turn about z.
     double yaw = card.orientation[0] + 180;
@@ -264,7 +265,8 @@ void DeckMapper::MapAirbags(ast::Block& scenario) {
     Add(airbag, Attribute("semi_axes", Vector(card.semi_axes, L)));
     Add(airbag, Attribute("deploy_at", Number(card.deploy_at, T)));
     Add(airbag, Attribute("inflow", Path(inflow_name)));
-    Add(airbag, Attribute("gas_temperature", Number(card.gas_temperature, "K")));
+    // The reference temperature that gives the full bag ATB's SWITCH (FillFreeBag).
+    Add(airbag, Attribute("gas_temperature", Number(card.reference_temperature, "K")));
     Add(airbag, Attribute("gamma", Number(card.gamma)));
     // ATB's gas constant is per weight; per mass it is times G.
     Add(airbag, Attribute("gas_constant", ast::MakeBinary('*', Number(card.gas_constant, L + "/K"),
@@ -274,6 +276,18 @@ void DeckMapper::MapAirbags(ast::Block& scenario) {
       Add(airbag, Attribute("discharge_coefficient", Number(card.vent_discharge)));
     }
     Add(airbag, Attribute("ambient_pressure", Number(card.ambient_pressure, F + "/" + L + "^2")));
+    if (card.vent_pressure > 0) {
+      Add(airbag,
+          Attribute("vent_opening_pressure", Number(card.vent_pressure, F + "/" + L + "^2")));
+    }
+    if (card.bag_weight > 0) {
+      Add(airbag,
+          Attribute("bag_mass", ast::MakeBinary('/', Number(card.bag_weight, F), Path("deck_g"))));
+    }
+    if (card.mass_factor != 1) Add(airbag, Attribute("mass_factor", Number(card.mass_factor)));
+    if (card.spring > 0) {
+      Add(airbag, Attribute("tether_stiffness", Number(card.spring, F + "/" + L)));
+    }
     ast::Statement contacts;
     contacts.keyword = "contacts";
     contacts.has_value = true;

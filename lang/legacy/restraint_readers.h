@@ -11,9 +11,9 @@ namespace sled::lang::legacy {
 // between the vehicles and the ground).
 void ReadHarnesses(DeckFields& fields, int harnesses, int bags);
 
-// D.4 for D.1's NBAG airbags, and their F.6 cards. The cards are read and checked either way;
-// the bags are converted (with a W0504 for each approximation) only when `approximate`.
-void ReadAirbags(DeckFields& fields, int count, bool approximate);
+// D.4 for D.1's NBAG airbags, and their F.6 cards: ATB's free bags, converted to sled's
+// `model = atb_free` with a W0504 for each difference.
+void ReadAirbags(DeckFields& fields, int count);
 void ReadAirbagContacts(DeckFields& fields, int count);
 
 // D.6 for D.1's NQ constraints.

@@ -22,7 +22,8 @@ double AirbagUnfoldedFraction(const Model& model, const Data& data, std::size_t 
 
 // The event function of bag b's switch between unfolding and full, after ComputeAirbagForces:
 // positive on the full side. Unfolding: the envelope's scale less one; full: the pressure over
-// the ambient pressure less one (a full bag below the ambient pressure unfolds again).
+// the ambient pressure less one (a full bag below the ambient pressure unfolds again), or, for
+// ATB's free bag, which stays full, one.
 double AirbagFullnessEvent(const Model& model, const Data& data, std::size_t b);
 
 // Bag b's inflator phase at time t: 0 before deployment, 1 delivering, 2 spent (after the last

@@ -34,7 +34,16 @@ struct AirbagTable {
   // the gas's internal energy over c_v times the inflator's temperature, U / (c_v T_in) [kg] (a
   // mass too, so one absolute tolerance suits both; it equals m while the gas is at T_in).
   std::vector<std::int32_t> state_address;
-  std::vector<std::int32_t> first_contact;  // into the per-contact arrays
+  // ATB's free bag (`model = atb_free`, docs/runtime.md "ATB's free airbag"): 1 for a bag whose
+  // gas is polytropic, whose vent flow goes as the square root of the gauge pressure and which,
+  // once full, moves as a free body held by a spring; 0 for sled's energy-balance bag. A free
+  // bag's states are its gas mass, the mass vented, then its centre (world) and velocity.
+  std::vector<std::uint8_t> free_bag;
+  std::vector<double> bag_mass;               // of the fabric [kg]
+  std::vector<double> mass_factor;            // ATB's CMASS: the moving mass over gas + fabric
+  std::vector<double> tether_stiffness;       // spring from the back pole to `position` [N/m]
+  std::vector<double> vent_opening_pressure;  // gauge pressure above which the vent flows [Pa]
+  std::vector<std::int32_t> first_contact;    // into the per-contact arrays
   std::vector<std::int32_t> contact_count;
   std::vector<SourcePosition> source;
 
@@ -47,6 +56,9 @@ struct AirbagTable {
   std::vector<double> contact_radius;  // bounding sphere about the centre
 
   std::size_t size() const { return name.size(); }
+  // The number of auxiliary states bag b owns from state_address[b].
+  std::int32_t state_count(std::size_t b) const { return free_bag[b] ? kFreeBagStates : 2; }
+  static constexpr std::int32_t kFreeBagStates = 8;
   std::size_t ncontact() const { return contact_segment.size(); }
 };
 

@@ -22,6 +22,17 @@ double OrificeMassFlow(double discharge_area, double pressure, double temperatur
          std::sqrt(2.0 * gamma / (gamma - 1.0) * std::max(expansion, 0.0));
 }
 
+double PolytropicPressure(double ambient_pressure, double ambient_volume, double volume,
+                          double gamma) {
+  return ambient_pressure * std::pow(ambient_volume / volume, gamma);
+}
+
+double SquareRootVentFlow(double discharge_area, double density, double gauge,
+                          double opening_pressure) {
+  if (discharge_area <= 0 || gauge <= 0 || gauge <= opening_pressure) return 0.0;
+  return discharge_area * std::sqrt(2.0 * density * gauge);
+}
+
 EllipsoidCap CutEllipsoidCap(const Vec3& semi_axes, const Mat3& rotation, const Vec3& normal,
                              double height) {
   // Cross-sections perpendicular to n have area A0 (1 - s^2 / H^2) at distance s from the

@@ -15,6 +15,17 @@ namespace sled::runtime {
 double OrificeMassFlow(double discharge_area, double pressure, double temperature,
                        double ambient_pressure, double gamma, double gas_constant);
 
+// ATB's polytropic gas: the absolute pressure of a gas that takes `ambient_volume` at
+// `ambient_pressure`, compressed (or expanded) to `volume` along p V^gamma = constant.
+double PolytropicPressure(double ambient_pressure, double ambient_volume, double volume,
+                          double gamma);
+
+// ATB's vent: the mass flow [kg/s] of an incompressible orifice flow, C_d A sqrt(2 rho dp), of
+// the gas at `density` driven by the gauge pressure `gauge`, while the gauge pressure is above
+// `opening_pressure`; zero otherwise (and for a closed bag).
+double SquareRootVentFlow(double discharge_area, double density, double gauge,
+                          double opening_pressure);
+
 // The cap of height `height` (from the surface, along the unit `normal`) that a plane
 // perpendicular to `normal` cuts from an ellipsoid with semi-axes `semi_axes` whose axes are the
 // columns of `rotation`: its volume and the area of its flat base, which is the derivative of

@@ -101,8 +101,8 @@ MultibodyJacobian::MultibodyJacobian(const Model& model)
   gas_by_segment_.resize(model.airbags.size());
   for (std::size_t b = 0; b < model.airbags.size(); ++b) {
     const auto& element = coupling_.elements[static_cast<std::size_t>(coupling_.airbag_element[b])];
-    gas_by_segment_[b].assign(element.size(),
-                              Eigen::Matrix<double, Eigen::Dynamic, 12>::Zero(2, 12));
+    gas_by_segment_[b].assign(element.size(), Eigen::Matrix<double, Eigen::Dynamic, 12>::Zero(
+                                                  model.airbags.state_count(b), 12));
   }
   gas_by_gas_.setZero(static_cast<Eigen::Index>(nw_), static_cast<Eigen::Index>(nw_));
   wdot_.assign(nw_, 0.0);
@@ -331,7 +331,7 @@ void MultibodyJacobian::SpaceDerivatives(Data& data) {
         const auto wa = static_cast<std::size_t>(bags.state_address[b]);
         for (std::size_t m = 0; m < element.size(); ++m) {
           if (coupling_.colour[static_cast<std::size_t>(element[m])] != colour) continue;
-          for (std::size_t j = 0; j < 2; ++j) {
+          for (std::size_t j = 0; j < static_cast<std::size_t>(bags.state_count(b)); ++j) {
             gas_by_segment_[b][m](static_cast<Eigen::Index>(j), d) =
                 (data.wdot[wa + j] - wdot_[wa + j]) / step;
           }
@@ -436,7 +436,7 @@ void MultibodyJacobian::AirbagTerms(Data& data) {
   for (std::size_t b = 0; b < bags.size(); ++b) {
     const auto& element = coupling_.elements[static_cast<std::size_t>(coupling_.airbag_element[b])];
     const auto wa = static_cast<Eigen::Index>(bags.state_address[b]);
-    for (Eigen::Index j = 0; j < 2; ++j) {
+    for (Eigen::Index j = 0; j < bags.state_count(b); ++j) {
       const Eigen::Index c = NewCandidate();
       load_coordinate_[static_cast<std::size_t>(c)] = -2;  // u is a unit vector, no response
       candidate_u_(nq + nv + wa + j, c) = 1.0;

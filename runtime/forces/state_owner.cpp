@@ -30,7 +30,7 @@ void NameStateOwner(const Model& model, std::size_t component, Failure& failure)
     const auto w = static_cast<std::int32_t>(component - nq - nv);
     const AirbagTable& bags = model.airbags;
     for (std::size_t b = 0; b < bags.name.size(); ++b) {
-      if (w >= bags.state_address[b] && w < bags.state_address[b] + 2) {
+      if (w >= bags.state_address[b] && w < bags.state_address[b] + bags.state_count(b)) {
         failure.where = bags.name[b];
         failure.source = bags.source[b];
         failure.cause += ", in its gas state";

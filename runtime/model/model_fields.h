@@ -199,6 +199,11 @@ enum FieldCheck : unsigned {
   X(Airbag, airbags.gamma, Physics, None, kNonNegative)                                    \
   X(Airbag, airbags.gas_constant, Physics, None, kNonNegative)                             \
   X(Airbag, airbags.state_address, Physics, Auxiliary, kPlain)                             \
+  X(Airbag, airbags.free_bag, Physics, None, kPlain)                                      \
+  X(Airbag, airbags.bag_mass, Physics, None, kNonNegative)                                 \
+  X(Airbag, airbags.mass_factor, Physics, None, kNonNegative)                              \
+  X(Airbag, airbags.tether_stiffness, Physics, None, kNonNegative)                         \
+  X(Airbag, airbags.vent_opening_pressure, Physics, None, kNonNegative)                    \
   X(Airbag, airbags.first_contact, Physics, None, kPlain)                                  \
   X(Airbag, airbags.contact_count, Physics, None, kPlain)                                  \
   X(Airbag, airbags.source, Unhashed, None, kPlain)                                        \

@@ -177,8 +177,8 @@ class Validator {
     for (std::size_t b = 0; b < bags.size(); ++b) {
       CheckRange(fmt::format("airbags.first_contact[{}]", b), bags.first_contact[b],
                  bags.contact_count[b], bags.ncontact());
-      CheckRange(fmt::format("airbags.state_address[{}]", b), bags.state_address[b], 2,
-                 CountOf(m, ModelCount::kAuxiliary));
+      CheckRange(fmt::format("airbags.state_address[{}]", b), bags.state_address[b],
+                 bags.state_count(b), CountOf(m, ModelCount::kAuxiliary));
     }
     const ContactTable& contacts = m.contacts;
     for (std::size_t k = 0; k < contacts.npair(); ++k) {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "runtime/airbag/airbag_forces.h"
+#include "runtime/airbag/free_bag.h"
 #include "runtime/contact/contact_forces.h"
 #include "runtime/contact/contact_impulse.h"
 #include "runtime/contact/contact_reach.h"
@@ -112,6 +113,9 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
     events_.push_back({EventKind::kAirbagFull, b});
     if (bags.deploy_time[b] > model.start_time) {
       events_.push_back({EventKind::kAirbagInflow, b, bags.deploy_time[b]});
+    }
+    if (bags.free_bag[b] && bags.vent_opening_pressure[b] > 0 && bags.vent_area[b] > 0) {
+      events_.push_back({EventKind::kAirbagVent, b});
     }
     const double spent = AirbagInflowEnd(model, b);
     if (std::isfinite(spent) && spent > model.start_time) {
@@ -413,6 +417,12 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       g[k] = t - events_[k].time;
       continue;
     }
+    if (events_[k].kind == EventKind::kAirbagVent) {
+      const std::size_t b = events_[k].segment;
+      g[k] = data_.airbags.pressure[b] - model_.airbags.ambient_pressure[b] -
+             model_.airbags.vent_opening_pressure[b];
+      continue;
+    }
     const std::size_t s = events_[k].segment;
     const auto qa = static_cast<std::size_t>(model_.q_address[s]);
     const auto va = static_cast<std::size_t>(model_.v_address[s]);
@@ -462,6 +472,7 @@ void MultibodySystem::Events(double t, std::span<const double> y, std::span<doub
       case EventKind::kBelt:
       case EventKind::kAirbagFull:
       case EventKind::kAirbagInflow:
+      case EventKind::kAirbagVent:
         break;
     }
   }
@@ -519,8 +530,15 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
                                                     std::span<double> y) {
   Invalidate();
   if (events_[k].kind == EventKind::kAirbagFull) {
-    data_.airbags.full[events_[k].segment] = direction > 0 ? 1 : 0;
-    return EventEffect::kModeChanged;
+    const std::size_t b = events_[k].segment;
+    data_.airbags.full[b] = direction > 0 ? 1 : 0;
+    if (!model_.airbags.free_bag[b] || direction <= 0) return EventEffect::kModeChanged;
+    // ATB's free bag is full: its motion starts where the envelope sits, as its frame moves.
+    Load(t, y);
+    ComputeKinematics(model_, data_);
+    StartFreeBag(model_, data_, b);
+    Store(y);
+    return EventEffect::kStateChanged;
   }
   if (events_[k].kind == EventKind::kAirbagInflow) {
     // Just past the event's time (which it may have been located a hair before).
@@ -536,7 +554,7 @@ OdeSystem::EventEffect MultibodySystem::HandleEvent(std::size_t k, int direction
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kContactTouch || events_[k].kind == EventKind::kJointKink ||
-      events_[k].kind == EventKind::kContactKink) {
+      events_[k].kind == EventKind::kContactKink || events_[k].kind == EventKind::kAirbagVent) {
     return EventEffect::kModeChanged;
   }
   if (events_[k].kind == EventKind::kContactTurn) {
@@ -629,6 +647,7 @@ void MultibodySystem::ApplyEvent(std::size_t k, int direction) {
     case EventKind::kBelt:
     case EventKind::kAirbagFull:
     case EventKind::kAirbagInflow:
+    case EventKind::kAirbagVent:
       break;
   }
 }

@@ -67,7 +67,8 @@ class MultibodySystem : public OdeSystem {
  private:
   // kAirbagFull (an airbag's envelope becomes full, or stops being full) and kAirbagInflow (its
   // inflator starts or stops at `time`) switch the bag's mode where its gas equations change,
-  // so no step straddles the jump in their rates.
+  // so no step straddles the jump in their rates. kAirbagVent: ATB's free bag's gauge pressure
+  // passes its vent's opening pressure, where the vent's flow jumps; it only stops the step there.
   // kContactTouch: a pair without the impulse option touches or separates (its gap passes
   // zero), where the force law has a kink; it only stops the step there.
   // kContactTurn: a hysteretic contact pair's deflection turns while it loads (its largest
@@ -97,7 +98,8 @@ class MultibodySystem : public OdeSystem {
     kJointKink,
     kBelt,
     kAirbagFull,
-    kAirbagInflow
+    kAirbagInflow,
+    kAirbagVent
   };
   struct Event {
     EventKind kind;

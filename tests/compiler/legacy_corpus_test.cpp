@@ -42,14 +42,13 @@ class LegacyCorpus : public LegacyTwinTest {
     ExpectMatchesTwin(converted, "examples/legacy/" + name + ".sled", rows);
   }
 
-  // Writes `deck` as NAME.ain, converts it with --approximate-airbags and returns the scenario,
+  // Writes `deck` as NAME.ain, converts it and returns the scenario,
   // after requiring that it checks with no diagnostic.
   std::string ConvertCheckingClean(const std::string& name, const std::string& deck) {
     const fs::path path = temp() / (name + ".ain");
     WriteText(path, deck);
     const fs::path converted = temp() / (name + ".sled");
-    const SledResult convert =
-        Sled({"convert", path.string(), "-o", converted.string(), "--approximate-airbags"});
+    const SledResult convert = Sled({"convert", path.string(), "-o", converted.string()});
     EXPECT_EQ(convert.exit_code, 0) << convert.err;
     if (convert.exit_code != 0) return {};
     const SledResult check = Sled({"check", converted.string()});

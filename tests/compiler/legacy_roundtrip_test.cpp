@@ -16,13 +16,15 @@ class LegacyRoundTrip : public LegacyTwinTest {};
 
 TEST_F(LegacyRoundTrip, SeatedOccupantDeckMatchesItsTwin) {
   const fs::path converted = temp() / "seated_occupant.sled";
-  const SledResult convert = Sled({"convert", "examples/legacy/seated_occupant.ain", "-o",
-                                   converted.string(), "--approximate-airbags"});
+  const SledResult convert =
+      Sled({"convert", "examples/legacy/seated_occupant.ain", "-o", converted.string()});
   ASSERT_EQ(convert.exit_code, 0) << convert.err;
   EXPECT_NE(convert.err.find("warning[W0501]"), std::string::npos) << convert.err;
-  // The airbag's approximations: the cylinder's table, the gas law, the vent and the free bag
-  // held fixed (with its reaction panel).
-  EXPECT_EQ(Count(convert.err, "warning[W0504]"), 5u) << convert.err;
+  // The free bag's differences from ATB's: the cylinder's table, the unfolding (measured), the
+  // reaction panel and the bag's rotation.
+  EXPECT_EQ(Count(convert.err, "warning[W0504]"), 4u) << convert.err;
+  EXPECT_NE(convert.err.find("the reference temperature 432.252 K"), std::string::npos)
+      << convert.err;
   EXPECT_NE(convert.err.find("85 rows every 0.0005 s up to 0.04164 s"), std::string::npos)
       << convert.err;
 
@@ -37,8 +39,7 @@ TEST_F(LegacyRoundTrip, MangledDeckFailsWithALocatedDiagnostic) {
   deck.replace(at + 8, 4, "26x6");
   const fs::path path = temp() / "deck.ain";
   WriteText(path, deck);
-  const SledResult convert =
-      Sled({"convert", path.string(), "--diagnostics=compact", "--approximate-airbags"});
+  const SledResult convert = Sled({"convert", path.string(), "--diagnostics=compact"});
   EXPECT_EQ(convert.exit_code, 1);
   EXPECT_NE(convert.err.find(":7-12: error[E0502]: card B.2.a (segment 1), columns 7-12"),
             std::string::npos)
@@ -46,37 +47,32 @@ TEST_F(LegacyRoundTrip, MangledDeckFailsWithALocatedDiagnostic) {
   EXPECT_EQ(convert.out, "");
 }
 
-TEST_F(LegacyRoundTrip, WithoutTheOptionAnAirbagIsRefusedAtNbag) {
-  const SledResult convert =
-      Sled({"convert", "examples/legacy/seated_occupant.ain", "--diagnostics=compact"});
-  EXPECT_EQ(convert.exit_code, 1);
-  EXPECT_EQ(convert.out, "");
-  EXPECT_NE(convert.err.find("seated_occupant.ain:103:13-18: error[E0507]: card D.1.a, columns "
-                             "13-18: NBAG is 1: ATB's airbags are free rigid bodies"),
+TEST_F(LegacyRoundTrip, TheDeprecatedAirbagOptionOnlyWarns) {
+  const SledResult plain = Sled({"convert", "examples/legacy/seated_occupant.ain"});
+  const SledResult with_option =
+      Sled({"convert", "examples/legacy/seated_occupant.ain", "--approximate-airbags"});
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(with_option.exit_code, 0);
+  EXPECT_EQ(with_option.out, plain.out);
+  EXPECT_NE(plain.out.find("model = atb_free"), std::string::npos);
+  EXPECT_NE(with_option.err.find("--approximate-airbags is deprecated and does nothing"),
             std::string::npos)
-      << convert.err;
-  EXPECT_NE(convert.err.find("--approximate-airbags"), std::string::npos);
-  EXPECT_EQ(convert.err.find("W0504"), std::string::npos) << convert.err;
+      << with_option.err;
 }
 
 TEST_F(LegacyRoundTrip, LinDeckConvertsByItsExtensionOrByDeckOption) {
-  const SledResult from_ain =
-      Sled({"convert", "examples/legacy/seated_occupant.ain", "--approximate-airbags"});
-  const SledResult from_lin =
-      Sled({"convert", "examples/legacy/seated_occupant.lin", "--approximate-airbags"});
+  const SledResult from_ain = Sled({"convert", "examples/legacy/seated_occupant.ain"});
+  const SledResult from_lin = Sled({"convert", "examples/legacy/seated_occupant.lin"});
   ASSERT_EQ(from_lin.exit_code, 0) << from_lin.err;
   EXPECT_EQ(from_lin.out, from_ain.out);
   // Another extension needs --deck; --blank-zero is for fixed columns only.
   const fs::path other = temp() / "seated_occupant.dat";
   WriteText(other, ReadText(kSourceRoot / "examples/legacy/seated_occupant.lin"));
   EXPECT_EQ(Sled({"convert", other.string()}).exit_code, 2);
-  const SledResult forced =
-      Sled({"convert", other.string(), "--deck=lin", "--approximate-airbags"});
+  const SledResult forced = Sled({"convert", other.string(), "--deck=lin"});
   EXPECT_EQ(forced.exit_code, 0) << forced.err;
   EXPECT_EQ(forced.out, from_ain.out);
-  EXPECT_EQ(Sled({"convert", other.string(), "--deck=lin", "--blank-zero", "--approximate-airbags"})
-                .exit_code,
-            2);
+  EXPECT_EQ(Sled({"convert", other.string(), "--deck=lin", "--blank-zero"}).exit_code, 2);
 }
 
 }  // namespace

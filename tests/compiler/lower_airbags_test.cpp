@@ -120,5 +120,43 @@ TEST(LowerAirbags, ABagDeployingAfterTheEndIsNoted) {
   EXPECT_THAT(Notes(compiled), HasSubstr("deploys at 0.08 s, when the run has ended"));
 }
 
+TEST(LowerAirbags, AtbsFreeBagHasItsBodyAndEightStates) {
+  const verification::Compiled compiled = verification::CompileText(
+      Scene("car", "b.trunk",
+            "model = atb_free  bag_mass = 0.2 kg  mass_factor = 1.5  tether_stiffness = 3 kN/m  "
+            "vent_opening_pressure = 10 kPa"));
+  ASSERT_EQ(compiled.errors, "");
+  const runtime::Model& m = compiled.model();
+  ASSERT_EQ(m.airbags.size(), 1u);
+  EXPECT_EQ(m.airbags.free_bag[0], 1);
+  // The gas mass, the mass vented, the centre and its velocity, all starting at zero.
+  EXPECT_EQ(m.nw, 8);
+  EXPECT_EQ(m.w0, std::vector<double>(8, 0.0));
+  EXPECT_DOUBLE_EQ(m.airbags.bag_mass[0], 0.2);
+  EXPECT_DOUBLE_EQ(m.airbags.mass_factor[0], 1.5);
+  EXPECT_DOUBLE_EQ(m.airbags.tether_stiffness[0], 3000.0);
+  EXPECT_DOUBLE_EQ(m.airbags.vent_opening_pressure[0], 10e3);
+  // The energy bag is the default, with its two states.
+  const verification::Compiled energy = verification::CompileText(Scene("car", "b.trunk"));
+  ASSERT_EQ(energy.errors, "");
+  EXPECT_EQ(energy.model().airbags.free_bag[0], 0);
+  EXPECT_EQ(energy.model().nw, 2);
+}
+
+TEST(LowerAirbags, TheFreeBagsAttributesOnAnEnergyBagAreRefused) {
+  EXPECT_THAT(
+      verification::CompileText(Scene("car", "b.trunk", "tether_stiffness = 3 kN/m")).errors,
+      HasSubstr("error[E0440]: airbag `bag` has `tether_stiffness`"));
+  EXPECT_THAT(
+      verification::CompileText(Scene("car", "b.trunk", "model = energy  bag_mass = 1 kg")).errors,
+      HasSubstr("error[E0440]: airbag `bag` has `bag_mass`"));
+  EXPECT_THAT(verification::CompileText(Scene("car", "b.trunk", "model = atb")).errors,
+              HasSubstr("E0308"));
+  EXPECT_THAT(
+      verification::CompileText(Scene("car", "b.trunk", "model = atb_free  mass_factor = 0"))
+          .errors,
+      HasSubstr("mass_factor"));
+}
+
 }  // namespace
 }  // namespace sled::compiler
