@@ -130,6 +130,7 @@ void ExponentialRungeKutta::PrepareDenseOutput() {
   std::copy(f0_.begin(), f0_.end(), dense_f0_.begin());
   std::copy(c2_.begin(), c2_.end(), dense_c2_.begin());
   std::copy(c3_.begin(), c3_.end(), dense_c3_.begin());
+  phi_.ForgetDense();
 }
 
 void ExponentialRungeKutta::DenseOutput(double theta, std::span<double> y) const {
@@ -145,11 +146,8 @@ void ExponentialRungeKutta::DenseOutput(double theta, std::span<double> y) const
     return;
   }
   const double tau = theta * h;
-  phi_.PrepareOther(tau);
-  std::copy(dense_y0_.begin(), dense_y0_.end(), y.begin());
-  phi_.Accumulate(1, Fraction::kOther, dense_f0_, tau, y);
-  phi_.Accumulate(2, Fraction::kOther, dense_c2_, h * theta * theta, y);
-  phi_.Accumulate(3, Fraction::kOther, dense_c3_, h * theta * theta * theta, y);
+  phi_.Dense(tau, dense_y0_, {dense_f0_, dense_c2_, dense_c3_},
+             {tau, h * theta * theta, h * theta * theta * theta}, y);
 }
 
 void ExponentialRungeKutta::StepAccepted() { source_.StepAccepted(); }

@@ -45,20 +45,6 @@ double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
 
 }  // namespace
 
-double InverseFactorial(int k) {
-  static const auto table = [] {
-    std::array<double, 41> values{};
-    long double inverse = 1.0L;
-    for (int i = 0; i <= 40; ++i) {
-      if (i > 0) inverse /= i;
-      values[static_cast<std::size_t>(i)] = static_cast<double>(inverse);
-    }
-    return values;
-  }();
-  if (k < 0 || k > 40) throw std::out_of_range("InverseFactorial: k must be in [0, 40]");
-  return table[static_cast<std::size_t>(k)];
-}
-
 void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
   const auto count = static_cast<std::size_t>(p + 1);
   if (next_.size() < count) next_.resize(count);
