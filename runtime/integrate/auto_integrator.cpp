@@ -56,9 +56,9 @@ bool AutoIntegrator::ShouldSwitch() {
     stiff_steps_ = explicit_.stiffness_ratio() > kStiffRatio ? stiff_steps_ + 1 : 0;
     return steps_in_mode_ >= explicit_min_steps_ && stiff_steps_ >= kStiffSteps;
   }
-  // Could dopri5 have taken the exponential method's step stably?
+  // Is the exponential method's step short enough that dopri5, at its stable step, is cheaper?
   const double rate = exponential_.stiff_rate();
-  if (exponential_.step_size() * rate <= kExplicitStable) {
+  if (exponential_.step_size() * rate <= kHandBackStep) {
     ++settled_steps_;
   } else {
     settled_steps_ = 0;

@@ -89,14 +89,19 @@ bool ExponentialRungeKutta::TryStep(double h, double* error) {
   for (std::size_t i = 0; i < n; ++i) {
     c2_[i] = 4.0 * d3_[i] - d4_[i];
     c3_[i] = 4.0 * d4_[i] - 8.0 * d3_[i];
-    product_[i] = c2_[i] - 2.0 * d2_[i];
+    product_[i] = 2.0 * d3_[i] - d4_[i];
   }
   for (std::size_t i = 0; i < n; ++i) y1_[i] = y_[i] + whole_[i];
   phi_.Accumulate(2, Fraction::kWhole, c2_, h, y1_);
   phi_.Accumulate(3, Fraction::kWhole, c3_, h, y1_);
+  // The embedded estimate h kappa (2 D_3 - D_4) + 2h phi_2 (D_3 - D_2), kappa = (phi_1 -
+  // 2 phi_2 + 2 phi_3) / 2 (see the header).
   std::fill(error_.begin(), error_.end(), 0.0);
-  phi_.Accumulate(2, Fraction::kWhole, product_, h, error_);
-  phi_.Accumulate(3, Fraction::kWhole, c3_, h, error_);
+  phi_.Accumulate(1, Fraction::kWhole, product_, 0.5 * h, error_);
+  phi_.Accumulate(2, Fraction::kWhole, product_, -h, error_);
+  phi_.Accumulate(3, Fraction::kWhole, product_, h, error_);
+  for (std::size_t i = 0; i < n; ++i) product_[i] = d3_[i] - d2_[i];
+  phi_.Accumulate(2, Fraction::kWhole, product_, 2.0 * h, error_);
 
   // The end derivative (the next step's f0), and the residual of the step's model there.
   if (!Evaluate(t_ + h, y1_, f1_)) return false;
@@ -130,6 +135,7 @@ void ExponentialRungeKutta::PrepareDenseOutput() {
   std::copy(f0_.begin(), f0_.end(), dense_f0_.begin());
   std::copy(c2_.begin(), c2_.end(), dense_c2_.begin());
   std::copy(c3_.begin(), c3_.end(), dense_c3_.begin());
+  phi_.ForgetDense();
 }
 
 void ExponentialRungeKutta::DenseOutput(double theta, std::span<double> y) const {
@@ -145,11 +151,8 @@ void ExponentialRungeKutta::DenseOutput(double theta, std::span<double> y) const
     return;
   }
   const double tau = theta * h;
-  phi_.PrepareOther(tau);
-  std::copy(dense_y0_.begin(), dense_y0_.end(), y.begin());
-  phi_.Accumulate(1, Fraction::kOther, dense_f0_, tau, y);
-  phi_.Accumulate(2, Fraction::kOther, dense_c2_, h * theta * theta, y);
-  phi_.Accumulate(3, Fraction::kOther, dense_c3_, h * theta * theta * theta, y);
+  phi_.Dense(tau, dense_y0_, {dense_f0_, dense_c2_, dense_c3_},
+             {tau, h * theta * theta, h * theta * theta * theta}, y);
 }
 
 void ExponentialRungeKutta::StepAccepted() { source_.StepAccepted(); }

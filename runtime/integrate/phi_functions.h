@@ -20,7 +20,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <cstddef>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "runtime/integrate/phi_spectral.h"
@@ -55,6 +58,8 @@ class PhiFunctions {
   int squarings() const { return squarings_; }
   // Whether the last Compute took the spectral path.
   bool spectral() const { return spectral_.valid(); }
+  // That path's eigen-decomposition of Z (valid only when spectral()).
+  const SpectralPhi& decomposition() const { return spectral_; }
 
  private:
   // The Taylor polynomial and modified squaring (the path for any Z).
@@ -75,7 +80,24 @@ class PhiFunctions {
   int squarings_ = 0;
 };
 
-// 1/k! for k = 0..40 (from long double products, so within a rounding of the exact value).
-double InverseFactorial(int k);
+namespace detail {
+// 1/k! for k = 0..40, from long double products, so within a rounding of the exact value.
+inline constexpr std::array<double, 41> kInverseFactorials = [] {
+  std::array<double, 41> values{};
+  long double inverse = 1.0L;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i > 0) inverse /= static_cast<long double>(i);
+    values[i] = static_cast<double>(inverse);
+  }
+  return values;
+}();
+}  // namespace detail
+
+// 1/k! for k = 0..40. Inline: the scalar phi-functions of a dense output row call it in their
+// inner loops.
+inline double InverseFactorial(int k) {
+  if (k < 0 || k > 40) throw std::out_of_range("InverseFactorial: k must be in [0, 40]");
+  return detail::kInverseFactorials[static_cast<std::size_t>(k)];
+}
 
 }  // namespace sled::runtime

@@ -14,15 +14,15 @@ namespace {
 constexpr double kRecurrenceNorm = 2.0 * (SpectralPhi::kMaxOrder + 2);
 
 // The series is summed at |z| / 2^s <= this, then squared back (as phi_functions.cpp does for
-// matrices): 20 terms are below the unit roundoff there.
+// matrices): at most kSeriesTerms terms, fewer when the next is below the unit roundoff.
 constexpr double kSeriesNorm = 0.5;
 constexpr int kSeriesTerms = 22;
+constexpr double kTruncation = 1e-17;
 
-}  // namespace
-
-void SpectralPhi::Scalar(std::complex<double> z, int p, std::complex<double>* out) {
-  using C = std::complex<double>;
-  const double norm = std::abs(z);
+// phi_0(z) ... phi_p(z) for T = double or std::complex<double>, |z| = norm: a real eigenvalue
+// (a decay) costs a quarter of the complex arithmetic.
+template <class T>
+void ScalarPhi(T z, double norm, int p, T* out) {
   if (norm > kRecurrenceNorm) {
     out[0] = std::exp(z);
     for (int k = 0; k < p; ++k) out[k + 1] = (out[k] - InverseFactorial(k)) / z;
@@ -30,23 +30,46 @@ void SpectralPhi::Scalar(std::complex<double> z, int p, std::complex<double>* ou
   }
   int s = 0;
   if (norm > kSeriesNorm) s = static_cast<int>(std::ceil(std::log2(norm / kSeriesNorm)));
-  const C x = std::ldexp(1.0, -s) * z;
+  const T x = std::ldexp(1.0, -s) * z;
+  // The degree: the first neglected term |x|^(d+1) / (d+1+p)!, relative to phi_p's leading
+  // 1/p!, below the unit roundoff (d = 12 at |x| = 1/2 and p = 5, fewer for smaller |x|).
+  const double x_norm = std::ldexp(norm, -s);
+  int degree = 0;
+  double term = 1.0;
+  for (; degree < kSeriesTerms; ++degree) {
+    term *= x_norm / static_cast<double>(degree + 1 + p);
+    if (term < kTruncation) break;
+  }
   // phi_p(x) = sum_j x^j / (j + p)! by Horner, then phi_k = x phi_{k+1} + 1/k! downwards.
-  C top = InverseFactorial(kSeriesTerms + p);
-  for (int j = kSeriesTerms - 1; j >= 0; --j) top = x * top + InverseFactorial(j + p);
+  T top = InverseFactorial(degree + p);
+  for (int j = degree - 1; j >= 0; --j) top = x * top + InverseFactorial(j + p);
   out[p] = top;
   for (int k = p - 1; k >= 0; --k) out[k] = x * out[k + 1] + InverseFactorial(k);
   // Modified squaring: phi_k(2x) = 2^-k [phi_0(x) phi_k(x) + sum_{j=1..k} phi_j(x) / (k-j)!].
-  C next[kMaxOrder + 1];
+  T next[SpectralPhi::kMaxOrder + 1];
   for (int step = 0; step < s; ++step) {
+    double half_power = 1.0;  // 2^-k
     for (int k = 1; k <= p; ++k) {
-      C sum = out[0] * out[k];
+      half_power *= 0.5;
+      T sum = out[0] * out[k];
       for (int j = 1; j <= k; ++j) sum += InverseFactorial(k - j) * out[j];
-      next[k] = std::ldexp(1.0, -k) * sum;
+      next[k] = half_power * sum;
     }
     next[0] = out[0] * out[0];
     for (int k = 0; k <= p; ++k) out[k] = next[k];
   }
+}
+
+}  // namespace
+
+void SpectralPhi::Scalar(std::complex<double> z, int p, std::complex<double>* out) {
+  if (z.imag() == 0.0) {
+    double real[kMaxOrder + 1];
+    ScalarPhi(z.real(), std::abs(z.real()), p, real);
+    for (int k = 0; k <= p; ++k) out[k] = real[k];
+    return;
+  }
+  ScalarPhi(z, std::abs(z), p, out);
 }
 
 bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
@@ -73,8 +96,7 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
       for (Eigen::Index i = 0; i < size_; ++i) vectors_(i, j) = pseudo(i, j);
     }
   }
-  lu_.compute(vectors_);
-  inverse_ = lu_.inverse();
+  if (!InvertVectors()) return false;
   // The eigenvectors' reciprocal condition number in the 1-norm, and the size of Z: see the
   // header (the eigenvalues' rounding, eps ||Z|| / rcond, must stay small).
   const auto one_norm = [this](const auto& matrix) {
@@ -87,6 +109,70 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   if (!(rcond > kMinReciprocalCondition && norm < kMaxNormOverCondition * rcond)) return false;
   valid_ = inverse_.allFinite();
   return valid_;
+}
+
+bool SpectralPhi::InvertVectors() {
+  const Eigen::Index m = size_;
+  Complex& elimination = scaled_;  // free until Evaluate
+  elimination.resize(m, m);
+  inverse_.resize(m, m);
+  for (Eigen::Index j = 0; j < m; ++j) {
+    for (Eigen::Index i = 0; i < m; ++i) {
+      elimination(i, j) = vectors_(i, j);
+      inverse_(i, j) = i == j ? 1.0 : 0.0;
+    }
+  }
+  for (Eigen::Index k = 0; k < m; ++k) {
+    Eigen::Index pivot = k;
+    for (Eigen::Index i = k + 1; i < m; ++i) {
+      if (std::abs(elimination(i, k)) > std::abs(elimination(pivot, k))) pivot = i;
+    }
+    if (!(std::abs(elimination(pivot, k)) > 0.0)) return false;
+    if (pivot != k) {
+      for (Eigen::Index j = 0; j < m; ++j) {
+        std::swap(elimination(k, j), elimination(pivot, j));
+        std::swap(inverse_(k, j), inverse_(pivot, j));
+      }
+    }
+    const std::complex<double> scale = 1.0 / elimination(k, k);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      elimination(k, j) *= scale;
+      inverse_(k, j) *= scale;
+    }
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const std::complex<double> factor = elimination(i, k);
+      if (i == k || factor == 0.0) continue;
+      for (Eigen::Index j = 0; j < m; ++j) {
+        elimination(i, j) -= factor * elimination(k, j);
+        inverse_(i, j) -= factor * inverse_(k, j);
+      }
+    }
+  }
+  return true;
+}
+
+void SpectralPhi::ToEigenbasis(const Eigen::Ref<const Eigen::VectorXd>& x,
+                               ComplexVector& coordinates) const {
+  const Eigen::Index m = size_;
+  coordinates.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    std::complex<double> sum = 0.0;
+    for (Eigen::Index l = 0; l < x.size() && l < m; ++l) sum += inverse_(i, l) * x[l];
+    coordinates[i] = sum;
+  }
+}
+
+void SpectralPhi::FromEigenbasis(const ComplexVector& coordinates,
+                                 Eigen::Ref<Eigen::VectorXd> x) const {
+  const Eigen::Index m = size_;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    double sum = 0.0;
+    for (Eigen::Index l = 0; l < m; ++l) {
+      sum += vectors_(i, l).real() * coordinates[l].real() -
+             vectors_(i, l).imag() * coordinates[l].imag();
+    }
+    x[i] = sum;
+  }
 }
 
 void SpectralPhi::Evaluate(double theta, int p, std::span<Eigen::MatrixXd> phi) const {

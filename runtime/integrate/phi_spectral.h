@@ -23,7 +23,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <complex>
 #include <span>
 
@@ -50,17 +49,30 @@ class SpectralPhi {
   // phi_0(z) ... phi_p(z) of a complex scalar into out[0..p].
   static void Scalar(std::complex<double> z, int p, std::complex<double>* out);
 
+  // The functions applied to vectors rather than formed as matrices (the exponential method's
+  // dense output: three products per output row, where Evaluate costs (p + 1) m^3): the
+  // eigenvalues of Z, the coordinates W^-1 x of a vector (zero beyond x's size, which may be
+  // below m), and Re(W c) of coordinates c. Require valid().
+  using ComplexVector = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMaxSize, 1>;
+  Eigen::Index size() const { return size_; }
+  const ComplexVector& eigenvalues() const { return values_; }
+  void ToEigenbasis(const Eigen::Ref<const Eigen::VectorXd>& x, ComplexVector& coordinates) const;
+  void FromEigenbasis(const ComplexVector& coordinates, Eigen::Ref<Eigen::VectorXd> x) const;
+
  private:
   using Real = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSize, kMaxSize>;
   using Complex =
       Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxSize, kMaxSize>;
-  using ComplexVector = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMaxSize, 1>;
+
+  // inverse_ = vectors_^-1 by Gauss-Jordan elimination with partial pivoting, in plain loops on
+  // the top-left m x m (Eigen's LU and inverse made four zeroed temporaries of full capacity,
+  // 36 KB each, per decomposition: 90 % of Decompose's instructions). False when singular.
+  bool InvertVectors();
 
   Eigen::EigenSolver<Real> solver_{kMaxSize};
-  Eigen::PartialPivLU<Complex> lu_{kMaxSize};
   Real input_;
   Complex vectors_, inverse_;
-  mutable Complex scaled_;  // W diag(phi_k)
+  mutable Complex scaled_;  // W diag(phi_k); InvertVectors' elimination
   ComplexVector values_;
   mutable Eigen::Matrix<std::complex<double>, kMaxOrder + 1, kMaxSize> functions_;
   Eigen::Index size_ = 0;

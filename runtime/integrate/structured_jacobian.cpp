@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
 namespace sled::runtime {
@@ -95,6 +96,8 @@ void StructuredPhi::Reserve(std::size_t n, std::size_t max_rank) {
   small_.setZero(cols);
   coefficients_.setZero(cols);
   balance_.setOnes(cols);
+  for (auto& nb : dense_nb_) nb.assign(n, 0.0);
+  dense_ready_ = false;
   a_ = nullptr;
 }
 
@@ -106,6 +109,7 @@ void StructuredPhi::Prepare(const StructuredJacobian& a, double h) {
   a_ = &a;
   h_ = h;
   other_tau_ = 0.0;
+  dense_ready_ = false;
   const Eigen::Index r = a.rank();
   has_nilpotent_ = !a.nilpotent.empty();
   basis_ = has_nilpotent_ ? 2 * r : r;
@@ -205,6 +209,76 @@ void StructuredPhi::Accumulate(int k, Fraction fraction, std::span<const double>
     small.noalias() += (tau * tau) * functions[ku + 2].topLeftCorner(basis_, r).lazyProduct(vtnb);
   }
   out_vector.noalias() += scale * (basis_store_.leftCols(basis_) * small);
+}
+
+void StructuredPhi::Dense(double tau, std::span<const double> y0, const DenseVectors& b,
+                          const std::array<double, 3>& scale, std::span<double> out) const {
+  if (a_ == nullptr) throw std::logic_error("StructuredPhi::Dense before Prepare");
+  if (basis_ > 0 && functions_.spectral()) {
+    DenseSpectral(tau, y0, b, scale, out);
+    return;
+  }
+  PrepareOther(tau);
+  std::copy(y0.begin(), y0.end(), out.begin());
+  for (int k = 1; k <= 3; ++k) {
+    const auto j = static_cast<std::size_t>(k - 1);
+    Accumulate(k, Fraction::kOther, b[j], scale[j], out);
+  }
+}
+
+void StructuredPhi::DenseSpectral(double tau, std::span<const double> y0, const DenseVectors& b,
+                                  const std::array<double, 3>& scale, std::span<double> out) const {
+  const StructuredJacobian& a = *a_;
+  const SpectralPhi& spectral = functions_.decomposition();
+  const Eigen::Index r = a.rank();
+  const auto d = balance_.head(r);
+  if (!dense_ready_) {
+    // As Accumulate's coordinates, once per step: W^-1 [D^-1 V^T b; 0] and the same of N b.
+    for (std::size_t j = 0; j < 3; ++j) {
+      auto vtb = vtb_.head(r);
+      vtb.noalias() = a.v().transpose() * AsVector(b[j]);
+      vtb.array() /= d.array();
+      spectral.ToEigenbasis(vtb, dense_vtb_[j]);
+      if (has_nilpotent_) {
+        a.ApplyNilpotent(b[j], dense_nb_[j]);
+        auto vtnb = vtnb_.head(r);
+        vtnb.noalias() = a.v().transpose() * AsVector(std::span<const double>(dense_nb_[j]));
+        vtnb.array() /= d.array();
+        spectral.ToEigenbasis(vtnb, dense_vtnb_[j]);
+      }
+    }
+    dense_ready_ = true;
+  }
+  // The part outside the basis: b_k / k! + tau N b_k / (k+1)!.
+  auto result = AsVector(out);
+  result = AsVector(y0);
+  for (std::size_t j = 0; j < 3; ++j) {
+    const int k = static_cast<int>(j) + 1;
+    result += (scale[j] * InverseFactorial(k)) * AsVector(b[j]);
+    if (has_nilpotent_) {
+      result += (scale[j] * tau * InverseFactorial(k + 1)) *
+                AsVector(std::span<const double>(dense_nb_[j]));
+    }
+  }
+  // The basis part: phi_j(tau H) = W diag(phi_j(theta lambda)) W^-1, theta = tau / h, applied
+  // to the coordinates, summed in the eigenbasis and taken back once.
+  const double theta = tau / h_;
+  const Eigen::Index m = spectral.size();
+  dense_coefficients_.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    std::complex<double> values[kHighest + 1];
+    SpectralPhi::Scalar(theta * spectral.eigenvalues()[i], kHighest, values);
+    std::complex<double> sum = 0.0;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::size_t k = j + 1;
+      sum += (scale[j] * tau) * values[k + 1] * dense_vtb_[j][i];
+      if (has_nilpotent_) sum += (scale[j] * tau * tau) * values[k + 2] * dense_vtnb_[j][i];
+    }
+    dense_coefficients_[i] = sum;
+  }
+  auto small = small_.head(basis_);
+  spectral.FromEigenbasis(dense_coefficients_, small);
+  result.noalias() += basis_store_.leftCols(basis_) * small;
 }
 
 void StructuredShiftedSolver::Reserve(std::size_t n, std::size_t max_rank) {

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <array>
 #include <cmath>
 #include <random>
 #include <span>
@@ -236,6 +237,46 @@ TEST(StructuredPhi, ProductsMatchTheDenseFunctions) {
               << "k " << k << " stiffness " << stiffness << " damping " << damping << " fraction "
               << fraction;
         }
+      }
+    }
+  }
+}
+
+// The dense output's sum y0 + sum_k s_k phi_k(tau A) b_k at several tau of one step, on a step
+// whose h H is decomposed (stiff springs: the eigenbasis path) and one whose is not (soft ones:
+// the functions of tau H), with the b_k changed between two calls as a new step changes them.
+TEST(StructuredPhi, DenseOutputMatchesTheDenseFunctionsOnBothPaths) {
+  StructuredPhi products;
+  products.Reserve(6, 4);
+  std::mt19937 random(5);
+  std::normal_distribution<double> normal;
+  for (const double stiffness : {10.0, 1e6}) {
+    StructuredJacobian a = ThreeMasses(stiffness, 50.0);
+    const double h = 0.01;
+    products.Prepare(a, h);
+    const Eigen::MatrixXd dense = a.Dense();
+    for (int step = 0; step < 2; ++step) {
+      std::vector<Eigen::VectorXd> b(3, Eigen::VectorXd(6));
+      for (auto& vector : b) {
+        for (auto& value : vector) value = normal(random);
+      }
+      Eigen::VectorXd y0(6);
+      for (auto& value : y0) value = normal(random);
+      products.ForgetDense();
+      for (const double theta : {0.1, 0.37, 0.9}) {
+        const double tau = theta * h;
+        const auto reference = ReferencePhi(tau * dense, 3);
+        const std::array<double, 3> scale = {tau, h * theta * theta, h * theta * theta * theta};
+        Eigen::VectorXd expected = y0;
+        for (std::size_t k = 1; k <= 3; ++k) expected += scale[k - 1] * reference[k] * b[k - 1];
+        Eigen::VectorXd out(6);
+        products.Dense(
+            tau, std::span<const double>(y0.data(), 6),
+            {std::span<const double>(b[0].data(), 6), std::span<const double>(b[1].data(), 6),
+             std::span<const double>(b[2].data(), 6)},
+            scale, std::span<double>(out.data(), 6));
+        EXPECT_LT((out - expected).norm(), 1e-12 * expected.norm())
+            << "stiffness " << stiffness << " step " << step << " theta " << theta;
       }
     }
   }
