@@ -181,14 +181,14 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
     const bool load = use == Use::kLoadForce || use == Use::kLoadTorque;
     // An applied load's function may take either sign: it pushes against its direction.
     if (!load) CheckSign(*function, ref, use);
-    const bool factor = !load && use != Use::kContact && use != Use::kBelt &&
-                        use != Use::kJoint && use != Use::kSlip;
+    const bool factor = !load && use != Use::kContact && use != Use::kBelt && use != Use::kJoint &&
+                        use != Use::kSlip;
     std::string name =
         NameOf(function->title, fmt::format("function_{}", function->number), taken_,
-               factor ? "factor"
+               factor                                                                ? "factor"
                : use == Use::kContact || use == Use::kSlip || use == Use::kLoadForce ? "force"
-               : use == Use::kJoint || use == Use::kLoadTorque                     ? "torque"
-                                                                                   : "webbing");
+               : use == Use::kJoint || use == Use::kLoadTorque                       ? "torque"
+                                                                                     : "webbing");
     found = function_names_.emplace(key, name).first;
     uses_.push_back({function, use, name, *unloading});
   }
