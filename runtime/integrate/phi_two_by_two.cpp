@@ -29,6 +29,14 @@ Element Multiply(const Element& x, const Element& y, double delta) {
 
 void TwoByTwoPhi(const Eigen::Ref<const Eigen::MatrixXd>& z, double theta, int p,
                  std::span<Eigen::MatrixXd> phi) {
+  Eigen::Matrix2d functions[PhiFunctions::kMaxOrder + 1];
+  TwoByTwoPhi(Eigen::Matrix2d(z.topLeftCorner(2, 2)), theta, p, functions);
+  for (int k = 0; k <= p; ++k) {
+    phi[static_cast<std::size_t>(k)].topLeftCorner(2, 2) = functions[k];
+  }
+}
+
+void TwoByTwoPhi(const Eigen::Matrix2d& z, double theta, int p, Eigen::Matrix2d* phi) {
   const double mu = 0.5 * (z(0, 0) + z(1, 1));
   const double half_difference = 0.5 * (z(0, 0) - z(1, 1));
   // N = Z - mu I = [[half_difference, z01], [z10, -half_difference]]: N^2 = delta I exactly.
@@ -79,7 +87,7 @@ void TwoByTwoPhi(const Eigen::Ref<const Eigen::MatrixXd>& z, double theta, int p
     std::copy(next, next + p + 1, out);
   }
   for (int k = 0; k <= p; ++k) {
-    auto f = phi[static_cast<std::size_t>(k)].topLeftCorner(2, 2);
+    Eigen::Matrix2d& f = phi[k];
     const Element& e = out[k];
     f(0, 0) = e.a + e.b * half_difference;
     f(0, 1) = e.b * z(0, 1);

@@ -23,4 +23,8 @@ namespace sled::runtime {
 void TwoByTwoPhi(const Eigen::Ref<const Eigen::MatrixXd>& z, double theta, int p,
                  std::span<Eigen::MatrixXd> phi);
 
+// The same as 2 x 2 matrices on the stack (phi_k(theta Z) = phi[k]), for a block of a larger
+// decomposition (phi_spectral.h).
+void TwoByTwoPhi(const Eigen::Matrix2d& z, double theta, int p, Eigen::Matrix2d* phi);
+
 }  // namespace sled::runtime

@@ -183,6 +183,48 @@ TEST(PhiFunctions, NearlyDefectiveTwoByTwoMatchesTheReference) {
   }
 }
 
+TEST(PhiFunctions, CoincidingPairsAreBlockedInTheDecomposition) {
+  // Z = S diag(J, D, d) S^-1: J a critically damped oscillator's Jordan block (double eigenvalue
+  // l, one eigenvector), D a double eigenvalue with two eigenvectors, d two lone decays. The
+  // eigenvectors of J and D are (nearly) parallel or arbitrary; the decomposition keeps both as
+  // 2 x 2 blocks and stays on the spectral path, to the reference's accuracy.
+  std::mt19937 random(3);
+  std::normal_distribution<double> normal;
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6), scaled(6);
+  for (const double rate : {0.8, 4.0, 60.0}) {
+    Eigen::MatrixXd d = Eigen::MatrixXd::Zero(6, 6);
+    const double l = -rate;
+    d.block(0, 0, 2, 2) << 2.0 * l, -l * l, 1.0, 0.0;
+    d(2, 2) = d(3, 3) = 0.05 * rate;
+    d(4, 4) = -0.3 * rate;
+    d(5, 5) = -2.5 * rate;
+    Eigen::MatrixXd s(6, 6);
+    for (Eigen::Index i = 0; i < s.size(); ++i) s.data()[i] = normal(random);
+    s.diagonal().array() += 4.0;  // well-conditioned
+    const Eigen::MatrixXd z = s * d * s.inverse();
+    functions.Compute(z, 5, phi, half);
+    EXPECT_TRUE(functions.spectral()) << rate;
+    EXPECT_EQ(functions.decomposition().blocks(), 2) << rate;
+    const auto reference = ReferencePhi(z, 5);
+    const auto reference_half = ReferencePhi(0.5 * z, 5);
+    for (std::size_t k = 0; k <= 5; ++k) {
+      EXPECT_LT(RelativeDifference(phi[k].topLeftCorner(6, 6), reference[k]), 1e-11)
+          << "rate " << rate << " k " << k;
+      EXPECT_LT(RelativeDifference(half[k].topLeftCorner(6, 6), reference_half[k]), 1e-11)
+          << "rate " << rate << " k " << k << " (half)";
+    }
+    for (const double theta : {0.9, 0.37}) {
+      functions.ComputeScaled(theta, 5, scaled);
+      const auto reference_theta = ReferencePhi(theta * z, 5);
+      for (std::size_t k = 0; k <= 5; ++k) {
+        EXPECT_LT(RelativeDifference(scaled[k].topLeftCorner(6, 6), reference_theta[k]), 1e-11)
+            << "rate " << rate << " theta " << theta << " k " << k;
+      }
+    }
+  }
+}
+
 TEST(PhiFunctions, MatchesEigensExponentialOfTheAugmentedMatrix) {
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
@@ -321,13 +363,34 @@ TEST(StructuredPhi, ProductsMatchTheDenseFunctions) {
 // The dense output's sum y0 + sum_k s_k phi_k(tau A) b_k at several tau of one step, on a step
 // whose h H is decomposed (stiff springs: the eigenbasis path) and one whose is not (soft ones:
 // the functions of tau H), with the b_k changed between two calls as a new step changes them.
+// One mass on a spring per axis, as `step_1000g`'s rider: critically damped along x (k, c =
+// 2 sqrt(k)), and the same weak overdamped spring along y and z (double eigenvalues with two
+// eigenvectors each): H's eigen-decomposition keeps three 2 x 2 blocks.
+StructuredJacobian CriticalSpring(double stiffness) {
+  StructuredJacobian a;
+  a.Reserve(6, 4);
+  for (std::size_t i = 0; i < 3; ++i) a.nilpotent.push_back({i, i + 3, 1.0});
+  for (int axis = 0; axis < 3; ++axis) {
+    const double k = axis == 0 ? stiffness : 0.01 * stiffness;
+    const double c = axis == 0 ? 2.0 * std::sqrt(stiffness) : 0.5 * std::sqrt(stiffness);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(6);
+    u[3 + axis] = 1.0;
+    v[axis] = -k;
+    v[3 + axis] = -c;
+    a.AddColumns(u, v);
+  }
+  return a;
+}
+
 TEST(StructuredPhi, DenseOutputMatchesTheDenseFunctionsOnBothPaths) {
   StructuredPhi products;
   products.Reserve(6, 4);
   std::mt19937 random(5);
   std::normal_distribution<double> normal;
-  for (const double stiffness : {10.0, 1e6}) {
-    StructuredJacobian a = ThreeMasses(stiffness, 50.0);
+  for (const double stiffness : {10.0, 1e6, -1e5}) {
+    // -1e5: CriticalSpring(1e5), not ThreeMasses.
+    StructuredJacobian a = stiffness > 0.0 ? ThreeMasses(stiffness, 50.0) : CriticalSpring(1e5);
     const double h = 0.01;
     products.Prepare(a, h);
     const Eigen::MatrixXd dense = a.Dense();
