@@ -65,6 +65,7 @@ void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
     base_.resize(capacity, capacity);
     theta_z_.resize(capacity, capacity);
   }
+  spectral_.Reserve(capacity);
 }
 
 void PhiFunctions::SizeOutputs(Eigen::Index m, int p, std::span<Eigen::MatrixXd> phi,

@@ -94,7 +94,7 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   // capacity, zeroed.
   const Real& pseudo = solver_.pseudoEigenvectors();
   values_ = solver_.eigenvalues();
-  vectors_.resize(size_, size_);
+  Reserve(size_);
   for (Eigen::Index j = 0; j < size_; ++j) {
     if (values_[j].imag() != 0.0 && j + 1 < size_) {
       for (Eigen::Index i = 0; i < size_; ++i) {
@@ -118,8 +118,15 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
     if (!BlockClosestPair()) return false;
     inverted = true;
   }
-  valid_ = inverse_.allFinite();
+  valid_ = inverse_.topLeftCorner(size_, size_).allFinite();
   return valid_;
+}
+
+void SpectralPhi::Reserve(Eigen::Index capacity) {
+  if (vectors_.rows() >= capacity) return;
+  vectors_.resize(capacity, capacity);
+  inverse_.resize(capacity, capacity);
+  scaled_.resize(capacity, capacity);
 }
 
 double SpectralPhi::ReciprocalCondition() const {
@@ -202,8 +209,6 @@ bool SpectralPhi::BlockClosestPair() {
 bool SpectralPhi::InvertVectors() {
   const Eigen::Index m = size_;
   Complex& elimination = scaled_;  // free until Evaluate
-  elimination.resize(m, m);
-  inverse_.resize(m, m);
   for (Eigen::Index j = 0; j < m; ++j) {
     for (Eigen::Index i = 0; i < m; ++i) {
       elimination(i, j) = vectors_(i, j);
@@ -299,11 +304,10 @@ void SpectralPhi::Evaluate(double theta, int p, std::span<Eigen::MatrixXd> phi) 
   PrepareFunctions(theta, p);
   // Re(W diag(f) W^-1) by plain loops: Eigen's expressions on these fixed-capacity complex
   // matrices made temporaries of full capacity, each zeroed (std::complex's constructor).
-  scaled_.resize(m, m);
   for (int k = 0; k <= p; ++k) {
     for (Eigen::Index l = 0; l < m; ++l) {
       if (in_block_[static_cast<std::size_t>(l)]) continue;
-      scaled_.col(l) = vectors_.col(l) * functions_(k, l);
+      scaled_.col(l).head(m) = vectors_.col(l).head(m) * functions_(k, l);
     }
     for (int j = 0; j < block_count_; ++j) {
       // W's pair of columns times phi_k(theta B).
