@@ -145,7 +145,7 @@ double SpectralPhi::ReciprocalCondition() const {
 bool SpectralPhi::BlockClosestPair() {
   const Eigen::Index m = size_;
   // A 2 x 2 Z has its own closed form (phi_functions.h).
-  if (m < 3 || 2 * (block_count_ + 1) > m) return false;
+  if (m < 3 || 2 * static_cast<Eigen::Index>(block_count_ + 1) > m) return false;
   Eigen::Index first = -1, second = -1;
   double closest = std::numeric_limits<double>::infinity();
   for (Eigen::Index i = 0; i < m; ++i) {
