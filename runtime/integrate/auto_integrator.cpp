@@ -7,6 +7,8 @@
 
 namespace sled::runtime {
 
+AutoIntegrator::AutoIntegrator() = default;
+
 void AutoIntegrator::Reset(OdeSystem& system, double t0, std::span<const double> y0,
                            const IntegratorOptions& options) {
   system_ = &system;

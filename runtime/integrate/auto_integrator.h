@@ -56,6 +56,10 @@ class AutoIntegrator final : public Integrator {
   static constexpr double kStiffRatio = 2.0;
   static constexpr long kMaxExplicitSteps = 640;
 
+  // User-provided (defined out of line), as ExponentialRungeKutta's: no zeroing of the whole
+  // object by std::make_unique.
+  AutoIntegrator();
+
   std::string_view name() const override { return "auto"; }
   int order() const override { return active().order(); }
   void Reset(OdeSystem& system, double t0, std::span<const double> y0,

@@ -7,6 +7,8 @@
 
 namespace sled::runtime {
 
+ExponentialRungeKutta::ExponentialRungeKutta() = default;
+
 using Fraction = StructuredPhi::Fraction;
 
 void ExponentialRungeKutta::ResizeWorkspace(std::size_t size) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "runtime/integrate/phi_two_by_two.h"
+
 namespace sled::runtime {
 namespace {
 
@@ -63,6 +65,7 @@ void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
     base_.resize(capacity, capacity);
     theta_z_.resize(capacity, capacity);
   }
+  spectral_.Reserve(capacity);
 }
 
 void PhiFunctions::SizeOutputs(Eigen::Index m, int p, std::span<Eigen::MatrixXd> phi,
@@ -96,6 +99,11 @@ void PhiFunctions::Compute(const Eigen::Ref<const Eigen::MatrixXd>& z, int p,
   if (m == 0) return;
   base_norm_ = OneNorm(z);
   spectral_.Forget();
+  if (m == 2) {
+    TwoByTwoPhi(z, 1.0, p, phi);
+    if (!half.empty()) TwoByTwoPhi(z, 0.5, p, half);
+    return;
+  }
   if (base_norm_ > kSpectralNorm && spectral_.Decompose(z)) {
     spectral_.Evaluate(1.0, p, phi);
     if (!half.empty()) spectral_.Evaluate(0.5, p, half);
@@ -108,6 +116,10 @@ void PhiFunctions::ComputeScaled(double theta, int p, std::span<Eigen::MatrixXd>
   const Eigen::Index m = base_size_;
   SizeOutputs(m, p, phi, {});
   if (m == 0) return;
+  if (m == 2) {
+    TwoByTwoPhi(base_.topLeftCorner(2, 2), theta, p, phi);
+    return;
+  }
   if (spectral_.valid() && theta * base_norm_ > kSpectralScaledNorm) {
     spectral_.Evaluate(theta, p, phi);
     return;

@@ -16,7 +16,9 @@
 // the cost is (d + p + s (p + 1)) products of m x m matrices. A diagonalizable Z with
 // well-conditioned eigenvectors takes a cheaper path instead (phi_spectral.h): the scalar
 // functions of its eigenvalues, (p + 1) complex products of m x m matrices whatever ||Z||, and
-// ComputeScaled gives the functions of theta Z for any theta from the same decomposition.
+// ComputeScaled gives the functions of theta Z for any theta from the same decomposition. A
+// 2 x 2 Z (one stiff term with its rate) takes neither: its functions have a closed form in
+// the two scalars of a I + b (Z - mu I), defective or not (phi_two_by_two.h).
 #pragma once
 
 #include <Eigen/Core>
@@ -56,6 +58,8 @@ class PhiFunctions {
   // The number of squarings of the last Compute (for tests and statistics; 0 on the spectral
   // path).
   int squarings() const { return squarings_; }
+  // Whether the last Compute took the 2 x 2 closed form (phi_two_by_two.h).
+  bool closed_form() const { return base_size_ == 2; }
   // Whether the last Compute took the spectral path.
   bool spectral() const { return spectral_.valid(); }
   // That path's eigen-decomposition of Z (valid only when spectral()).

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "runtime/integrate/phi_functions.h"
+#include "runtime/integrate/phi_two_by_two.h"
 
 namespace sled::runtime {
 namespace {
@@ -18,6 +20,12 @@ constexpr double kRecurrenceNorm = 2.0 * (SpectralPhi::kMaxOrder + 2);
 constexpr double kSeriesNorm = 0.5;
 constexpr int kSeriesTerms = 22;
 constexpr double kTruncation = 1e-17;
+
+double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
+  double norm = 0.0;
+  for (Eigen::Index j = 0; j < z.cols(); ++j) norm = std::max(norm, z.col(j).cwiseAbs().sum());
+  return norm;
+}
 
 // phi_0(z) ... phi_p(z) for T = double or std::complex<double>, |z| = norm: a real eigenvalue
 // (a decay) costs a quarter of the complex arithmetic.
@@ -74,6 +82,8 @@ void SpectralPhi::Scalar(std::complex<double> z, int p, std::complex<double>* ou
 
 bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   valid_ = false;
+  block_count_ = 0;
+  in_block_.fill(false);
   size_ = z.rows();
   if (size_ == 0 || size_ > kMaxSize || z.cols() != size_ || !z.allFinite()) return false;
   input_ = z;
@@ -84,7 +94,7 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   // capacity, zeroed.
   const Real& pseudo = solver_.pseudoEigenvectors();
   values_ = solver_.eigenvalues();
-  vectors_.resize(size_, size_);
+  Reserve(size_);
   for (Eigen::Index j = 0; j < size_; ++j) {
     if (values_[j].imag() != 0.0 && j + 1 < size_) {
       for (Eigen::Index i = 0; i < size_; ++i) {
@@ -96,26 +106,109 @@ bool SpectralPhi::Decompose(const Eigen::Ref<const Eigen::MatrixXd>& z) {
       for (Eigen::Index i = 0; i < size_; ++i) vectors_(i, j) = pseudo(i, j);
     }
   }
-  if (!InvertVectors()) return false;
-  // The eigenvectors' reciprocal condition number in the 1-norm, and the size of Z: see the
-  // header (the eigenvalues' rounding, eps ||Z|| / rcond, must stay small).
-  const auto one_norm = [this](const auto& matrix) {
-    double norm = 0.0;
-    for (Eigen::Index j = 0; j < size_; ++j) norm = std::max(norm, matrix.col(j).cwiseAbs().sum());
-    return norm;
+  // The eigenvectors' reciprocal condition number, and the size of Z: see the header (the
+  // eigenvalues' rounding, eps ||Z|| / rcond, must stay small).
+  const double norm = OneNorm(z);
+  const auto acceptable = [this, norm] {
+    const double rcond = ReciprocalCondition();
+    return rcond > kMinReciprocalCondition && norm < kMaxNormOverCondition * rcond;
   };
-  const double rcond = 1.0 / (one_norm(vectors_) * one_norm(inverse_));
-  const double norm = one_norm(z);
-  if (!(rcond > kMinReciprocalCondition && norm < kMaxNormOverCondition * rcond)) return false;
-  valid_ = inverse_.allFinite();
+  bool inverted = InvertVectors();
+  while (!(inverted && acceptable())) {
+    if (!BlockClosestPair()) return false;
+    inverted = true;
+  }
+  valid_ = inverse_.topLeftCorner(size_, size_).allFinite();
   return valid_;
+}
+
+void SpectralPhi::Reserve(Eigen::Index capacity) {
+  if (vectors_.rows() >= capacity) return;
+  vectors_.resize(capacity, capacity);
+  inverse_.resize(capacity, capacity);
+  scaled_.resize(capacity, capacity);
+}
+
+double SpectralPhi::ReciprocalCondition() const {
+  const auto one_norm = [this](const Complex& matrix) {
+    double result = 0.0;
+    for (Eigen::Index j = 0; j < size_; ++j) {
+      double column = 0.0;
+      for (Eigen::Index i = 0; i < size_; ++i) column += std::abs(matrix(i, j));
+      result = std::max(result, column);
+    }
+    return result;
+  };
+  return 1.0 / (one_norm(vectors_) * one_norm(inverse_));
+}
+
+bool SpectralPhi::BlockClosestPair() {
+  const Eigen::Index m = size_;
+  // A 2 x 2 Z has its own closed form (phi_functions.h).
+  if (m < 3 || 2 * static_cast<Eigen::Index>(block_count_ + 1) > m) return false;
+  Eigen::Index first = -1, second = -1;
+  double closest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < m; ++i) {
+    if (in_block_[static_cast<std::size_t>(i)]) continue;
+    for (Eigen::Index j = i + 1; j < m; ++j) {
+      if (in_block_[static_cast<std::size_t>(j)]) continue;
+      const bool real_pair = values_[i].imag() == 0.0 && values_[j].imag() == 0.0;
+      if (!real_pair && values_[i] != std::conj(values_[j])) continue;
+      const double distance = std::abs(values_[i] - values_[j]);
+      if (distance < closest) {
+        closest = distance;
+        first = i;
+        second = j;
+      }
+    }
+  }
+  if (first < 0) return false;
+  // The pair's invariant subspace: the null space of P = (Z - l1 I)(Z - l2 I), a real matrix,
+  // which is the orthogonal complement of P^T's range: the last two columns of the Q of P^T's
+  // QR decomposition with column pivoting.
+  const double sum = (values_[first] + values_[second]).real();
+  const double product = (values_[first] * values_[second]).real();
+  work_.noalias() = input_ * input_;
+  work_ -= sum * input_;
+  work_.diagonal().array() += product;
+  null_space_.compute(work_.transpose());
+  work_ = null_space_.householderQ();
+  for (Eigen::Index i = 0; i < m; ++i) {
+    vectors_(i, first) = work_(i, m - 2);
+    vectors_(i, second) = work_(i, m - 1);
+  }
+  if (!InvertVectors()) return false;
+  // B = the rows of W^-1 for the pair times Z [q1, q2], and the residual Z q - [q1, q2] B,
+  // which is rounding only when the subspace is invariant.
+  Block& block = blocks_[static_cast<std::size_t>(block_count_)];
+  double residual = 0.0;
+  Eigen::Matrix<double, Eigen::Dynamic, 2, 0, kMaxSize, 2> zq(m, 2);
+  zq.col(0).noalias() = input_ * work_.col(m - 2);
+  zq.col(1).noalias() = input_ * work_.col(m - 1);
+  for (int c = 0; c < 2; ++c) {
+    for (int r = 0; r < 2; ++r) {
+      std::complex<double> entry = 0.0;
+      const Eigen::Index row = r == 0 ? first : second;
+      for (Eigen::Index l = 0; l < m; ++l) entry += inverse_(row, l) * zq(l, c);
+      block.b(r, c) = entry.real();
+    }
+    for (Eigen::Index l = 0; l < m; ++l) {
+      const double fitted = work_(l, m - 2) * block.b(0, c) + work_(l, m - 1) * block.b(1, c);
+      residual = std::max(residual, std::abs(zq(l, c) - fitted));
+    }
+  }
+  if (!(residual <= kBlockResidual * OneNorm(input_))) return false;
+  block.first = first;
+  block.second = second;
+  in_block_[static_cast<std::size_t>(first)] = true;
+  in_block_[static_cast<std::size_t>(second)] = true;
+  ++block_count_;
+  return true;
 }
 
 bool SpectralPhi::InvertVectors() {
   const Eigen::Index m = size_;
   Complex& elimination = scaled_;  // free until Evaluate
-  elimination.resize(m, m);
-  inverse_.resize(m, m);
   for (Eigen::Index j = 0; j < m; ++j) {
     for (Eigen::Index i = 0; i < m; ++i) {
       elimination(i, j) = vectors_(i, j);
@@ -175,21 +268,57 @@ void SpectralPhi::FromEigenbasis(const ComplexVector& coordinates,
   }
 }
 
+void SpectralPhi::PrepareFunctions(double theta, int p) const {
+  for (Eigen::Index i = 0; i < size_; ++i) {
+    if (in_block_[static_cast<std::size_t>(i)]) continue;
+    std::complex<double> values[kMaxOrder + 1];
+    Scalar(theta * values_[i], p, values);
+    for (int k = 0; k <= p; ++k) functions_(k, i) = values[k];
+  }
+  for (int j = 0; j < block_count_; ++j) {
+    Block& block = blocks_[static_cast<std::size_t>(j)];
+    TwoByTwoPhi(block.b, theta, p, block.functions);
+  }
+}
+
+void SpectralPhi::ApplyFunction(int k, double weight, const ComplexVector& coordinates,
+                                ComplexVector& out) const {
+  for (Eigen::Index i = 0; i < size_; ++i) {
+    if (in_block_[static_cast<std::size_t>(i)]) continue;
+    out[i] += weight * functions_(k, i) * coordinates[i];
+  }
+  for (int j = 0; j < block_count_; ++j) {
+    const Block& block = blocks_[static_cast<std::size_t>(j)];
+    const Eigen::Matrix2d& f = block.functions[k];
+    const std::complex<double> a = coordinates[block.first], b = coordinates[block.second];
+    out[block.first] += weight * (f(0, 0) * a + f(0, 1) * b);
+    out[block.second] += weight * (f(1, 0) * a + f(1, 1) * b);
+  }
+}
+
 void SpectralPhi::Evaluate(double theta, int p, std::span<Eigen::MatrixXd> phi) const {
   if (!valid_ || p < 0 || p > kMaxOrder || phi.size() <= static_cast<std::size_t>(p)) {
     throw std::logic_error("SpectralPhi::Evaluate: Decompose first; 0 <= p <= kMaxOrder");
   }
   const Eigen::Index m = size_;
-  for (Eigen::Index i = 0; i < m; ++i) {
-    std::complex<double> values[kMaxOrder + 1];
-    Scalar(theta * values_[i], p, values);
-    for (int k = 0; k <= p; ++k) functions_(k, i) = values[k];
-  }
+  PrepareFunctions(theta, p);
   // Re(W diag(f) W^-1) by plain loops: Eigen's expressions on these fixed-capacity complex
   // matrices made temporaries of full capacity, each zeroed (std::complex's constructor).
-  scaled_.resize(m, m);
   for (int k = 0; k <= p; ++k) {
-    for (Eigen::Index l = 0; l < m; ++l) scaled_.col(l) = vectors_.col(l) * functions_(k, l);
+    for (Eigen::Index l = 0; l < m; ++l) {
+      if (in_block_[static_cast<std::size_t>(l)]) continue;
+      scaled_.col(l).head(m) = vectors_.col(l).head(m) * functions_(k, l);
+    }
+    for (int j = 0; j < block_count_; ++j) {
+      // W's pair of columns times phi_k(theta B).
+      const Block& block = blocks_[static_cast<std::size_t>(j)];
+      const Eigen::Matrix2d& f = block.functions[k];
+      for (Eigen::Index i = 0; i < m; ++i) {
+        const std::complex<double> a = vectors_(i, block.first), b = vectors_(i, block.second);
+        scaled_(i, block.first) = a * f(0, 0) + b * f(1, 0);
+        scaled_(i, block.second) = a * f(0, 1) + b * f(1, 1);
+      }
+    }
     auto out = phi[static_cast<std::size_t>(k)].topLeftCorner(m, m);
     for (Eigen::Index j = 0; j < m; ++j) {
       for (Eigen::Index i = 0; i < m; ++i) {

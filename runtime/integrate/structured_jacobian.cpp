@@ -263,18 +263,14 @@ void StructuredPhi::DenseSpectral(double tau, std::span<const double> y0, const 
   // The basis part: phi_j(tau H) = W diag(phi_j(theta lambda)) W^-1, theta = tau / h, applied
   // to the coordinates, summed in the eigenbasis and taken back once.
   const double theta = tau / h_;
-  const Eigen::Index m = spectral.size();
-  dense_coefficients_.resize(m);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    std::complex<double> values[kHighest + 1];
-    SpectralPhi::Scalar(theta * spectral.eigenvalues()[i], kHighest, values);
-    std::complex<double> sum = 0.0;
-    for (std::size_t j = 0; j < 3; ++j) {
-      const std::size_t k = j + 1;
-      sum += (scale[j] * tau) * values[k + 1] * dense_vtb_[j][i];
-      if (has_nilpotent_) sum += (scale[j] * tau * tau) * values[k + 2] * dense_vtnb_[j][i];
+  dense_coefficients_.setZero(spectral.size());
+  spectral.PrepareFunctions(theta, kHighest);
+  for (std::size_t j = 0; j < 3; ++j) {
+    const int k = static_cast<int>(j) + 1;
+    spectral.ApplyFunction(k + 1, scale[j] * tau, dense_vtb_[j], dense_coefficients_);
+    if (has_nilpotent_) {
+      spectral.ApplyFunction(k + 2, scale[j] * tau * tau, dense_vtnb_[j], dense_coefficients_);
     }
-    dense_coefficients_[i] = sum;
   }
   auto small = small_.head(basis_);
   spectral.FromEigenbasis(dense_coefficients_, small);

@@ -114,6 +114,117 @@ TEST(PhiFunctions, JordanBlockGivesTheDerivative) {
   }
 }
 
+TEST(PhiFunctions, DefectiveTwoByTwoMatchesTheJordanClosedForm) {
+  // A critically damped oscillator x'' = -c x' - k x with c^2 = 4k, times a step h: Z = h
+  // [[-c, -k], [1, 0]] has the double eigenvalue l = -h c/2 and one eigenvector: Z = S J S^-1
+  // with J = [[l, 1], [0, l]], so phi_k(theta Z) = S [[phi_k(theta l), theta phi_k'(theta l)],
+  // [0, phi_k(theta l)]] S^-1 with phi_k' = phi_k - k phi_{k+1}. From a rate of 1e-3 to 1e4
+  // (`step_1000g`'s steps have h c/2 = 4 to 100), and at thetas of the dense output.
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6), scaled(6);
+  for (const double rate : {1e-3, 0.7, 4.1, 100.6, 1e4}) {
+    for (const double theta : {1.0, 0.5, 0.37}) {
+      // Z = [[2l, -l^2], [1, 0]] (h = 1, c = -2l); S's columns are the Jordan chain (l, 1),
+      // (1, 0): Z S = S J.
+      const double l = -rate;
+      Eigen::Matrix2d z;
+      z << 2.0 * l, -l * l, 1.0, 0.0;
+      Eigen::Matrix2d chain;
+      chain << l, 1.0, 1.0, 0.0;
+      functions.Compute(z, 5, phi, half);
+      EXPECT_TRUE(functions.closed_form());
+      functions.ComputeScaled(theta, 5, scaled);
+      const double tl = theta * l;
+      for (int k = 0; k <= 4; ++k) {
+        // phi_k(theta Z) = chain [[phi_k(tl), theta phi_k'(tl)], [0, phi_k(tl)]] chain^-1.
+        const auto value = static_cast<double>(ScalarPhi(k, tl));
+        const auto derivative = static_cast<double>(ScalarPhi(k, tl) - k * ScalarPhi(k + 1, tl));
+        Eigen::Matrix2d jordan;
+        jordan << value, theta * derivative, 0.0, value;
+        const Eigen::Matrix2d exact = chain * jordan * chain.inverse();
+        const auto& f = scaled[static_cast<std::size_t>(k)];
+        EXPECT_LE((f.topLeftCorner(2, 2) - exact).norm(), 1e-13 * exact.norm())
+            << "rate " << rate << " theta " << theta << " k " << k;
+      }
+    }
+  }
+}
+
+TEST(PhiFunctions, NearlyDefectiveTwoByTwoMatchesTheReference) {
+  // Damping a hair off critical (the split of the double eigenvalue, sqrt(c^2/4 - k), from 1e-8
+  // of the rate up, both sides), a stiff decay beside a slow mode, and a random 2 x 2: against
+  // the long double exponential of the augmented matrix. (The decay takes 15 squarings, each
+  // adding a rounding: 6e-13 there, below 1e-13 elsewhere.)
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6);
+  std::vector<Eigen::Matrix2d> cases;
+  for (const double split : {0.0, 1e-16, -1e-16, 1e-8, -1e-8, 1e-3, -1e-3, 0.3}) {
+    const double c = 10.0;
+    Eigen::Matrix2d z;
+    z << -c, -(c * c / 4.0) * (1.0 - split), 1.0, 0.0;
+    cases.push_back(z);
+  }
+  Eigen::Matrix2d decay;
+  decay << -1e4, 0.0, 3.0, -1e-3;
+  cases.push_back(decay);
+  Eigen::Matrix2d random;
+  random << 0.3, -2.0, 1.7, -5.0;
+  cases.push_back(random);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    functions.Compute(cases[c], 5, phi, half);
+    const auto reference = ReferencePhi(cases[c], 5);
+    const auto reference_half = ReferencePhi(0.5 * cases[c], 5);
+    for (std::size_t k = 0; k <= 5; ++k) {
+      EXPECT_LT(RelativeDifference(phi[k].topLeftCorner(2, 2), reference[k]), 1e-12)
+          << "case " << c << " k " << k;
+      EXPECT_LT(RelativeDifference(half[k].topLeftCorner(2, 2), reference_half[k]), 1e-12)
+          << "case " << c << " k " << k << " (half)";
+    }
+  }
+}
+
+TEST(PhiFunctions, CoincidingPairsAreBlockedInTheDecomposition) {
+  // Z = S diag(J, D, d) S^-1: J a critically damped oscillator's Jordan block (double eigenvalue
+  // l, one eigenvector), D a double eigenvalue with two eigenvectors, d two lone decays. The
+  // eigenvectors of J and D are (nearly) parallel or arbitrary; the decomposition keeps both as
+  // 2 x 2 blocks and stays on the spectral path, to the reference's accuracy.
+  std::mt19937 random(3);
+  std::normal_distribution<double> normal;
+  PhiFunctions functions;
+  std::vector<Eigen::MatrixXd> phi(6), half(6), scaled(6);
+  for (const double rate : {0.8, 4.0, 60.0}) {
+    Eigen::MatrixXd d = Eigen::MatrixXd::Zero(6, 6);
+    const double l = -rate;
+    d.block(0, 0, 2, 2) << 2.0 * l, -l * l, 1.0, 0.0;
+    d(2, 2) = d(3, 3) = 0.05 * rate;
+    d(4, 4) = -0.3 * rate;
+    d(5, 5) = -2.5 * rate;
+    Eigen::MatrixXd s(6, 6);
+    for (Eigen::Index i = 0; i < s.size(); ++i) s.data()[i] = normal(random);
+    s.diagonal().array() += 4.0;  // well-conditioned
+    const Eigen::MatrixXd z = s * d * s.inverse();
+    functions.Compute(z, 5, phi, half);
+    EXPECT_TRUE(functions.spectral()) << rate;
+    EXPECT_EQ(functions.decomposition().blocks(), 2) << rate;
+    const auto reference = ReferencePhi(z, 5);
+    const auto reference_half = ReferencePhi(0.5 * z, 5);
+    for (std::size_t k = 0; k <= 5; ++k) {
+      EXPECT_LT(RelativeDifference(phi[k].topLeftCorner(6, 6), reference[k]), 1e-11)
+          << "rate " << rate << " k " << k;
+      EXPECT_LT(RelativeDifference(half[k].topLeftCorner(6, 6), reference_half[k]), 1e-11)
+          << "rate " << rate << " k " << k << " (half)";
+    }
+    for (const double theta : {0.9, 0.37}) {
+      functions.ComputeScaled(theta, 5, scaled);
+      const auto reference_theta = ReferencePhi(theta * z, 5);
+      for (std::size_t k = 0; k <= 5; ++k) {
+        EXPECT_LT(RelativeDifference(scaled[k].topLeftCorner(6, 6), reference_theta[k]), 1e-11)
+            << "rate " << rate << " theta " << theta << " k " << k;
+      }
+    }
+  }
+}
+
 TEST(PhiFunctions, MatchesEigensExponentialOfTheAugmentedMatrix) {
   std::mt19937 random(7);
   std::normal_distribution<double> normal;
@@ -140,18 +251,19 @@ TEST(PhiFunctions, MatchesEigensExponentialOfTheAugmentedMatrix) {
 
 TEST(PhiFunctions, ScaledFunctionsMatchTheReferenceOnBothPaths) {
   // ComputeScaled gives phi_k(theta Z) for the last Compute's Z: from its eigen-decomposition
-  // when Z is diagonalizable (a damped oscillator's H, balanced, and random matrices), by
-  // squaring theta Z when it is not (a Jordan block: the spectral path must refuse it).
+  // when Z is diagonalizable (random matrices), by squaring theta Z when it is not (a 4 x 4
+  // Jordan block: the spectral path must refuse it), and a 2 x 2 Z (a damped oscillator's H,
+  // a Jordan block) by the closed form of phi_two_by_two.h.
   std::mt19937 random(11);
   std::normal_distribution<double> normal;
   std::vector<Eigen::MatrixXd> cases;
   // Whether the spectral path must be taken (1), refused (0), or may be either (-1: a wide
-  // random spectrum, where it depends on the eigenvectors' condition).
+  // random spectrum, where it depends on the eigenvectors' condition); 2: the 2 x 2 closed form.
   std::vector<int> spectral;
   Eigen::Matrix2d oscillator;
   oscillator << -1e4, -2.5e3, 1.0, 0.0;  // c/m = 1e4 1/s, k/m = 2.5e3 1/s^2, times h = 0.15 s
   cases.push_back(0.15 * oscillator);
-  spectral.push_back(1);
+  spectral.push_back(2);
   for (const int m : {3, 8, 20}) {
     const double scale = m == 20 ? 30.0 : 3.0;
     Eigen::MatrixXd z(m, m);
@@ -163,6 +275,11 @@ TEST(PhiFunctions, ScaledFunctionsMatchTheReferenceOnBothPaths) {
   Eigen::Matrix2d jordan;
   jordan << -40.0, 1.0, 0.0, -40.0;
   cases.push_back(jordan);
+  spectral.push_back(2);
+  Eigen::Matrix4d jordan4 = Eigen::Matrix4d::Zero();
+  jordan4.diagonal().setConstant(-40.0);
+  jordan4.diagonal(1).setOnes();
+  cases.push_back(jordan4);
   spectral.push_back(0);
   PhiFunctions functions;
   std::vector<Eigen::MatrixXd> phi(6), scaled(6);
@@ -171,6 +288,7 @@ TEST(PhiFunctions, ScaledFunctionsMatchTheReferenceOnBothPaths) {
     functions.Compute(z, 5, phi);
     if (spectral[c] >= 0) {
       EXPECT_EQ(functions.spectral(), spectral[c] == 1) << "case " << c;
+      EXPECT_EQ(functions.closed_form(), spectral[c] == 2) << "case " << c;
     }
     for (const double theta : {1.0, 0.37, 1e-3}) {
       functions.ComputeScaled(theta, 5, scaled);
@@ -245,13 +363,34 @@ TEST(StructuredPhi, ProductsMatchTheDenseFunctions) {
 // The dense output's sum y0 + sum_k s_k phi_k(tau A) b_k at several tau of one step, on a step
 // whose h H is decomposed (stiff springs: the eigenbasis path) and one whose is not (soft ones:
 // the functions of tau H), with the b_k changed between two calls as a new step changes them.
+// One mass on a spring per axis, as `step_1000g`'s rider: critically damped along x (k, c =
+// 2 sqrt(k)), and the same weak overdamped spring along y and z (double eigenvalues with two
+// eigenvectors each): H's eigen-decomposition keeps three 2 x 2 blocks.
+StructuredJacobian CriticalSpring(double stiffness) {
+  StructuredJacobian a;
+  a.Reserve(6, 4);
+  for (std::size_t i = 0; i < 3; ++i) a.nilpotent.push_back({i, i + 3, 1.0});
+  for (int axis = 0; axis < 3; ++axis) {
+    const double k = axis == 0 ? stiffness : 0.01 * stiffness;
+    const double c = axis == 0 ? 2.0 * std::sqrt(stiffness) : 0.5 * std::sqrt(stiffness);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(6);
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(6);
+    u[3 + axis] = 1.0;
+    v[axis] = -k;
+    v[3 + axis] = -c;
+    a.AddColumns(u, v);
+  }
+  return a;
+}
+
 TEST(StructuredPhi, DenseOutputMatchesTheDenseFunctionsOnBothPaths) {
   StructuredPhi products;
   products.Reserve(6, 4);
   std::mt19937 random(5);
   std::normal_distribution<double> normal;
-  for (const double stiffness : {10.0, 1e6}) {
-    StructuredJacobian a = ThreeMasses(stiffness, 50.0);
+  for (const double stiffness : {10.0, 1e6, -1e5}) {
+    // -1e5: CriticalSpring(1e5), not ThreeMasses.
+    StructuredJacobian a = stiffness > 0.0 ? ThreeMasses(stiffness, 50.0) : CriticalSpring(1e5);
     const double h = 0.01;
     products.Prepare(a, h);
     const Eigen::MatrixXd dense = a.Dense();
