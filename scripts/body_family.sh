@@ -38,18 +38,19 @@ scale --name male50_chest --dummy hybrid3_50m --stature 1753mm --mass 77.99kg --
   --source "segment and joint is male50's." > "$out/male50_chest.sled"
 
 scale --name child6 --stature 45.0in --mass 51.6lb --regression child6 --head-length 6.80in \
+  --child-age 6 \
   --title "a 15-segment 6-year-old child, the Hybrid III 6-year-old's size" \
   --source "Stature 45.0 in (1143 mm), weight 51.6 lb (23.41 kg):" \
   --source "$nhtsa_family" \
   --source "(http://www.nhtsa.gov/Research/ci.HYBRID+III+6-Year+Old+Physical+Data.print)." \
   --source "Head length 6.80 in (173 mm), the same page, sizes the head: a child's head is larger" \
-  --source "for its stature than an adult's, so it is scaled apart. Joint characteristics are" \
-  --source "scaled adult ones; a child's ranges of motion and neck stiffness differ (not modelled)." \
+  --source "for its stature than an adult's, so it is scaled apart." \
   > "$out/child6.sled"
 
 # Jensen's (1989) regressions of the segments' shares on age, at 3 years: one year below their
 # sample, an extrapolation the header states.
 scale --name child3 --stature 37.2in --mass 34.09lb --regression child3 --head-length 181.0mm \
+  --child-age 3 \
   --title "a 15-segment 3-year-old child, the Hybrid III 3-year-old's size" \
   --source "Stature 37.2 in (945 mm) and weight 34.09 lb (15.46 kg; the family table rounds it to" \
   --source "34.1): $nhtsa_family" \
@@ -57,5 +58,4 @@ scale --name child3 --stature 37.2in --mass 34.09lb --regression child3 --head-l
   --source "Head length 181 mm: derived (no published length found) from the 20 in (508 mm) head" \
   --source "circumference Humanetics gives for this dummy, with male50's head ellipse proportions" \
   --source "(its 200 x 156 mm ellipse is 561 mm round; 200 mm x 508 / 561 = 181 mm)." \
-  --source "Joint characteristics are scaled adult ones; a child's differ (not modelled)." \
   > "$out/child3.sled"

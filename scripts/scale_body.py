@@ -13,7 +13,8 @@ length ratio), so that the joint holds up what hangs beyond it at the reference'
 gravity (static similarity), and its viscous damping by M_j * L_j^1.5, which keeps its damping
 ratio (a joint's natural frequency goes as sqrt(torque / inertia), ~ L^-0.5). Angles (ranges of
 motion) are kept. The torque and damping rules are this script's engineering choice, not a
-published law.
+published law. With --child-age the joints follow instead the law the child dummies were scaled
+by (Irwin and Mertz 1997; the neck by Yoganandan et al.'s factors): scripts/child_joint_scaling.py.
 
 Options that bring published data in where a uniform scaling would be wrong:
   --segment-mass GROUP=KG   a published segment (group) mass, both sides together, e.g. a Hybrid
@@ -46,6 +47,9 @@ Bodies from published regression equations instead of uniform scaling:
   triangle inequality; otherwise (and for the children) they follow the segment's mass and
   lengths as without --regression. Centres of mass stay at male50's place along each segment.
 
+  --child-age 3|6           a child's joints: torque tables times lambda_E * lambda_L^3
+                            (lambda_E = 1), the neck's by published factors, damping by the same
+                            law's time scale; angles kept (scripts/child_joint_scaling.py).
   --deflecting-chest        adds a sternum segment in front of the thorax on a slip joint `chest`
                             (x forward) with a force-deflection flexure and viscous damping, so
                             that chest deflection and the Viscous Criterion can be read; its mass
@@ -60,6 +64,7 @@ import sys
 import textwrap
 from pathlib import Path
 
+import child_joint_scaling
 import segment_regressions
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -369,6 +374,9 @@ def main():
                         help="segment masses (and lengths) from published regression equations")
     parser.add_argument("--deflecting-chest", action="store_true",
                         help="a sternum segment on a slip joint in front of the thorax")
+    parser.add_argument("--child-age", type=int, choices=sorted(child_joint_scaling.NECK_MOMENT_FACTORS),
+                        help="scale the joints as a child's of this age (Irwin and Mertz's law; "
+                             "scripts/child_joint_scaling.py) instead of by static similarity")
     parser.add_argument("--dummy", default="human",
                         help="the dummy the body stands for in ISO-MME codes (`dummy = ...` of a "
                              "body in docs/language.md); default human, code 00")
@@ -473,10 +481,22 @@ def main():
         return table[joint_child] + sum(beyond(c, table) for c, (p, _, _) in ref.parent.items()
                                         if p == joint_child)
 
-    def torque_factor(child):
-        return beyond(child, masses) / beyond(child, ref.masses) * length_scale(child)
+    def joint_length(joint, child):
+        """A child joint's length ratio: the neck's for the neck joints, else its segment's."""
+        return length_scale("neck" if joint in child_joint_scaling.NECK_JOINTS else child)
 
-    def viscous_factor(child):
+    def torque_factors(joint, child, role):
+        """The factors of a joint's torque table for positive and for negative angles."""
+        if args.child_age:
+            return child_joint_scaling.joint_factors(args.child_age, joint, role,
+                                                     joint_length(joint, child))
+        factor = beyond(child, masses) / beyond(child, ref.masses) * length_scale(child)
+        return factor, factor
+
+    def viscous_factor(joint, child):
+        if args.child_age:
+            return child_joint_scaling.joint_viscous_factor(args.child_age, joint,
+                                                            joint_length(joint, child))
         return beyond(child, masses) / beyond(child, ref.masses) * length_scale(child) ** 1.5
 
     out = []
@@ -492,6 +512,8 @@ def main():
         command.append(f"--regression {args.regression}")
     if args.deflecting_chest:
         command.append("--deflecting-chest")
+    if args.child_age:
+        command.append(f"--child-age {args.child_age}")
     command.append("--title ... --source ...")
     line = "//  "
     for word in command:
@@ -557,12 +579,17 @@ def main():
                  "across it (male50's radii of gyration, in proportion to the segment's lengths, "
                  "kept).")
     out.extend("// " + line for line in textwrap.wrap(text, 93))
-    out.append("// Each joint's torque tables times M_j * L_j and its viscous damping times M_j * L_j^1.5,")
-    out.append("// M_j the ratio of the mass beyond the joint and L_j the child segment's length ratio:")
-    out.append("// they keep male50's joint angles under gravity and its damping ratios (an engineering")
-    out.append("// estimate, not measured). Ranges of motion are male50's (adult) ones. Standing height")
-    out.append(f"// from this file's geometry: {fmt(achieved, 5)} mm. What male50's header calls an estimate")
-    out.append("// is one here too.")
+    if args.child_age:
+        out.extend("// " + line for line in child_joint_scaling.header(args.child_age))
+        out.append(f"// Standing height from this file's geometry: {fmt(achieved, 5)} mm. What male50's header")
+        out.append("// calls an estimate is one here too.")
+    else:
+        out.append("// Each joint's torque tables times M_j * L_j and its viscous damping times M_j * L_j^1.5,")
+        out.append("// M_j the ratio of the mass beyond the joint and L_j the child segment's length ratio:")
+        out.append("// they keep male50's joint angles under gravity and its damping ratios (an engineering")
+        out.append("// estimate, not measured). Ranges of motion are male50's (adult) ones. Standing height")
+        out.append(f"// from this file's geometry: {fmt(achieved, 5)} mm. What male50's header calls an estimate")
+        out.append("// is one here too.")
     if args.deflecting_chest:
         out.append("//")
         out.extend(f"// {line}" for line in CHEST_NOTES)
@@ -573,16 +600,17 @@ def main():
     # The joints each torque function serves. male50 shares functions between joints (the two
     # sides; the two neck joints); a function whose joints scale apart is written once per scale,
     # named after the first joint of each (`neck_nutation_neck_lower`).
-    uses = {}  # function -> [(joint, child)]
+    uses = {}  # function -> [(joint, child, role)]
     for j in re.finditer(r"joint (\w+) : \w+\(\w+ -> (\w+)\) \{([^}]*)\}", ref.text):
-        for f in re.finditer(r"(?:flexure|twist|precession|nutation|spin) = (\w+)", j.group(3)):
-            uses.setdefault(f.group(1), []).append((j.group(1), j.group(2)))
-    copies = {}  # function -> [(new name, factor)]
+        for f in re.finditer(r"(flexure|twist|precession|nutation|spin) = (\w+)", j.group(3)):
+            uses.setdefault(f.group(2), []).append((j.group(1), j.group(2), f.group(1)))
+    copies = {}  # function -> [(new name, (factor of positive angles, of negative ones))]
     renamed = {}  # (joint, function) -> new name
     for function, joints in uses.items():
         by_factor = {}
-        for joint, child in joints:
-            by_factor.setdefault(round(torque_factor(child), 12), []).append(joint)
+        for joint, child, role in joints:
+            factors = tuple(round(f, 12) for f in torque_factors(joint, child, role))
+            by_factor.setdefault(factors, []).append(joint)
         single = len(by_factor) == 1
         copies[function] = []
         for factor, group in by_factor.items():
@@ -635,7 +663,7 @@ def main():
             m = re.search(r"viscous = (" + NUMBER + r") N\*m\*s/rad", new)
             if m:
                 new = new.replace(m.group(0), f"viscous = "
-                                  f"{fmt(float(m.group(1)) * viscous_factor(joint_child), 3)} N*m*s/rad")
+                                  f"{fmt(float(m.group(1)) * viscous_factor(joint, joint_child), 3)} N*m*s/rad")
             yield new
 
     lines = list(scaled_body_lines())
@@ -650,10 +678,11 @@ def main():
         end = i
         while lines[end].strip() != "}":
             end += 1
-        for name, factor in copies.get(m.group(2), [(m.group(2), 1.0)]):
+        for name, (positive, negative) in copies.get(m.group(2), [(m.group(2), (1.0, 1.0))]):
             out.append(lines[i].replace(f"function {m.group(2)} ", f"function {name} "))
             for row in lines[i + 1:end + 1]:
                 r = re.match(r"(\s*)(" + NUMBER + r") deg -> (" + NUMBER + r") N\*m$", row)
+                factor = negative if r and float(r.group(2)) < 0 else positive
                 out.append(f"{r.group(1)}{r.group(2)} deg -> {fmt(float(r.group(3)) * factor, 3)} N*m"
                            if r else row)
         i = end + 1

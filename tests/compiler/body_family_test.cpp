@@ -363,6 +363,74 @@ TEST(BodyFamily, TheRegressionBodiesCarryThePublishedMomentsOfInertia) {
   EXPECT_GT(SegmentNamed(female05.scenario, "upper_leg_l").inertia[0], 1.5 * thigh);
 }
 
+// The children's joints (scripts/child_joint_scaling.py): Irwin and Mertz's (1997) scaling of the
+// child dummies' responses, moment lambda_M = lambda_E lambda_L^3 at the same angle, with
+// lambda_E = 1 but at the neck, whose moment factors are Yoganandan et al.'s published ones
+// (flexion 0.18 and 0.24, extension 0.19 and 0.25 at 3 and 6 years; lateral bending and axial
+// rotation their mean); viscous damping lambda_M lambda_t with lambda_t = lambda_L /
+// sqrt(lambda_E), lambda_E = lambda_M / lambda_L^3, i.e. sqrt(lambda_M lambda_L^5). lambda_L is
+// the child's length ratio, read here from its hip-to-ankle length against male50's. Every table
+// keeps male50's angles (the law keeps angles), and so do the stops. The tolerance: the files'
+// three digits (0.5 %) and lambda_L^3 from lengths written to 0.1 mm (0.15 %).
+TEST(BodyFamily, TheChildrensJointsFollowIrwinAndMertzsScalingAndThePublishedNeckFactors) {
+  struct Child {
+    std::string name;
+    double flexion, extension;  // Yoganandan et al.: the neck's moment scale factors
+  };
+  const Checked male50 = CheckBody("male50", Stdlib());
+  ASSERT_EQ(male50.errors, 0) << male50.messages;
+  // Hip to knee to ankle along the leg, all joint angles zero.
+  auto leg = [](const CheckedScenario& s) {
+    return JointNamed(s, "occupant.hip_l").location_in_child[2] -
+           JointNamed(s, "occupant.knee_l").location_in_parent[2] +
+           JointNamed(s, "occupant.knee_l").location_in_child[2] -
+           JointNamed(s, "occupant.ankle_l").location_in_parent[2];
+  };
+  const double leg50 = leg(male50.scenario);
+  constexpr double kTolerance = 6.5e-3;
+  for (const Child& child : {Child{"child6", 0.24, 0.25}, Child{"child3", 0.18, 0.19}}) {
+    const Checked body = CheckBody(child.name, Stdlib());
+    ASSERT_EQ(body.errors, 0) << body.messages;
+    const double length = leg(body.scenario) / leg50;
+    int tables = 0;
+    for (const Joint& reference : male50.scenario.joints) {
+      SCOPED_TRACE(child.name + " " + reference.name);
+      const Joint& joint = JointNamed(body.scenario, reference.name);
+      const bool neck = reference.name.find("neck") != std::string::npos;
+      const double bending = (child.flexion + child.extension) / 2;
+      const double moment = neck ? bending : length * length * length;
+      EXPECT_NEAR(joint.viscous, reference.viscous * std::sqrt(moment * std::pow(length, 5)),
+                  kTolerance * joint.viscous);
+      EXPECT_EQ(joint.stop, reference.stop);
+      EXPECT_EQ(joint.twist_stop, reference.twist_stop);
+      const std::vector<std::pair<FunctionId, FunctionId>> roles = {
+          {reference.flexure, joint.flexure},
+          {reference.twist, joint.twist},
+          {reference.precession, joint.precession},
+          {reference.nutation, joint.nutation},
+          {reference.spin, joint.spin}};
+      for (const auto& [adult_id, child_id] : roles) {
+        ASSERT_EQ(adult_id < 0, child_id < 0);
+        if (adult_id < 0) continue;
+        const bool nutation = adult_id == reference.nutation;
+        const auto& adult = male50.scenario.functions[static_cast<std::size_t>(adult_id)].points;
+        const auto& scaled = body.scenario.functions[static_cast<std::size_t>(child_id)].points;
+        ASSERT_EQ(adult.size(), scaled.size());
+        for (std::size_t k = 0; k < adult.size(); ++k) {
+          EXPECT_DOUBLE_EQ(scaled[k][0], adult[k][0]);
+          double factor = moment;
+          if (neck && nutation) factor = adult[k][0] > 0 ? child.flexion : child.extension;
+          EXPECT_NEAR(scaled[k][1], adult[k][1] * factor,
+                      kTolerance * std::abs(adult[k][1] * factor))
+              << "row " << k;
+        }
+        ++tables;
+      }
+    }
+    EXPECT_EQ(tables, 25);
+  }
+}
+
 // std.postures.walking: with straight legs 15 degrees either side of the vertical, the H-point is
 // (hip-to-ankle length) cos 15 deg + ankle height above the soles, 895.6 mm for male50 and that
 // times the length ratio for child6. There both feet touch the road; 2 mm lower both are 2 mm
