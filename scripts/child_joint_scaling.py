@@ -1,9 +1,10 @@
 """How scripts/scale_body.py scales male50's joint characteristics to a child (--child-age).
 
 The law is the dimensional analysis that the child dummies' response requirements were scaled by
-(Irwin and Mertz, "Biomechanical basis for the CRABI and Hybrid III child dummies", SAE 973317,
-1997, after Mertz et al. 1989): with a length ratio lambda_L and an elastic-modulus ratio
-lambda_E (child over adult; densities equal), stresses go as lambda_E at equal strains, so
+(Irwin and Mertz 1997, "Biomechanical basis for the CRABI and Hybrid III child dummies"; the
+adult sizes were scaled the same way by Mertz, Irwin and Melvin, SAE 890756, 1989): with a length
+ratio lambda_L and an elastic-modulus ratio lambda_E (child over adult; densities equal), stresses
+go as lambda_E at equal strains, so
 
     moment       lambda_M = lambda_E * lambda_L^3      (at the same angle: angles are strains)
     time         lambda_t = lambda_L * sqrt(1 / lambda_E)

@@ -374,7 +374,8 @@ def main():
                         help="segment masses (and lengths) from published regression equations")
     parser.add_argument("--deflecting-chest", action="store_true",
                         help="a sternum segment on a slip joint in front of the thorax")
-    parser.add_argument("--child-age", type=int, choices=sorted(child_joint_scaling.NECK_MOMENT_FACTORS),
+    parser.add_argument("--child-age", type=int,
+                        choices=sorted(child_joint_scaling.NECK_MOMENT_FACTORS),
                         help="scale the joints as a child's of this age (Irwin and Mertz's law; "
                              "scripts/child_joint_scaling.py) instead of by static similarity")
     parser.add_argument("--dummy", default="human",
