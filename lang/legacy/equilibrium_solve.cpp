@@ -1,7 +1,8 @@
-// ATB's EQUILB for G.5 position variables, solved at conversion (see equilibrium_solve.h).
+// ATB's EQUILB for G.5 variables with given forces, solved at conversion (equilibrium_solve.h).
 #include "lang/legacy/equilibrium_solve.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -12,6 +13,9 @@
 
 namespace sled::lang::legacy {
 namespace {
+
+constexpr int kNewtonIterations = 50;
+constexpr std::size_t kMaxVariables = 10;  // NVAR (INPUT_EQUILB)
 
 Vec3 Plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
 Vec3 Minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -82,9 +86,13 @@ class EquilibriumSolver {
       if (!depth) return;
       sought.push_back(*depth);
     }
-    const std::optional<std::vector<double>> moves = Moves(sought);
-    if (!moves) return;
-    ApplyMoves(*moves);
+    const std::optional<std::vector<double>> moves = Newton(sought);
+    if (!moves) {
+      Set(std::vector<double>(variables_.size(), 0.0));
+      return;
+    }
+    Set(*moves);
+    Note(*moves);
     for (const EquilibriumVariable& variable : variables_) CheckClearOfEdges(variable);
   }
 
@@ -126,18 +134,12 @@ class EquilibriumSolver {
   }
 
   bool CheckVariable(const EquilibriumVariable& v) {
-    if (v.kind != 1) {
-      f_.Refuse(v.card, 1, 4,
-                fmt::format("NTV is {}: a yaw, pitch or roll that EQUILB turns", v.kind),
-                "the conversion solves position variables (NTV 1) only; turn the segment by "
-                "hand on its G.3.a card and drop this G.5 card");
-      return false;
-    }
     bool ok = true;
     if (!IsReference(v.segment)) {
       f_.Refuse(v.card, 9, 12,
                 fmt::format("NSGE is segment {}, which hangs from a joint", v.segment),
-                "a G.2 position is a reference segment's; move the body's reference segment");
+                "the conversion moves and turns reference segments only (a jointed segment's "
+                "pose follows its joints); name the body's reference segment");
       ok = false;
     }
     if (!IsReference(v.contact_segment)) {
@@ -149,8 +151,20 @@ class EquilibriumSolver {
     }
     for (std::size_t i = 0; i < v.moved_along.size(); ++i) {
       const int moved = v.moved_along[i];
-      if (IsReference(moved) || Root(moved) == Root(v.segment)) continue;
       const int at = 41 + 4 * static_cast<int>(i);
+      // A turn moves a segment's G.3.a angles from the ground (jointed segments not listed keep
+      // theirs, as in ATB: the joint angles follow from them).
+      if (v.kind == 2 && !TurnsFromGround(moved)) {
+        f_.Refuse(v.card, at, at + 3,
+                  fmt::format("KSGE is segment {}, whose G.3.a angles are not from the ground "
+                              "(ID4 not 0)",
+                              moved),
+                  "EQUILB turns the angles as given; give the segment's G.3.a angles from the "
+                  "ground (ID4 = 0)");
+        ok = false;
+        continue;
+      }
+      if (v.kind == 2 || IsReference(moved) || Root(moved) == Root(v.segment)) continue;
       f_.Refuse(v.card, at, at + 3,
                 fmt::format("KSGE is segment {}, which hangs from a joint of another body", moved),
                 "name the reference segment of that body: it moves the whole body");
@@ -260,30 +274,70 @@ class EquilibriumSolver {
     return std::nullopt;
   }
 
-  // Solves sum_j (n_k . e_j) dX_j = d0_k - d_k for the moves dX_j along the inertial axes.
-  std::optional<std::vector<double>> Moves(const std::vector<double>& sought) {
-    const std::size_t n = variables_.size();
-    std::vector<std::vector<double>> a(n, std::vector<double>(n + 1, 0.0));
-    for (std::size_t k = 0; k < n; ++k) {
-      const PlaneContactGeometry geometry = Geometry(variables_[k]);
+  // Newton on the penetrations' residuals, a forward-difference Jacobian: the moves of the
+  // variables (a position's along its inertial axis in the deck's length, an angle's in degrees)
+  // from the deck's cards. Positions enter linearly (one step), angles through the ellipsoid's
+  // reach and centre.
+  std::optional<std::vector<double>> Newton(const std::vector<double>& sought) {
+    // NVAR is 1 to 10 (INPUT_EQUILB's STOP 2600, checked by the reader).
+    const std::size_t n = std::min<std::size_t>(variables_.size(), kMaxVariables);
+    double size = 0;
+    for (const EquilibriumVariable& v : variables_) size = std::max(size, Geometry(v).radius);
+    const double tolerance = 1e-12 * size;
+    std::vector<double> x(n, 0.0);
+    for (int iteration = 0; iteration < kNewtonIterations; ++iteration) {
+      const std::vector<double> r = Residuals(x, sought);
+      double largest = 0;
+      for (const double value : r) largest = std::max(largest, std::abs(value));
+      if (largest <= tolerance) return x;
+      std::vector<std::vector<double>> a(n, std::vector<double>(n + 1, 0.0));
       for (std::size_t j = 0; j < n; ++j) {
-        if (!MovesSegment(variables_[j], variables_[k].contact_segment)) continue;
-        a[k][j] = geometry.normal[static_cast<std::size_t>(variables_[j].coordinate) - 1];
+        std::vector<double> shifted = x;
+        const double h = variables_[j].kind == 1 ? 1e-6 * size : 1e-6;
+        shifted[j] += h;
+        const std::vector<double> r_shifted = Residuals(shifted, sought);
+        for (std::size_t k = 0; k < n; ++k) a[k][j] = (r_shifted[k] - r[k]) / h;
       }
-      a[k][n] = geometry.penetration - sought[k];
-    }
-    for (std::size_t c = 0; c < n; ++c) {
-      std::size_t pivot = c;
-      for (std::size_t r = c + 1; r < n; ++r) {
-        if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
-      }
-      if (std::abs(a[pivot][c]) < 1e-9) {
+      for (std::size_t k = 0; k < n; ++k) a[k][n] = -r[k];
+      const std::optional<std::vector<double>> step = Eliminate(a);
+      if (!step) {
         f_.Refuse(g4_, 1, 4,
                   "the G.5 variables do not decide the contact forces: a move along no "
                   "contact's plane normal, or two variables that move one contact alike",
                   "give each contact one variable that moves its segment across its plane");
         return std::nullopt;
       }
+      for (std::size_t j = 0; j < n; ++j) x[j] += (*step)[j];
+    }
+    f_.Refuse(g4_, 1, 4,
+              fmt::format("the solve of the G.5 variables did not converge in {} Newton steps",
+                          kNewtonIterations),
+              "start the segments nearer their equilibrium on the G.2 and G.3.a cards");
+    return std::nullopt;
+  }
+
+  std::vector<double> Residuals(const std::vector<double>& x, const std::vector<double>& sought) {
+    Set(x);
+    std::vector<double> r(variables_.size());
+    for (std::size_t k = 0; k < variables_.size(); ++k) {
+      r[k] = Geometry(variables_[k]).penetration - sought[k];
+    }
+    return r;
+  }
+
+  // Gauss-Jordan with partial pivoting on [A | b]; none when A is singular.
+  static std::optional<std::vector<double>> Eliminate(std::vector<std::vector<double>>& a) {
+    const std::size_t n = a.size();
+    double scale = 0;
+    for (const auto& row : a) {
+      for (std::size_t c = 0; c < n; ++c) scale = std::max(scale, std::abs(row[c]));
+    }
+    for (std::size_t c = 0; c < n; ++c) {
+      std::size_t pivot = c;
+      for (std::size_t r = c + 1; r < n; ++r) {
+        if (std::abs(a[r][c]) > std::abs(a[pivot][c])) pivot = r;
+      }
+      if (!(std::abs(a[pivot][c]) > 1e-9 * scale)) return std::nullopt;
       std::swap(a[c], a[pivot]);
       for (std::size_t r = 0; r < n; ++r) {
         if (r == c) continue;
@@ -291,16 +345,27 @@ class EquilibriumSolver {
         for (std::size_t k = c; k <= n; ++k) a[r][k] -= factor * a[c][k];
       }
     }
-    std::vector<double> moves(n);
-    for (std::size_t c = 0; c < n; ++c) moves[c] = a[c][n] / a[c][c];
-    return moves;
+    std::vector<double> x(n);
+    for (std::size_t c = 0; c < n; ++c) x[c] = a[c][n] / a[c][c];
+    return x;
   }
 
-  void ApplyMoves(const std::vector<double>& moves) {
+  // The deck's G.2 positions and G.3.a angles as read, moved by `x`.
+  void Set(const std::vector<double>& x) {
+    deck_.initial_positions = positions_;
+    deck_.initial_orientations = orientations_;
     for (std::size_t j = 0; j < variables_.size(); ++j) {
       const EquilibriumVariable& v = variables_[j];
+      const auto axis = static_cast<std::size_t>(v.coordinate) - 1;
+      if (v.kind == 2) {
+        for (std::size_t s = 0; s < deck_.initial_orientations.size(); ++s) {
+          if (MovesSegment(v, static_cast<int>(s) + 1))
+            deck_.initial_orientations[s].angles[axis] += x[j];
+        }
+        continue;
+      }
       Vec3 move{};
-      move[static_cast<std::size_t>(v.coordinate) - 1] = moves[j];
+      move[axis] = x[j];
       for (InitialCard& initial : deck_.initial_positions) {
         if (!MovesSegment(v, initial.segment)) continue;
         // A G.2 position given in a vehicle's axes (IREF4) moves by the move in those axes.
@@ -312,11 +377,26 @@ class EquilibriumSolver {
                                  .orientation)),
                          move);
         initial.position = Plus(initial.position, in_card);
+      }
+    }
+  }
+
+  // A comment on each moved reference segment's `initial`: what moved, by how much, and why.
+  void Note(const std::vector<double>& x) {
+    for (std::size_t j = 0; j < variables_.size(); ++j) {
+      const EquilibriumVariable& v = variables_[j];
+      const std::string what =
+          v.kind == 1 ? fmt::format("moved {:.9g} {} along the inertial {}", x[j],
+                                    deck_.units.length, "xyz"[v.coordinate - 1])
+                      : fmt::format("turned its G.3.a {} by {:.9g} deg",
+                                    std::array{"yaw", "pitch", "roll"}[v.coordinate - 1], x[j]);
+      for (InitialCard& initial : deck_.initial_positions) {
+        if (initial.segment != v.segment) continue;
         initial.equilibrium_note += fmt::format(
-            " G.1.a I1 = 15 (EQUILB): moved {:.9g} {} along the inertial {} so that segment "
-            "{}'s contact force on plane {} is GX = {} {} (G.5, line {})",
-            moves[j], deck_.units.length, "xyz"[v.coordinate - 1], v.contact_segment, v.plane,
-            v.force, deck_.units.force, v.card.line);
+            " G.1.a I1 = 15 (EQUILB): {} so that segment {}'s contact force on plane {} is GX = "
+            "{} {} (G.5, line {}{})",
+            what, v.contact_segment, v.plane, v.force, deck_.units.force, v.card.line,
+            v.moved_along.empty() ? "" : "; its KSGE segments moved along");
       }
     }
   }
@@ -402,6 +482,12 @@ class EquilibriumSolver {
 
   bool IsReference(int segment) const { return Root(segment) == segment; }
 
+  bool TurnsFromGround(int segment) const {
+    const auto s = static_cast<std::size_t>(segment) - 1;
+    return s < deck_.initial_orientations.size() &&
+           deck_.initial_orientations[s].reference == OrientationCard::Reference::kGround;
+  }
+
   // The reference segment of `segment`'s body: up the joints to one that starts a body.
   int Root(int segment) const {
     for (int guard = 0; segment > 1 && guard <= static_cast<int>(deck_.joints.size()); ++guard) {
@@ -418,6 +504,9 @@ class EquilibriumSolver {
   const Card& g4_;
   const std::vector<EquilibriumVariable>& variables_;
   Pose vehicle_;
+  // The G.2 and G.3.a cards as read: every trial of the solve starts from them.
+  std::vector<InitialCard> positions_ = deck_.initial_positions;
+  std::vector<OrientationCard> orientations_ = deck_.initial_orientations;
 };
 
 }  // namespace

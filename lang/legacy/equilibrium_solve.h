@@ -1,9 +1,10 @@
 // ATB's equilibrium solve (G.1.a I1 = 15, EQUILB) computed at conversion for the cases it can
 // be computed exactly: G.5 variables that move reference segments along the inertial axes
-// (NTV 1) until each named segment's contact force on its plane is the given GX. The force of a
-// plane contact at rest is its loading function of the ellipsoid's penetration, which is linear
-// in the moves, so the converter solves the penetrations F(d) = GX and then the moves, and writes
-// the moved G.2 positions; the run starts from them as ATB's does after EQUILB.
+// (NTV 1) or turn segments' G.3.a angles (NTV 2) until each named segment's contact force on
+// its plane is the given GX. The force of a plane contact at rest is its loading function of the
+// ellipsoid's penetration, so the converter finds the penetrations F(d) = GX, solves the
+// variables for them by Newton, and writes the moved G.2 positions and G.3.a angles; the run
+// starts from them as ATB's does after EQUILB.
 #pragma once
 
 #include <vector>
@@ -24,10 +25,10 @@ struct EquilibriumVariable {
   std::vector<int> moved_along;  // KSGE
 };
 
-// Moves the G.2 positions of `fields.deck()` as EQUILB would, or refuses (E0507) at the G.1.a
+// Moves the G.2 positions and G.3.a angles of `fields.deck()` as EQUILB would, or refuses (E0507) at the G.1.a
 // I1 columns, the G.4 NCON columns or the G.5 field what the conversion cannot reproduce: G.6
-// constraints, orientation variables, a contact segment that hangs from a joint, and the values
-// EQUILB rewrites besides the positions (locked joints' unlock torques, fixed-point constraints).
+// constraints, a contact segment that hangs from a joint, and the values EQUILB rewrites besides
+// the positions (locked joints' unlock torques, fixed-point constraints).
 void SolveEquilibrium(DeckFields& fields, const Card& g1, const Card& g4, int constraints,
                       const std::vector<EquilibriumVariable>& variables);
 

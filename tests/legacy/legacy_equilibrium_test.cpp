@@ -63,6 +63,33 @@ TEST(LegacyEquilibrium, TheSolvedBlockStartsWithItsWeightOnTheFloorAndStaysThere
   }
 }
 
+// NTV 2: the block's sphere 10 in along its x from its centre of gravity, pitched (G.3.a,
+// about y) until the floor's force is its weight. Pitching by a turns the sphere's centre to
+// z = 10 in - 10 in sin(a) (the G.2 z is 10 in), so d = z - 15 in = -5 in - 10 in sin(a) and
+// a = asin(-(5 in + d) / 10 in), d the penetration of 100 lb (the corpus deck's).
+TEST(LegacyEquilibrium, APitchVariableTurnsTheSegmentUntilItsForceIsGx) {
+  std::vector<std::string> lines = CorpusDeck();
+  const std::size_t blok = LineStarting(lines, "BLOK");
+  lines[blok - 1].replace(48, 6, "   10.");
+  const std::size_t g5 = LineStarting(lines, "   1   3   1");
+  lines[g5 - 1] = "   2   2   1    100.      1.   1   1   0";
+  const Converted converted = ConvertText(Join(lines), {}, "deck.ain");
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  EXPECT_NE(converted.text.find("turned its G.3.a pitch by"), std::string::npos) << converted.text;
+  Compilation compiled = Compile(Source::Text(converted.text, "pitch.sled"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Render() << converted.text;
+  const runtime::Model& model = compiled.model();
+  const double d = (-500 + std::sqrt(650000.0)) / 2000;
+  const double pitch = std::asin(-(5 + d) / 10);
+  const auto q = static_cast<std::size_t>(model.q_address.at(0));
+  EXPECT_NEAR(model.q0.at(q + 3), std::cos(pitch / 2), 1e-9);  // (w, x, y, z)
+  EXPECT_NEAR(model.q0.at(q + 5), std::sin(pitch / 2), 1e-9);
+  FloorSink sink;
+  Simulate(model, {}, {&sink});
+  ASSERT_FALSE(sink.force.empty());
+  EXPECT_NEAR(sink.force.front(), 100 * kPound, 1e-9 * 100 * kPound);
+}
+
 // The corpus deck with `erase` cards from `line` (found by its start) replaced by `cards`.
 Converted WithCard(const std::string& start, const std::vector<std::string>& cards,
                    std::size_t* line, std::ptrdiff_t erase = 1) {
@@ -87,10 +114,10 @@ TEST(LegacyEquilibrium, WhatTheConversionCannotSolveIsRefusedAtItsCard) {
   EXPECT_EQ(constraint.errors, 1) << constraint.All();
   EXPECT_TRUE(constraint.Has(fmt::format("deck.ain:{}:5-8: error[E0507]", line)))
       << constraint.All();
-  // A pitch (NTV 2), which EQUILB turns: refused at NTV.
+  // A pitch (NTV 2) of the centred sphere, which does not change its reach: no solve.
   const Converted turn =
       WithCard("   1   3   1", "   2   2   1    100.      1.   1   1   0", &line);
-  EXPECT_TRUE(turn.Has(fmt::format("deck.ain:{}:1-4: error[E0507]", line))) << turn.All();
+  EXPECT_TRUE(turn.Has("error[E0507]: card G.4")) << turn.All();
   // 2000 lb: past the 1500 lb the function reaches at the end of its first part (|D1| = 1 in).
   const Converted heavy =
       WithCard("   1   3   1", "   1   3   1   2000.      1.   1   1   0", &line);
