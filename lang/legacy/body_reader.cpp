@@ -159,6 +159,7 @@ class BodyReader : public DeckFields {
     joint.name = r_.Text(line1, 1, 4);
     joint.parent = r_.Integer(line1, 7, 10, "JNT, the proximal segment");
     const int jtype = r_.Integer(line1, 11, 14, "JTYPE, the joint type");
+    joint.jtype = jtype;
     joint.at_parent = Triple(line1, 15, 6, "the joint's location in the proximal segment");
     joint.at_child = Triple(line1, 33, 6, "the joint's location in the distal segment");
     const int ieuler = r_.Integer(line1, 51, 54, "IEULER");
@@ -189,15 +190,26 @@ class BodyReader : public DeckFields {
                  "spring, stop, damping and friction as a force against its displacement");
     } else if (jtype == 0) {
       joint.type = JointType::kBall;
+    } else if (jtype == 2 || jtype == -2) {
+      // ATB's unpinned lockable joint: a ball and socket in VISPR (flexure and torsion springs
+      // as JTYPE 0), which UPDATE_JOINTS locks and unlocks by the size of its torque vector,
+      // as sled's lock levels of a ball joint; JTYPE -2 is its locked state.
+      joint.type = JointType::kBall;
+      joint.lockable = true;
+      joint.locked = jtype < 0;
     } else if (jtype == 1 || jtype == -1) {
       // ATB's pinned joint: it turns about HB, the y axis of its joint axes in the proximal
       // segment (OUTPUT_JOINTS, UPDATE_JOINTS, INPUT_ROBOTICS); JTYPE -1 is its locked state.
       joint.type = JointType::kPin;
       joint.locked = jtype < 0;
     } else {
-      Refuse(line1, 11, 14, fmt::format("JTYPE {} is not documented", jtype),
-             "the reference documents JTYPE 0 (ball and socket), 1 and -1 (pin, unlocked and "
-             "locked), 4 (Euler) and |JTYPE| >= 5 (slip); convert this joint by hand");
+      Refuse(line1, 11, 14,
+             fmt::format("JTYPE {}: ATB's globographic joint, a lockable ball whose stop VISPR "
+                         "computes in GLOBAL, a routine the reference does not have",
+                         jtype),
+             "the stop's shape (F.4.b's torque-deflection and Herron functions) is not known; "
+             "give JTYPE 2 (-2 locked), the same joint without the globographic stop, and a "
+             "B.4.a joint-stop angle if it needs a stop");
     }
     SlipLock(joint, line1, jtype, ieuler, tension, compression);
     joint.axes_parent = Triple(line2, 15, 6, "YPR1, the joint axes in the proximal segment");
@@ -376,11 +388,11 @@ class BodyReader : public DeckFields {
   // angular velocity below which an unlocked one locks (ATB's printout: "Max Torque for a Locked
   // Joint", "Min Torque for Unlocked Joint", "Min. Ang. Velocity for Unlocked Joint"). ATB's
   // UPDATE_JOINTS tests them for joints of JTYPE other than 0 and 4: a pin's torque about its
-  // axis against the first (while locked) and the second (while unlocked; the velocity only
-  // without the second), as sled's `unlock_above` and `lock_below` do. Euler joints are tested
+  // axis, a JTYPE 2 ball's torque vector's size, against the first (while locked) and the second
+  // (while unlocked; the velocity only without the second), as sled's `unlock_above` and
+  // `lock_below` do. Euler joints are tested
   // in UPDATE_EULER_JOINTS, which the reference lacks.
-  void LockLevels(JointCard& joint, const Card& card) {
-    const double unlock = r_.Real(card, 19, 24, "the torque that unlocks a locked joint");
+  void LockLevels(JointCard& joint, const Card& card, double unlock) {
     const double lock = r_.Real(card, 25, 30, "the torque below which the joint locks");
     const double rate = r_.Real(card, 49, 54, "the angular velocity below which it locks");
     if (unlock == 0 && lock == 0 && rate == 0) return;
@@ -389,11 +401,16 @@ class BodyReader : public DeckFields {
                     rate, deck_.units.time);
     switch (joint.type) {
       case JointType::kBall:
+        if (joint.lockable) {
+          TorqueLockLevels(joint, card, unlock, lock, rate);
+          return;
+        }
         Ignored(card, 19, 54, what + " of a ball joint (JTYPE 0)",
-                "ATB's UPDATE_JOINTS never locks or unlocks a joint of JTYPE 0; they are left out");
+                "ATB's UPDATE_JOINTS never locks or unlocks a joint of JTYPE 0; they are left out "
+                "(JTYPE 2 is the ball joint it locks)");
         return;
       case JointType::kPin:
-        PinLockLevels(joint, card, unlock, lock, rate);
+        TorqueLockLevels(joint, card, unlock, lock, rate);
         return;
       case JointType::kEuler:
         Refuse(card, 19, 54, what + " of an Euler joint",
@@ -410,7 +427,9 @@ class BodyReader : public DeckFields {
     }
   }
 
-  void PinLockLevels(JointCard& joint, const Card& card, double unlock, double lock, double rate) {
+  // A pin's torque about its axis, a lockable ball's (JTYPE 2) torque vector's size.
+  void TorqueLockLevels(JointCard& joint, const Card& card, double unlock, double lock,
+                        double rate) {
     if (unlock < 0 || lock < 0 || rate < 0) {
       Invalid(card, 19, 54,
               fmt::format("a negative lock level (unlock above {}, lock below {}, rate {})", unlock,
@@ -421,20 +440,20 @@ class BodyReader : public DeckFields {
     }
     if (lock == 0 && rate != 0) {
       Refuse(card, 49, 54,
-             fmt::format("a pin that locks below an angular velocity of {} rad/{}", rate,
+             fmt::format("a joint that locks below an angular velocity of {} rad/{}", rate,
                          deck_.units.time),
              "sled locks a joint when its torque falls below `lock_below` (B.5.a columns "
              "25-30), not by its speed; leave the field 0");
       return;
     }
     if (lock != 0 && rate != 0) {
-      Ignored(card, 49, 54, "the angular velocity below which the pin locks",
+      Ignored(card, 49, 54, "the angular velocity below which the joint locks",
               "ATB tests it only when the torque level (columns 25-30) is 0 (UPDATE_JOINTS); it "
               "is left out");
     }
     if (unlock != 0 && lock > unlock) {
       Refuse(card, 19, 30,
-             fmt::format("a pin that locks below {} but unlocks above {}", lock, unlock),
+             fmt::format("a joint that locks below {} but unlocks above {}", lock, unlock),
              "sled's `lock_below` is at most `unlock_above`, else the joint would lock and "
              "unlock at once");
       return;
@@ -457,7 +476,9 @@ class BodyReader : public DeckFields {
       const double viscous = r_.Real(card, 1, 6, "the viscous coefficient");
       const double coulomb = r_.Real(card, 7, 12, "the Coulomb friction torque");
       const double full = r_.Real(card, 13, 18, "the angular velocity of full Coulomb friction");
-      LockLevels(joint, card);
+      const double unlock = r_.Real(card, 19, 24, "the torque that unlocks a locked joint");
+      if (k == 0) joint.unlock_level = unlock;
+      LockLevels(joint, card, unlock);
       const double restitution = r_.Real(card, 55, 60, "the coefficient of restitution");
       if (joint.parent != 0 && full <= 0 && card.line != 0) {
         Invalid(card, 13, 18,

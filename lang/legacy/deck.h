@@ -77,8 +77,13 @@ struct JointCard {
   // A slip joint with a negative IEULER starts locked (UPDATE_JOINTS) and slides for good once
   // the size of its axial force passes `unlock_above` (COMP_MAX = -TENS_MAX; 0: never).
   // A pin (JTYPE 1) locks when its torque falls below `lock_below`; JTYPE -1 starts locked.
+  // A ball of JTYPE 2 or -2 (`lockable`) does the same with the size of its torque vector; a
+  // ball of JTYPE 0 never locks (UPDATE_JOINTS).
   bool locked = false;
+  bool lockable = false;
   double unlock_above = 0, lock_below = 0;
+  int jtype = 0;            // B.3.a JTYPE as read (EQUILB rewrites VISC(4) of negative ones)
+  double unlock_level = 0;  // B.5.a VISC(4) as read
 };
 
 struct VehicleCard {
@@ -275,6 +280,8 @@ struct InitialCard {
   // G.2 IREF4: the vehicle (0-based, C card order) in whose axes `position` is given, from its
   // C.2.a position; -1: the inertial frame.
   int position_vehicle = -1;
+  // G.1.a I1 = 15: how ATB's equilibrium solve moved `position` (equilibrium_solve.h).
+  std::string equilibrium_note;
 };
 
 // G.3.a: a segment's yaw, pitch and roll (degrees) from the frame ID4 names, and its angular

@@ -539,6 +539,10 @@ void DeckMapper::MapInitial(ast::Block& scenario) {
     } else {
       Add(initial, Attribute("position", Vector(card.position, L)));
     }
+    if (!card.equilibrium_note.empty()) {
+      initial.block->statements.back().leading_comments.push_back(
+          {card.equilibrium_note, {}, false});
+    }
     const bool from_vehicle = deck_.velocities_from_vehicle && !deck_.vehicles.empty();
     const Vec3 velocity = from_vehicle ? VehicleVelocity(deck_.vehicles.back()) : card.velocity;
     if (!IsZero(velocity)) {

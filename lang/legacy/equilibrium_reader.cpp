@@ -1,12 +1,16 @@
 // Cards G.4 to G.6, ATB's equilibrium solve (EQUILB, INPUT_EQUILB): NVAR position variables, each
 // a coordinate of a segment's G.2 position (NTV 1) or G.3 yaw, pitch or roll (NTV 2) with the
 // segments that move with it, adjusted until the contact force of segment JSG on plane JPL is GX;
-// NCON temporary constraints of a segment on a plane whose forces give those GX.
+// NCON temporary constraints of a segment on a plane whose forces give those GX. The solve itself
+// is equilibrium_solve.cpp's.
 #include "lang/legacy/equilibrium_reader.h"
 
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
+
+#include "lang/legacy/equilibrium_solve.h"
 
 namespace sled::lang::legacy {
 namespace {
@@ -23,7 +27,7 @@ class EquilibriumReader {
         segments_(static_cast<int>(fields.deck().segments.size())),
         planes_(static_cast<int>(fields.deck().planes.size())) {}
 
-  void Read() {
+  void Read(const Card& g1) {
     const Card g4 = r_.Next("G.4", {"(2I4)"});
     const int variables = r_.Integer(g4, 1, 4, "NVAR, the number of position variables");
     const int constraints = r_.Integer(g4, 5, 8, "NCON, the number of temporary constraints");
@@ -33,6 +37,7 @@ class EquilibriumReader {
     if (!variables_ok || !constraints_ok) return;
     for (int v = 1; v <= variables && !r_.truncated(); ++v) ReadVariable(v);
     for (int c = 1; c <= constraints && !r_.truncated(); ++c) ReadConstraint(c, variables);
+    if (valid_ && !r_.truncated()) SolveEquilibrium(f_, g1, g4, constraints, variables_);
   }
 
  private:
@@ -42,19 +47,28 @@ class EquilibriumReader {
     const int moved = r_.Integer(card, 37, 40, "NAV, the number of segments moved along");
     const bool moved_ok = InRange(card, 37, 40, moved, 0, kMaxMovedAlong, "NAV", 2602);
     if (moved_ok && moved > 0) r_.Extend(card, moved);
-    InRange(card, 1, 4, r_.Integer(card, 1, 4, "NTV, the variable's kind"), 1, 2, "NTV", 2603);
-    InRange(card, 5, 8, r_.Integer(card, 5, 8, "NI1, the coordinate"), 1, 3, "NI1", 2604);
-    InRange(card, 9, 12, r_.Integer(card, 9, 12, "NSGE, the segment"), 1, segments_, "NSGE", 2605);
-    r_.Real(card, 13, 20, "GX, the contact force sought");
+    EquilibriumVariable variable;
+    variable.card = card;
+    variable.kind = r_.Integer(card, 1, 4, "NTV, the variable's kind");
+    variable.coordinate = r_.Integer(card, 5, 8, "NI1, the coordinate");
+    variable.segment = r_.Integer(card, 9, 12, "NSGE, the segment");
+    variable.force = r_.Real(card, 13, 20, "GX, the contact force sought");
     r_.Real(card, 21, 28, "XDEV, the largest change");
-    InRange(card, 29, 32, r_.Integer(card, 29, 32, "JPL, the plane"), 1, planes_, "JPL", 2606);
-    InRange(card, 33, 36, r_.Integer(card, 33, 36, "JSG, the segment on the plane"), 1, segments_,
-            "JSG", 2607);
+    variable.plane = r_.Integer(card, 29, 32, "JPL, the plane");
+    variable.contact_segment = r_.Integer(card, 33, 36, "JSG, the segment on the plane");
+    InRange(card, 1, 4, variable.kind, 1, 2, "NTV", 2603);
+    InRange(card, 5, 8, variable.coordinate, 1, 3, "NI1", 2604);
+    InRange(card, 9, 12, variable.segment, 1, segments_, "NSGE", 2605);
+    InRange(card, 29, 32, variable.plane, 1, planes_, "JPL", 2606);
+    InRange(card, 33, 36, variable.contact_segment, 1, segments_, "JSG", 2607);
     for (int i = 0; moved_ok && i < moved; ++i) {
       const int at = 41 + 4 * i;
-      InRange(card, at, at + 3, r_.Integer(card, at, at + 3, "KSGE, a segment moved along"), 1,
-              segments_, "KSGE", 2610);
+      const int along = r_.Integer(card, at, at + 3, "KSGE, a segment moved along");
+      InRange(card, at, at + 3, along, 1, segments_, "KSGE", 2610);
+      variable.moved_along.push_back(along);
     }
+    valid_ = valid_ && moved_ok;
+    variables_.push_back(std::move(variable));
   }
 
   // G.6 (4I4): IPL, ISG, LTYPE, INDGX.
@@ -71,6 +85,7 @@ class EquilibriumReader {
   bool InRange(const Card& card, int first, int last, int value, int low, int high,
                std::string_view name, int stop) {
     if (value >= low && value <= high) return true;
+    valid_ = false;
     f_.Invalid(card, first, last, fmt::format("{} is {}", name, value),
                fmt::format("{} is {} to {} (ATB stops otherwise: STOP {} in INPUT_EQUILB)", name,
                            low, high, stop));
@@ -81,10 +96,14 @@ class EquilibriumReader {
   DeckSource& r_;
   int segments_;
   int planes_;
+  bool valid_ = true;  // every count and number in its range: the solve can run
+  std::vector<EquilibriumVariable> variables_;
 };
 
 }  // namespace
 
-void ReadEquilibriumCards(DeckFields& fields) { EquilibriumReader(fields).Read(); }
+void ReadEquilibriumCards(DeckFields& fields, const Card& g1) {
+  EquilibriumReader(fields).Read(g1);
+}
 
 }  // namespace sled::lang::legacy

@@ -25,18 +25,6 @@ class InitialReader : public DeckFields {
     const int i1 = r_.Integer(g1, 31, 34, "I1");
     const int j1 = r_.Integer(g1, 35, 38, "J1");
     const int i3 = r_.Integer(g1, 47, 50, "I3, the velocity source");
-    if (i1 == 15) {
-      Refuse(g1, 31, 34,
-             "I1 = 15 asks for ATB's equilibrium solve (EQUILB): it moves only the G.5 "
-             "coordinates (a segment's position or yaw, pitch or roll, with the segments listed "
-             "beside it) until each named segment's contact force on its plane is GX (or the "
-             "force of a G.6 constraint), and raises the locked joints' torque limits and the "
-             "fixed-point constraints' constants to what it finds",
-             "sled's `settle { duration = ... }` lets the whole body fall under gravity with "
-             "damping until it rests: every coordinate moves and the contact forces at rest are "
-             "the weight carried, not GX, so it is not converted to it; position the body by "
-             "hand or with `settle`, and set I1 to 0 (the G.4 to G.6 cards are then not read)");
-    }
     // I3 = 0: every reference segment moves with the primary vehicle and the G.2 and G.3
     // velocities are not used (INPUT_LINEAR, INPUT_ORIENT); 1: the G cards give them; 2: the G
     // cards where IREF2 is 0, which is every card sled converts (IREF2 is refused).
@@ -114,7 +102,7 @@ class InitialReader : public DeckFields {
       }
       deck_.initial_orientations.push_back(orientation);
     }
-    if (i1 == 15 && !r_.truncated()) ReadEquilibriumCards(*this);
+    if (i1 == 15 && !r_.truncated()) ReadEquilibriumCards(*this, g1);
   }
 
   // G.3.a ID4 (columns 70-72), the frame the yaw, pitch and roll turn from (INPUT_ORIENT,

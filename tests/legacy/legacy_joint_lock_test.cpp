@@ -1,7 +1,8 @@
 // B.3.a IEULER, TENS_MAX and COMP_MAX, and B.5.a's lock levels (VISC(4), VISC(5), VISC(6)), as
 // ATB's UPDATE_JOINTS uses them: a slip joint with a negative IEULER starts locked and slides
 // once its axial force leaves [TENS_MAX, COMP_MAX]; the levels are never tested for a joint of
-// JTYPE 0. Converted on two_segments' HIP joint and compared with the compiled Model.
+// JTYPE 0; JTYPE 2 and -2 are the ball joint they lock. Converted on two_segments' HIP joint
+// and compared with the compiled Model.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -109,6 +110,55 @@ TEST(LegacyJointLock, LockLevelsOfABallJointAreLeftOutAsATBLeavesThem) {
   const Converted refused = slip.Slip("  -1    0.    0.").Convert();
   EXPECT_TRUE(refused.Has(fmt::format("deck.ain:{}:19-54: error[E0507]", slip.b5)))
       << refused.All();
+}
+
+// JTYPE 2 and -2: ATB's unpinned lockable joint (UPDATE_JOINTS: "unpinned", locked at -2),
+// a ball joint that locks and unlocks by the size of its torque vector: sled's ball with
+// `locked` and the B.5.a levels, in lb*in.
+TEST(LegacyJointLock, JtypeMinusTwoIsALockedBallWithB5sLevels) {
+  HipDeck deck;
+  deck.Line(deck.hip).replace(10, 4, "  -2");
+  deck.Line(deck.b5).replace(18, 12, "   50.   10.");
+  const Converted converted = deck.Convert();
+  deck_testing::ExpectLockedWithB5Levels(converted);
+  EXPECT_TRUE(converted.Says(": ball(")) << converted.text;
+  Compilation compiled = Compile(Source::Text(converted.text, "converted.sled"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Render() << converted.text;
+  const runtime::Model& model = compiled.model();
+  const std::size_t lowr = 1;
+  const double lbf_in = 4.4482216152605 * 0.0254;
+  EXPECT_EQ(model.joint_kind.at(lowr), runtime::JointKind::kBall);
+  EXPECT_EQ(model.joint_locked.at(lowr), 7);
+  EXPECT_NEAR(model.joint_unlock_above.at(lowr), 50 * lbf_in, 1e-12);
+  EXPECT_NEAR(model.joint_lock_below.at(lowr), 10 * lbf_in, 1e-12);
+}
+
+TEST(LegacyJointLock, JtypeTwoIsABallThatLocksOnlyWithLevels) {
+  // Without levels it never locks: JTYPE 0's ball, with its flexure and torsion springs.
+  HipDeck plain;
+  plain.Line(plain.hip).replace(10, 4, "   2");
+  const Converted ball = plain.Convert();
+  ASSERT_EQ(ball.errors, 0) << ball.All();
+  EXPECT_NE(ball.text.find(": ball("), std::string::npos) << ball.text;
+  EXPECT_NE(ball.text.find("twist ="), std::string::npos) << ball.text;
+  EXPECT_EQ(ball.text.find("locked"), std::string::npos) << ball.text;
+  EXPECT_EQ(ball.text.find("lock_below"), std::string::npos) << ball.text;
+  // Locking below an angular velocity alone (VISC(6) without VISC(5)): refused, as for a pin.
+  HipDeck by_rate;
+  by_rate.Line(by_rate.hip).replace(10, 4, "   2");
+  by_rate.Line(by_rate.b5).replace(48, 6, "    1.");
+  EXPECT_TRUE(by_rate.Convert().Has(fmt::format("deck.ain:{}:49-54: error[E0507]", by_rate.b5)));
+}
+
+TEST(LegacyJointLock, TheGlobographicJointIsRefusedAtItsType) {
+  for (const char* jtype : {"   3", "  -3"}) {
+    HipDeck deck;
+    deck.Line(deck.hip).replace(10, 4, jtype);
+    const Converted converted = deck.Convert();
+    EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:11-14: error[E0507]", deck.hip)))
+        << converted.All();
+    EXPECT_NE(converted.All().find("GLOBAL"), std::string::npos) << converted.All();
+  }
 }
 
 }  // namespace

@@ -63,10 +63,7 @@ TEST(LegacyPin, ALockedPinTakesB5sLevels) {
   PinDeck deck("  -1");
   deck.Line(deck.b5).replace(18, 12, "   50.   10.");
   const Converted converted = deck.Convert();
-  ASSERT_EQ(converted.errors, 0) << converted.All();
-  EXPECT_NE(converted.text.find("locked = true"), std::string::npos) << converted.text;
-  EXPECT_NE(converted.text.find("unlock_above = 50 lbf*in"), std::string::npos) << converted.text;
-  EXPECT_NE(converted.text.find("lock_below = 10 lbf*in"), std::string::npos) << converted.text;
+  deck_testing::ExpectLockedWithB5Levels(converted);
   Compilation compiled = Compile(Source::Text(converted.text, "converted.sled"));
   ASSERT_TRUE(compiled.ok()) << compiled.Render() << converted.text;
   const runtime::Model& model = compiled.model();

@@ -1,7 +1,7 @@
 // Cards read so that the deck stays aligned: the F.4 globalgraphic-joint cards (their functions
 // act only in a JTYPE 3 joint, which B.3.a refuses: left out with a warning at their line) and
-// the G.4 to G.6 cards of ATB's equilibrium run (refused at G.1.a's I1, with no cascade). What
-// ATB would stop on is an error at its columns.
+// the G.4 to G.6 cards of ATB's equilibrium run (with no cascade). What ATB would stop on is an
+// error at its columns.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -141,9 +141,10 @@ SLED AT 20 MPH
   EXPECT_NE(converted.text.find("segment uppr"), std::string::npos) << converted.text;
 }
 
-// G.1.a I1 = 15: one refusal at I1, the G.4 to G.6 cards read (no error in the H cards after
-// them), and INPUT_EQUILB's checks at their columns.
-TEST(LegacyEquilibrium, TheEquilibriumRunIsRefusedAtI1AndItsCardsAreRead) {
+// G.1.a I1 = 15: the G.4 to G.6 cards read (no error in the H cards after them), INPUT_EQUILB's
+// checks at their columns, and a G.6 constraint (whose force EQUILB takes as GX) refused at
+// NCON; legacy_equilibrium_test.cpp has the solve.
+TEST(LegacyEquilibrium, TheEquilibriumCardsAreReadAndAConstraintIsRefusedAtNcon) {
   auto with_equilibrium = [](const std::vector<std::string>& cards) {
     std::vector<std::string> lines = SeatedOccupant();
     const std::size_t g1 = LineStarting(lines, "# ---- G cards") + 1;
@@ -157,9 +158,9 @@ TEST(LegacyEquilibrium, TheEquilibriumRunIsRefusedAtI1AndItsCardsAreRead) {
   // segment 2 along) and one constraint of segment 1 on plane 1 (LTYPE 3) setting it.
   const auto [refused, g4] = with_equilibrium(
       {"   1   1", "   1   3   1    150.     2.0   1   1   1   2", "   1   1   3   1"});
-  EXPECT_EQ(refused.errors, 1) << refused.All();
-  EXPECT_TRUE(refused.Has(":31-34: error[E0507]: card G.1.a, columns 31-34: I1 = 15"))
+  EXPECT_TRUE(refused.Has(fmt::format("deck.ain:{}:5-8: error[E0507]: card G.4", g4)))
       << refused.All();
+  EXPECT_FALSE(refused.Has("card H.")) << refused.All();
   const auto [bad, line] = with_equilibrium(
       {"  11   6", "   3   1   1    150.     2.0   1   1   0", "   1   1   5   1"});
   EXPECT_TRUE(bad.Has(fmt::format("deck.ain:{}:1-4: error[E0512]: card G.4, columns 1-4", line)))
@@ -168,7 +169,7 @@ TEST(LegacyEquilibrium, TheEquilibriumRunIsRefusedAtI1AndItsCardsAreRead) {
   const Converted bad_cards =
       with_equilibrium({"   1   1", "   3   4   0    150.     2.0   9   1   6", "   1   1   5   2"})
           .first;
-  EXPECT_EQ(bad_cards.errors, 8) << bad_cards.All();  // I1 and the seven G.5 and G.6 fields
+  EXPECT_EQ(bad_cards.errors, 7) << bad_cards.All();  // the seven G.5 and G.6 fields
   for (const char* field : {"1-4: error[E0512]: card G.5", "5-8: error[E0512]: card G.5",
                             "9-12: error[E0512]: card G.5", "29-32: error[E0512]: card G.5",
                             "37-40: error[E0512]: card G.5", "9-12: error[E0512]: card G.6",
@@ -218,7 +219,8 @@ TEST(LegacyReadAndSkip, ListDirectedDecksReadTheSameCards) {
   EXPECT_EQ(global.errors, 0) << global.All();
   EXPECT_TRUE(global.Has(fmt::format("d.lin:{}:", f4a + 1))) << global.All();
   EXPECT_TRUE(global.Has("warning[W0503]: card F.4.b (joint 1, contact 1)")) << global.All();
-  // I1 = 15 with one variable moving segment 2 along and one constraint: only I1's refusal.
+  // I1 = 15 with one variable for segment 2's contact (a jointed segment) and one constraint:
+  // refused at NCON and JSG, the cards read as the .ain deck's.
   const std::size_t g1 = LineStarting(lines, " 0 1  Card G.1.a");
   lines[g1 - 1] = " 15 1  Card G.1.a";
   const std::size_t h = LineStarting(lines, "# ---- H cards");
@@ -227,8 +229,9 @@ TEST(LegacyReadAndSkip, ListDirectedDecksReadTheSameCards) {
   lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(h) - 1, cards.begin(), cards.end());
   const Converted equilibrium =
       deck_testing::ConvertText(Join(lines, lines.size()), options, "d.lin");
-  EXPECT_EQ(equilibrium.errors, 1) << equilibrium.All();
-  EXPECT_TRUE(equilibrium.Has("error[E0507]: card G.1.a, item 1")) << equilibrium.All();
+  EXPECT_EQ(equilibrium.errors, 2) << equilibrium.All();
+  EXPECT_TRUE(equilibrium.Has("error[E0507]: card G.4")) << equilibrium.All();
+  EXPECT_TRUE(equilibrium.Has("error[E0507]: card G.5")) << equilibrium.All();
 }
 
 }  // namespace

@@ -33,7 +33,15 @@ struct Converted {
     for (const auto& d : diagnostics) all += d + "\n";
     return all;
   }
+  bool Says(std::string_view needle) const { return text.find(needle) != std::string::npos; }
 };
+
+// A joint converted locked with B.5.a's levels (VISC(4) 50 lb*in, VISC(5) 10 lb*in).
+inline void ExpectLockedWithB5Levels(const Converted& converted) {
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  for (const char* line : {"locked = true", "unlock_above = 50 lbf*in", "lock_below = 10 lbf*in"})
+    EXPECT_TRUE(converted.Says(line)) << line << "\n" << converted.text;
+}
 
 inline Converted ConvertText(const std::string& text, ConvertOptions options = {},
                              const std::string& name = "deck.ain") {

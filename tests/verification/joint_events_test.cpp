@@ -85,10 +85,11 @@ TEST_P(JointLock, EulerJointLocksAtItsTorqueLevel) {
   EXPECT_EQ(stats.events, 1);
 }
 
-TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
-  // A locked pin joint holds a bar on a vehicle whose acceleration ramps up as a = c t; the
-  // joint carries m l (g + a) about the pin (the bar stands out horizontally, pin axis y), so it
-  // unlocks when m l (g + c t) reaches the unlock level.
+// A locked joint of `kind` holds a bar on a vehicle whose acceleration ramps up as a = c t; the
+// joint carries m l (g + a) about y (the bar stands out horizontally along x, the pin axis y), so
+// it unlocks when m l (g + c t) reaches the unlock level. A pin compares the torque about its
+// axis, a ball the size of its constraint torque vector (ATB's JTYPE -1 and -2): here the same.
+void ExpectUnlockWhereTheTorqueReachesTheLevel(JointKind kind, const std::string& method) {
   runtime::Model model;
   const double m = 2.0, l = 0.5, c = 100.0, level = 30.0;
   model.vehicle_name = {"sled"};
@@ -101,8 +102,8 @@ TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
   model.vehicle_position = {Vec3::Zero()};
   model.vehicle_orientation = {runtime::Mat3::Identity()};
   model.vehicle_velocity = {Vec3::Zero()};
-  runtime::testing::AddSegment(model, "bar", -1, JointKind::kPin, m, Vec3(0.01, 0.01, 0.01),
-                               Vec3::Zero(), Vec3(-l, 0, 0), Vec3::UnitY(),
+  runtime::testing::AddSegment(model, "bar", -1, kind, m, Vec3(0.01, 0.01, 0.01), Vec3::Zero(),
+                               Vec3(-l, 0, 0), Vec3::UnitY(),
                                {runtime::FrameRef::Kind::kVehicle, 0});
   model.joint_locked[0] = 7;
   model.joint_unlock_above[0] = level;
@@ -113,7 +114,7 @@ TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
   runtime::IntegratorStats stats;
   double first_unlocked = -1;
   ASSERT_TRUE(Simulate(
-      model, data, GetParam(), 1e-10, Linspace(0, 0.4, 400),
+      model, data, method, 1e-10, Linspace(0, 0.4, 400),
       [&](const runtime::Data& d) {
         if (first_unlocked < 0 && d.locked[0] == 0) first_unlocked = d.time;
         if (d.time < t_unlock - 1e-3) {
@@ -124,6 +125,14 @@ TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
   ASSERT_GT(first_unlocked, 0);
   EXPECT_NEAR(first_unlocked, t_unlock, 1.0e-3);  // within one output sample
   EXPECT_EQ(stats.events, 1);
+}
+
+TEST_P(JointLock, LockedJointUnlocksAboveItsLevel) {
+  ExpectUnlockWhereTheTorqueReachesTheLevel(JointKind::kPin, GetParam());
+}
+
+TEST_P(JointLock, LockedBallUnlocksWhenItsTorqueVectorReachesTheLevel) {
+  ExpectUnlockWhereTheTorqueReachesTheLevel(JointKind::kBall, GetParam());
 }
 
 class JointTableKink : public ::testing::TestWithParam<std::string> {};
