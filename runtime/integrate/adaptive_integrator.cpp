@@ -160,7 +160,11 @@ std::span<double> AdaptiveIntegrator::mutable_state() {
 }
 
 void AdaptiveIntegrator::FinishPending() {
+  // The state committed: the step's end as the step ended it, before the projection (where the
+  // system was last evaluated, so it need not evaluate it again), or the state an event left.
+  std::span<const double> committed = end_state_;
   if (event_pending_) {
+    committed = y_;
     event_pending_ = false;
     const std::span<const int> crossings = events_.crossings();
     bool state_changed = false;
@@ -177,7 +181,7 @@ void AdaptiveIntegrator::FinishPending() {
   }
   if (commit_pending_) {
     commit_pending_ = false;
-    system_->CommitStep(t_, y_);
+    system_->CommitStep(t_, committed);
   }
 }
 

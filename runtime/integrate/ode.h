@@ -84,9 +84,9 @@ class OdeSystem {
   }
 
   // What the system carries from one accepted step to the next outside the state (a history
-  // that only changes between steps). The integrator calls it with the step's end state when
-  // the next step begins (after the caller has read the step's dense output), and after an
-  // event with the state the event left.
+  // that only changes between steps). The integrator calls it with the step's end state, as the
+  // step ended it before the projection, when the next step begins (after the caller has read
+  // the step's dense output), and after an event with the state the event left.
   virtual void CommitStep(double t, std::span<const double> y) { (void)t, (void)y; }
 
   // Events: the integrator locates each sign change of g_k within a step (to `event_tolerance`

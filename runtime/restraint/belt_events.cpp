@@ -12,11 +12,12 @@
 namespace sled::runtime {
 namespace {
 
-// The time step of the central differences [s]: small next to any belt's time scale, large
-// enough that the rounding of the positions (1e-16 m) stays below 1e-9 of a rate.
+// The time step of the geometry's central differences [s]: small next to any belt's time
+// scale, large enough that the rounding of the positions (1e-16 m) stays below 1e-9 of a rate.
 constexpr double kRateStep = 1e-6;
-// How far from zero those central differences put a strain rate that is zero [1/s]: the rounding
-// of two strains over kRateStep, measured up to 3.3e-9 on the flagship's lap belt at its turn.
+// How far from zero the rates put a strain rate that is zero [1/s]: the rounding of two lengths
+// over kRateStep (the central differences of whole belt evaluations, slip solves included, were
+// measured up to 3.3e-9 on the flagship's lap belt at its turn).
 // A span turned this close to its turn has its largest strain off by about rate^2 / (2 strain
 // acceleration), far below anything a tolerance can see.
 constexpr double kRateNoise = 1e-8;
@@ -66,6 +67,22 @@ void CopyKinematics(From& from, To& to) {
   to.bias_acceleration = from.bias_acceleration;
 }
 
+// The geometry's rates (UpdateBeltRates), kept in a working copy's vectors that the geometry
+// does not write, the copy being thrown away after: per span the length's rate, per junction the
+// capstan ratio's, the carried arc's, the arc's from the webbing's middle to rate_anchor, and
+// the transfer's.
+struct GeometryRates {
+  std::vector<double>& length;
+  std::vector<double>& ratio;
+  std::vector<double>& carried;
+  std::vector<double>& anchor_arc;
+  std::vector<double>& transfer;
+};
+
+GeometryRates RatesIn(BeltState& work) {
+  return {work.strain_rate, work.slip_rate, work.solve_trial, work.solve_residual, work.solve_step};
+}
+
 }  // namespace
 
 void SizeBeltRatesCopy(Data& data) {
@@ -108,47 +125,69 @@ void UpdateBeltRates(const Model& model, Data& data) {
     state.rate_anchor[j] =
         data.rotation[s].transpose() * (state.middle[Index(point)] - data.position[s]);
   }
-  // The slip of each junction (its transfer less the carried webbing) and each span's strain a
-  // half step back and ahead along the motion (q +- h/2 qdot, the vehicles at those times);
-  // then back where Forward left them.
+  // The geometry's rates: each span's length, each junction's capstan ratio, the arc its body
+  // carried and the arc from the webbing's middle to that body point, by central differences a
+  // half step back and ahead along the motion (q +- h/2 qdot, the vehicles at those times),
+  // without the slip solve; then back where Forward left them.
   const double t = data.time;
   Data::BeltRatesCopy& copy = data.belt_rates_copy;
   CopyKinematics(data, copy);
   copy.belts = data.belts;
   std::copy(data.q.begin(), data.q.end(), state.rate_q.begin());
   PositionDerivative(model, data.q, data.v, data.locked, state.rate_dq);
+  const GeometryRates differences = RatesIn(state);
   for (const double sign : {-1.0, 1.0}) {
     for (std::size_t i = 0; i < data.q.size(); ++i) {
       data.q[i] = state.rate_q[i] + sign * 0.5 * kRateStep * state.rate_dq[i];
     }
     data.time = t + sign * 0.5 * kRateStep;
     ComputeKinematics(model, data, state.rate_segments);
-    EvaluateBelts(model, data);
-    for (std::size_t j = 0; j < state.transfer.size(); ++j) {
-      double slip = state.transfer[j];
-      const std::int32_t point = state.junction_point[j];
-      if (point >= 0 && state.contact[Index(point)]) {
-        const auto a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
-        const double stretch =
-            0.5 * (state.length[a] / state.rest_length[a] + state.length[c] / state.rest_length[c]);
-        slip -= CarriedLength(model, data, j, state.rate_anchor[j]) / std::max(stretch, 1e-3);
-      }
-      state.slip_rate[j] = sign < 0 ? -slip : (state.slip_rate[j] + slip) / kRateStep;
-    }
+    EvaluateBeltGeometry(model, data);
+    // After the back point each rate holds minus its value there, after the point ahead the rate.
+    auto difference = [sign](double& rate, double value) {
+      rate = sign < 0 ? -value : (rate + value) / kRateStep;
+    };
     for (std::size_t span = 0; span < state.length.size(); ++span) {
-      state.strain_rate[span] = sign < 0
-                                    ? -Strain(state, span)
-                                    : (state.strain_rate[span] + Strain(state, span)) / kRateStep;
+      difference(differences.length[span], state.length[span]);
+    }
+    for (std::size_t j = 0; j < state.transfer.size(); ++j) {
+      difference(differences.ratio[j], state.junction_ratio[j]);
+      difference(differences.carried[j], state.carried_arc[j]);
+      difference(differences.anchor_arc[j], CarriedLength(model, data, j, state.rate_anchor[j]));
     }
   }
-  // Back to Forward's evaluation, with the rates just found (and the solver's iteration count).
+  // Back to Forward's evaluation; the working copy, with the rates, goes to `copy`.
   std::copy(state.rate_q.begin(), state.rate_q.end(), data.q.begin());
   data.time = t;
-  std::swap(copy.belts.slip_rate, state.slip_rate);
-  std::swap(copy.belts.strain_rate, state.strain_rate);
-  copy.belts.slip_iterations = state.slip_iterations;
   std::swap(data.belts, copy.belts);  // (the vectors' buffers: no second copy)
   CopyKinematics(copy, data);
+  const GeometryRates rates = RatesIn(copy.belts);
+  BeltState& now = data.belts;
+  // The transfers' rates from the slip equations' derivative, then each junction's slip (its
+  // transfer less the webbing its body carries, over the webbing's stretch) and each span's
+  // strain (its length over its rest length, which the transfers change).
+  TransferRates(model, now, rates.length, rates.ratio, rates.carried, rates.transfer);
+  for (std::size_t j = 0; j < now.transfer.size(); ++j) {
+    const auto a = Index(now.junction_first[j]), c = Index(now.junction_second[j]);
+    double slip_rate = rates.transfer[j];
+    const std::int32_t point = now.junction_point[j];
+    if (point >= 0 && now.contact[Index(point)]) {
+      const double stretch =
+          0.5 * (now.length[a] / now.rest_length[a] + now.length[c] / now.rest_length[c]);
+      slip_rate -= rates.anchor_arc[j] / std::max(stretch, 1e-3);
+    }
+    now.slip_rate[j] = slip_rate;
+  }
+  for (std::size_t span = 0; span < now.length.size(); ++span) {
+    double rest_rate = 0.0;
+    for (std::size_t j = 0; j < now.transfer.size(); ++j) {
+      if (Index(now.junction_first[j]) == span) rest_rate -= rates.transfer[j];
+      if (Index(now.junction_second[j]) == span) rest_rate += rates.transfer[j];
+    }
+    const double rest = now.rest_length[span];
+    now.strain_rate[span] =
+        rates.length[span] / rest - now.length[span] * rest_rate / (rest * rest);
+  }
 }
 
 double BeltEventFunction(const Model& model, const Data& data, const BeltEvent& event) {

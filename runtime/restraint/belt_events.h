@@ -13,8 +13,8 @@
 // - A span whose webbing keeps a loading history turns it where its strain turns while it
 //   loads (kTurn: the strain rate falls through zero beyond the largest strain so far).
 // At a stick and at a re-anchoring, the junction holds the webbing it has and sticks to the body
-// point under the webbing's middle. The rates come from central differences of the belt's
-// evaluation along the motion (UpdateBeltRates), made only when an event needs one.
+// point under the webbing's middle. The rates (UpdateBeltRates, when an event needs one) come
+// from the belt geometry's central differences along the motion and the slip equations' slope.
 #pragma once
 
 #include <cstddef>
@@ -35,9 +35,9 @@ struct BeltEvent {
 // per span whose webbing keeps a history.
 std::vector<BeltEvent> BeltEvents(const Model& model, const Data& data);
 
-// After Forward at data's state: the transfer and strain rates the event functions need, when
-// one needs them (a junction slips, a hysteretic span loads). Leaves data's kinematics and belts
-// as Forward left them (copied before the differences and back after, in data.belt_rates_copy).
+// After Forward at data's state: the slip and strain rates the event functions need, when one
+// needs them (a junction slips, a hysteretic span loads). Leaves data's kinematics and belts as
+// Forward left them (copied before the differences and back after, in data.belt_rates_copy).
 void UpdateBeltRates(const Model& model, Data& data);
 
 // Sizes data.belt_rates_copy (SetUpBelts), so that UpdateBeltRates allocates nothing.

@@ -186,7 +186,81 @@ void SolveOneJunction(const Model& model, BeltState& state, std::size_t j) {
   }
 }
 
+// d r(T~) / d r, the capstan bound's derivative in the ratio.
+double CapstanRatioSlope(double ratio, double extended) {
+  return extended >= 0.0 ? extended : -extended / (ratio * ratio);
+}
+
+// The rate of junction j's residual (JunctionResidual) with its transfers held: from the rates
+// of its spans' lengths, of its capstan ratio and of the arc its body carried.
+double ResidualRate(const Model& model, const BeltState& state, std::size_t j,
+                    std::span<const double> length_rate, double ratio_rate, double carried_rate) {
+  const std::size_t a = Index(state.junction_first[j]), c = Index(state.junction_second[j]);
+  const double ra = std::max(state.rest_length[a], kShortest);
+  const double rc = std::max(state.rest_length[c], kShortest);
+  // A span's strain is its length over its rest length, less 1.
+  const double strain_rate_a = length_rate[a] / ra, strain_rate_c = length_rate[c] / rc;
+  if (state.mode[j] == JunctionMode::kStick) {
+    const double passed = state.transfer[j] - state.held_transfer[j];
+    return passed * 0.25 * (strain_rate_a + strain_rate_c) - carried_rate;
+  }
+  const SpanForce fa = SpanForceAt(model, state, a, state.rest_length[a]);
+  const SpanForce fc = SpanForceAt(model, state, c, state.rest_length[c]);
+  const double r = state.junction_ratio[j];
+  const double rate_a = fa.extended_strain_slope * strain_rate_a;
+  const double rate_c = fc.extended_strain_slope * strain_rate_c;
+  switch (state.mode[j]) {
+    case JunctionMode::kSlipIntoSecond:
+      return rate_c - CapstanSlope(r, fa.extended) * rate_a -
+             CapstanRatioSlope(r, fa.extended) * ratio_rate;
+    case JunctionMode::kSlipIntoFirst:
+      return rate_a - CapstanSlope(r, fc.extended) * rate_c -
+             CapstanRatioSlope(r, fc.extended) * ratio_rate;
+    case JunctionMode::kFree:
+    case JunctionMode::kStick:
+      break;
+  }
+  return rate_a - rate_c;
+}
+
+// Which junctions the solver solves for (the others hold their webbing): their unknowns'
+// indices in solve_index; returns how many. With `carried_rate`, a sticking junction whose body
+// starts to carry its webbing (no arc carried yet, as just after it stuck) is one too.
+std::size_t NumberUnknowns(BeltState& state, std::span<const double> carried_rate = {}) {
+  std::size_t unknowns = 0;
+  for (std::size_t j = 0; j < state.transfer.size(); ++j) {
+    // A sticking junction holds its webbing unless the body it lies on carries it.
+    const bool carried =
+        state.carried_arc[j] != 0.0 || (!carried_rate.empty() && carried_rate[j] != 0.0);
+    const bool solved = state.mode[j] != JunctionMode::kStick || carried;
+    state.solve_index[j] = solved ? static_cast<std::int32_t>(unknowns++) : -1;
+  }
+  return unknowns;
+}
+
 }  // namespace
+
+void TransferRates(const Model& model, BeltState& state, std::span<const double> length_rate,
+                   std::span<const double> ratio_rate, std::span<const double> carried_rate,
+                   std::span<double> transfer_rate) {
+  std::fill(transfer_rate.begin(), transfer_rate.end(), 0.0);
+  const std::size_t unknowns = NumberUnknowns(state, carried_rate);
+  if (unknowns == 0) return;
+  // The Jacobian at the solution (ResidualNorm leaves the rest lengths as they are), and the
+  // residuals' rates with the transfers held: J x' = -F'.
+  ResidualNorm(model, state, unknowns, state.solve_matrix.data());
+  for (std::size_t j = 0; j < state.transfer.size(); ++j) {
+    const std::int32_t unknown = state.solve_index[j];
+    if (unknown < 0) continue;
+    state.solve_step[Index(unknown)] =
+        -ResidualRate(model, state, j, length_rate, ratio_rate[j], carried_rate[j]);
+  }
+  SolveInPlace(state.solve_matrix, state.solve_step, unknowns);
+  for (std::size_t j = 0; j < state.transfer.size(); ++j) {
+    const std::int32_t unknown = state.solve_index[j];
+    if (unknown >= 0) transfer_rate[j] = state.solve_step[Index(unknown)];
+  }
+}
 
 SpanForce SpanForceAt(const Model& model, const BeltState& state, std::size_t span,
                       double rest_length) {
@@ -205,14 +279,15 @@ SpanForce SpanForceAt(const Model& model, const BeltState& state, std::size_t sp
     const double tension = LoadingUnloadingForce(model.functions, function, strain, history);
     if (tension > 0) {
       out.tension = tension;
-      out.tension_slope =
-          LoadingUnloadingSlope(model.functions, function, strain, history) * d_strain;
+      out.extended_strain_slope = LoadingUnloadingSlope(model.functions, function, strain, history);
+      out.tension_slope = out.extended_strain_slope * d_strain;
     }
     out.extended = out.tension;
     out.extended_slope = out.tension_slope;
   } else {
     const double stiffness = state.slack_stiffness[belt];
     out.extended = stiffness * (strain - zero);
+    out.extended_strain_slope = stiffness;
     out.extended_slope = stiffness * d_strain;
   }
   return out;
@@ -239,13 +314,8 @@ void SizeSlipSolver(BeltState& state) {
 }
 
 void ResolveSlip(const Model& model, BeltState& state) {
-  std::size_t unknowns = 0;
-  for (std::size_t j = 0; j < state.transfer.size(); ++j) {
-    // A sticking junction holds its webbing unless the body it lies on carries it.
-    const bool solved = state.mode[j] != JunctionMode::kStick || state.carried_arc[j] != 0.0;
-    state.solve_index[j] = solved ? static_cast<std::int32_t>(unknowns++) : -1;
-    state.transfer[j] = state.held_transfer[j];
-  }
+  const std::size_t unknowns = NumberUnknowns(state);
+  std::copy(state.held_transfer.begin(), state.held_transfer.end(), state.transfer.begin());
   if (unknowns > 0) {
     // Newton's method with a backtracking line search on the largest scaled residual.
     double norm = ResidualNorm(model, state, unknowns, state.solve_matrix.data());

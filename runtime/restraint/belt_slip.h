@@ -25,6 +25,8 @@
 // its webbing arbitrarily), and the tensions themselves are never negative.
 #pragma once
 
+#include <span>
+
 #include "runtime/model/data.h"
 
 namespace sled::runtime {
@@ -36,6 +38,7 @@ struct SpanForce {
   double extended = 0.0;
   double tension_slope = 0.0;
   double extended_slope = 0.0;
+  double extended_strain_slope = 0.0;  // d extended / d strain
 };
 SpanForce SpanForceAt(const Model& model, const BeltState& state, std::size_t span,
                       double rest_length);
@@ -53,6 +56,16 @@ double SpanTension(const Model& model, const BeltState& state, std::size_t span,
 // Solves the transfers of the junctions that slip or have no friction (a sticking junction's
 // transfer is set by the caller), then sets every span's rest length and tension.
 void ResolveSlip(const Model& model, BeltState& state);
+
+// After ResolveSlip: the rate of each junction's transfer [m/s] (0 for one that holds its
+// webbing) along a motion that changes the spans' lengths, the junctions' capstan ratios and the
+// arcs their bodies carried at the given rates. The derivative of the solved equations: the
+// solver's Jacobian in the transfers times their rates balances the equations' derivative in
+// those quantities (implicit differentiation), so the rates are exact where the equations are
+// smooth, with no second solve.
+void TransferRates(const Model& model, BeltState& state, std::span<const double> length_rate,
+                   std::span<const double> ratio_rate, std::span<const double> carried_rate,
+                   std::span<double> transfer_rate);
 
 // Sizes the solver's workspace in `state` (SetUpBelts).
 void SizeSlipSolver(BeltState& state);

@@ -181,6 +181,11 @@ double CarriedLength(const Model& model, const Data& data, std::size_t j, const 
 }
 
 void EvaluateBelts(const Model& model, Data& data) {
+  EvaluateBeltGeometry(model, data);
+  ResolveSlip(model, data.belts);
+}
+
+void EvaluateBeltGeometry(const Model& model, Data& data) {
   const BeltTable& table = model.belts;
   BeltState& state = data.belts;
   for (std::size_t b = 0; b < table.size(); ++b) BeltGeometry(model, data, b);
@@ -194,7 +199,6 @@ void EvaluateBelts(const Model& model, Data& data) {
     const bool carried = state.mode[j] == JunctionMode::kStick && point >= 0 && state.carries[j];
     state.carried_arc[j] = carried ? CarriedLength(model, data, j, state.anchor[j]) : 0.0;
   }
-  ResolveSlip(model, state);
 }
 
 void AnchorJunction(const Model& model, Data& data, std::size_t j) {

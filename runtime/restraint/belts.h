@@ -27,6 +27,10 @@ void ComputeBeltForces(const Model& model, Data& data);
 // data's kinematics: ComputeBeltForces without the forces.
 void EvaluateBelts(const Model& model, Data& data);
 
+// EvaluateBelts without the slip solve: where the webbing lies (the spans' lengths), the
+// junctions' capstan ratios and the arcs their bodies carried.
+void EvaluateBeltGeometry(const Model& model, Data& data);
+
 // After EvaluateBelts at an accepted step's end: records each taut span's strain past its
 // webbing table's rows (runtime/forces/table_range.h). A report only; nothing feeds back.
 void WatchBeltTables(const Model& model, Data& data);

@@ -54,6 +54,14 @@ std::vector<double> TableKinks(const FunctionTable& functions, std::int32_t id) 
   return kinks;
 }
 
+// Whether (t, y) is (t0, y0) but for the work integrals (the components from `controlled` on),
+// which feed nothing back.
+bool SameState(double t, std::span<const double> y, double t0, std::span<const double> y0,
+               std::size_t controlled) {
+  const auto count = static_cast<std::ptrdiff_t>(controlled);
+  return t == t0 && y.size() == y0.size() && std::equal(y.begin(), y.begin() + count, y0.begin());
+}
+
 }  // namespace
 
 MultibodySystem::MultibodySystem(const Model& model, Data& data)
@@ -150,8 +158,7 @@ void MultibodySystem::Load(double t, std::span<const double> y) {
 
 bool MultibodySystem::EvaluateElements(double t, std::span<const double> y) {
   const auto controlled = static_cast<std::ptrdiff_t>(ControlledSize());
-  if (evaluated_ && t == evaluated_t_ && y.size() == evaluated_y_.size() &&
-      std::equal(y.begin(), y.begin() + controlled, evaluated_y_.begin())) {
+  if (evaluated_ && SameState(t, y, evaluated_t_, evaluated_y_, ControlledSize())) {
     // The work integrals feed nothing back: a state that differs from the evaluated one only in
     // them (a method sets its quadratures after the end derivative) needs no new Forward.
     if (!std::equal(y.begin() + controlled, y.end(), evaluated_y_.begin() + controlled)) {
@@ -295,12 +302,18 @@ double MultibodySystem::StepLimit(double t, std::span<const double> y) {
 
 void MultibodySystem::CommitStep(double t, std::span<const double> y) {
   if (!watches_tables_) return;
-  Load(t, y);
-  ComputeKinematics(model_, data_);
-  PlaceContactSurfaces(model_, data_);
+  // The integrator commits the state it last evaluated (a step's end before the projection):
+  // the kinematics, the placed surfaces and the belts are still those of y.
+  const bool evaluated =
+      evaluated_ && SameState(t, y, evaluated_t_, evaluated_y_, ControlledSize());
+  if (!evaluated) {
+    Load(t, y);
+    ComputeKinematics(model_, data_);
+    PlaceContactSurfaces(model_, data_);
+  }
   WatchContactTables(model_, data_);
   if (model_.belts.size() > 0) {
-    EvaluateBelts(model_, data_);
+    if (!evaluated) EvaluateBelts(model_, data_);
     WatchBeltTables(model_, data_);
   }
 }
