@@ -9,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "legacy_test_deck.h"
 #include "runtime/model/data.h"
@@ -81,33 +83,28 @@ TEST(LegacyPrescribedSegment, MsegOneWeldsTheSegmentToAVehicleOfTheCardsMotion) 
 }
 
 TEST(LegacyPrescribedSegment, InvalidAndInexpressibleReferencesAreLocated) {
-  // IVFLG outside -2 to 2 (STOP 263), IVREF without IVFLG (STOP 266), MSEG out of order (STOP 6).
-  Converted c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0. 3 0 1"));
-  EXPECT_TRUE(c.Has("columns 67-68: IVFLG is 3")) << c.All();
-  c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0. 0 4 1"));
-  EXPECT_TRUE(c.Has("error[E0512]: card C.2.a (vehicle 1), columns 69-70: IVREF is 4 with IVFLG 0"))
-      << c.All();
-  c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0. 0 0 4"));
-  EXPECT_TRUE(c.Has("columns 71-72: MSEG is 4")) << c.All();
-  EXPECT_TRUE(c.Has("(ATB: STOP 6)")) << c.All();
-  // Motion relative to a segment, and the ground seen from the vehicle: refused.
-  c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0. 2 4 1"));
-  EXPECT_TRUE(c.Has("error[E0507]: card C.2.a (vehicle 1), columns 67-70: IVFLG 2 with IVREF 4"))
-      << c.All();
-  c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0.-1 0 1"));
-  EXPECT_TRUE(c.Has("error[E0507]: card C.2.a (vehicle 1), columns 67-68: IVFLG -1")) << c.All();
-  // A jointed segment (LOWR hangs from the hip): refused.
-  c = ConvertText(
-      WithSeatCard("    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0. 0 0 2"));
-  EXPECT_TRUE(
-      c.Has("error[E0507]: card C.2.a (vehicle 1), columns 71-72: MSEG is 2: segment 2 "
-            "hangs from joint 1"))
-      << c.All();
+  // The seat card's last three fields (IVFLG, IVREF, MSEG in 67-72) and what each gives.
+  const std::string fields = "    0.    0.    0.   20.   0.1    0.    0.  -10.     0    0.    0.";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      // ATB rejects: IVFLG outside -2 to 2 (STOP 263), IVREF without IVFLG (STOP 266), MSEG out
+      // of order (STOP 6).
+      {" 3 0 1", "error[E0512]: card C.2.a (vehicle 1), columns 67-68: IVFLG is 3"},
+      {" 0 4 1", "error[E0512]: card C.2.a (vehicle 1), columns 69-70: IVREF is 4 with IVFLG 0"},
+      {" 0 0 4",
+       "columns 71-72: MSEG is 4 (help: a vehicle segment takes the next number, 3 "
+       "(ATB: STOP 6))"},
+      // Refused: motion relative to a segment, the ground seen from the vehicle, and a jointed
+      // segment (LOWR hangs from the hip).
+      {" 2 4 1", "error[E0507]: card C.2.a (vehicle 1), columns 67-70: IVFLG 2 with IVREF 4"},
+      {"-1 0 1", "error[E0507]: card C.2.a (vehicle 1), columns 67-68: IVFLG -1"},
+      {" 0 0 2",
+       "error[E0507]: card C.2.a (vehicle 1), columns 71-72: MSEG is 2: segment 2 "
+       "hangs from joint 1"},
+  };
+  for (const auto& [flags, expected] : cases) {
+    const Converted c = ConvertText(WithSeatCard(fields + flags));
+    EXPECT_TRUE(c.Has(expected)) << flags << "\n" << c.All();
+  }
 }
 
 }  // namespace

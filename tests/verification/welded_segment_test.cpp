@@ -36,6 +36,16 @@ class WeldSink : public RunSink {
     point.push_back(data.position[0] + data.rotation[0] * marker_);
     reaction.push_back(data.joint_wrench[0].tail<3>());
   }
+  // At `row`: the centre of mass at `com`, the segment turned by `rotation` (segment to
+  // ground), and the base's force on it `force` (ground axes).
+  void ExpectAt(std::size_t row, const Vec3& expected_com, const Mat3& rotation, const Vec3& force,
+                double position_tolerance, double force_tolerance) const {
+    EXPECT_NEAR((com[row] - expected_com).norm(), 0.0, position_tolerance) << "t = " << time[row];
+    EXPECT_NEAR((point[row] - (expected_com + rotation * marker_)).norm(), 0.0, position_tolerance)
+        << "t = " << time[row];
+    EXPECT_NEAR((reaction[row] - rotation.transpose() * force).norm(), 0.0, force_tolerance)
+        << "t = " << time[row];
+  }
   std::vector<double> time;
   std::vector<Vec3> com, point, reaction;
 
@@ -84,13 +94,9 @@ TEST(WeldedSegment, FollowsAHalfSineSledExactlyAndFeelsMassTimesAcceleration) {
     const double travel = -peak / w * (tp - std::sin(w * tp) / w) - dv * (t - tp);
     const double a = t < duration ? -peak * std::sin(w * t) : 0.0;
     const Vec3 origin = Vec3(0.2, 0, 0.5) + Vec3(8, 3, 0) * t + x * travel;
-    const Vec3 com = origin + sled * Vec3(0.1, 0, 0);
-    EXPECT_NEAR((sink.com[row] - com).norm(), 0.0, 1e-9) << "t = " << t;
-    EXPECT_NEAR((sink.point[row] - (com + seat * Vec3(0.1, 0.2, 0.0))).norm(), 0.0, 1e-9)
-        << "t = " << t;
-    // The sled's push on the seat: m (a - g), in the seat's axes.
-    const Vec3 expected = seat.transpose() * (m * (x * a - Vec3(0, 0, -g)));
-    EXPECT_NEAR((sink.reaction[row] - expected).norm(), 0.0, 1e-6 * m * (peak + g)) << "t = " << t;
+    // The sled's push on the seat: m (a - g).
+    sink.ExpectAt(row, origin + sled * Vec3(0.1, 0, 0), seat, m * (x * a - Vec3(0, 0, -g)), 1e-9,
+                  1e-6 * m * (peak + g));
   }
 }
 
@@ -119,12 +125,8 @@ TEST(WeldedSegment, TurnsWithASpinningVehicleAndFeelsTheCentripetalForce) {
     const double t = sink.time[row];
     const Mat3 table = YawPitchRoll(rate * t, 0, 0);
     const Vec3 com = table * Vec3(radius, 0, 0);
-    EXPECT_NEAR((sink.com[row] - com).norm(), 0.0, 1e-8) << "t = " << t;
-    EXPECT_NEAR((sink.point[row] - (com + table * relative * Vec3(0, 0, 0.3))).norm(), 0.0, 1e-8)
-        << "t = " << t;
-    // Towards the axis, m w^2 r, in the block's axes.
-    const Vec3 expected = (table * relative).transpose() * (-m * rate * rate * com);
-    EXPECT_NEAR((sink.reaction[row] - expected).norm(), 0.0, 1e-6) << "t = " << t;
+    // Towards the axis, m w^2 r.
+    sink.ExpectAt(row, com, table * relative, -m * rate * rate * com, 1e-8, 1e-6);
   }
 }
 
