@@ -107,5 +107,24 @@ TEST(LegacyPrescribedSegment, InvalidAndInexpressibleReferencesAreLocated) {
   }
 }
 
+TEST(LegacyPrescribedSegment, AConstraintBetweenThePrescribedSegmentAndAVehicleIsRejected) {
+  // D.1.a with NQ = 1, and a D.6 fixed point between segment 1 (prescribed by MSEG 1) and
+  // segment 4 (SLED, the primary vehicle: NSEG 2 + the second vehicle segment).
+  std::string deck = Corpus();
+  const std::string d1 = "     1     0     0     0     0     1     0     0     0     0     0     0";
+  const std::string p3 = "         50.        -50.         20.\n";
+  ASSERT_NE(deck.find(d1), std::string::npos);
+  ASSERT_NE(deck.find(p3), std::string::npos);
+  deck.replace(deck.find(d1), d1.size(),
+               "     1     0     0     0     1     1     0     0     0     0     0     0");
+  deck.insert(deck.find(p3) + p3.size(),
+              "     1     1     4    0.    0.    0.    0.    0.    0.\n");
+  const Converted c = ConvertText(deck);
+  EXPECT_TRUE(
+      c.Has("error[E0512]: card D.6 (constraint 1), columns 7-18: both KQ1 and KQ2 have "
+            "prescribed motion"))
+      << c.All();
+}
+
 }  // namespace
 }  // namespace sled::lang::legacy
