@@ -8,6 +8,7 @@
 #include "lang/legacy/load_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
+#include "lang/legacy/vehicle_reader.h"
 
 #include <algorithm>
 #include <array>
@@ -42,7 +43,6 @@ constexpr int kMaxBelts = 20;
 constexpr int kMaxEllipsoids = 20;
 constexpr int kMaxSprings = 20;
 constexpr int kMaxFunction = 98;
-constexpr int kMaxVehicles = 6;
 constexpr int kMaxContacts = 200;
 constexpr int kMaxHarnesses = 5;
 constexpr int kMaxConstraints = 12;
@@ -62,7 +62,7 @@ class DeckReader : public DeckFields {
   Deck Read() {
     ReadA();
     ReadBody(*this);
-    if (!r_.truncated()) ReadC();
+    if (!r_.truncated()) ReadVehicles(*this);
     if (!r_.truncated()) ReadD();
     if (!r_.truncated()) ReadE();
     if (!r_.truncated()) ReadWindFunctions(*this, wind_functions_);
@@ -201,131 +201,6 @@ class DeckReader : public DeckFields {
                           r_.Where(card, first, last), what, label),
               fmt::format("write one of {}", names));
     return std::string(known.begin()->second);
-  }
-
-  // --- C: vehicles -------------------------------------------------------------------------
-  void ReadC() {
-    std::optional<Card> last;
-    for (int v = 0; v < kMaxVehicles && !r_.truncated(); ++v) {
-      const Card title = r_.Next(fmt::format("C.1 (vehicle {})", v + 1), {"(A80)"});
-      const Card card = r_.Next(fmt::format("C.2.a (vehicle {})", v + 1), {"(8F6.0,I6,2F6.0,3I2)"});
-      VehicleCard vehicle;
-      vehicle.line = card.line;
-      vehicle.title = r_.Text(title, 1, 80);
-      vehicle.orientation = Triple(card, 1, 6, "yaw, pitch and roll of the vehicle");
-      vehicle.speed = r_.Real(card, 19, 24, "VIPS, the initial speed in mph");
-      vehicle.duration = r_.Real(card, 25, 30, "VTIME, the pulse duration");
-      vehicle.position = Triple(card, 31, 6, "X0, the initial position");
-      const int points = r_.Integer(card, 49, 54, "NATAB, the number of table points");
-      r_.Real(card, 55, 60, "AT0, the table's start time");
-      r_.Real(card, 61, 66, "ADT, the table's spacing");
-      const int ivflg = r_.Integer(card, 67, 68, "IVFLG, the reference flag");
-      const int ivref = r_.Integer(card, 69, 70, "IVREF, the reference segment");
-      vehicle.segment = r_.Integer(card, 71, 72, "MSEG, the vehicle segment");
-      if (points != 0) {
-        Refuse(card, 49, 54, fmt::format("NATAB is {}: a tabulated pulse", points),
-               "the layout of the C.3 table cards is not in the reference (VINO12 and VINO34, "
-               "which read them, are not; VEHPOS shows only that NATAB > 0 is one deceleration "
-               "in G every ADT from AT0 and NATAB < 0 six tables); convert the pulse into a "
-               "`motion = table(...)` by hand");
-      } else {
-        Unverified(card, 19, 30,
-                   fmt::format("a half-sine pulse: VIPS is read in mph (the V.3 input "
-                               "description's unit, 1 mph = 0.44704 m/s) and VTIME in {} "
-                               "(UNITT); its direction AX and frequency come from VINO12, which "
-                               "the reference does not have; sled assumes an initial velocity "
-                               "VIPS along the vehicle's x axis (turned by its yaw and pitch) "
-                               "and a half-sine of duration VTIME along its -x that brings it "
-                               "to rest",
-                               deck_.units.time));
-      }
-      ReadReference(card, ivflg, ivref);
-      if (vehicle.duration <= 0 && points == 0) {
-        Invalid(card, 25, 30, fmt::format("VTIME is {}", vehicle.duration),
-                "a half-sine pulse needs a positive duration");
-      }
-      if (!PlaceVehicle(card, std::move(vehicle))) return;
-      last = card;
-    }
-    if (last && !r_.truncated()) {
-      Invalid(
-          *last, 71, 72,
-          fmt::format("{} C cards and none with MSEG 0, the primary vehicle", kMaxVehicles),
-          fmt::format("ATB reads at most {} C cards, the last with MSEG 0 (STOP 7)", kMaxVehicles));
-    }
-  }
-
-  // C.2.a 67-70: IVFLG (-2 to 2) and IVREF (0 to MAXSEG), ATB's STOPs 263, 265 and 266. IVREF 0
-  // with |IVFLG| = 2 is the ground (VINITL and VEHPOS then take the card's motion as absolute,
-  // as for IVFLG 0); motion relative to another frame is refused.
-  void ReadReference(const Card& card, int ivflg, int ivref) {
-    if (ivflg < -2 || ivflg > 2) {
-      Invalid(card, 67, 68, fmt::format("IVFLG is {}", ivflg),
-              "IVFLG is -2 to 2 (ATB: STOP 263 in INPUT_VEHICLE)");
-    } else if (ivref < 0 || ivref > kMaxSegments) {
-      Invalid(card, 69, 70, fmt::format("IVREF is {}", ivref),
-              fmt::format("IVREF is a segment number, 0 to {} (ATB: STOP 265)", kMaxSegments));
-    } else if (ivref != 0 && ivflg == 0) {
-      Invalid(card, 69, 70, fmt::format("IVREF is {} with IVFLG 0", ivref),
-              "a reference segment needs IVFLG 1 or 2 (ATB: STOP 266)");
-    } else if (ivref != 0) {
-      Refuse(
-          card, 67, 70,
-          fmt::format("IVFLG {} with IVREF {}: motion relative to segment {}", ivflg, ivref, ivref),
-          "sled's vehicles move relative to the ground; with IVREF 0 and IVFLG 2 the motion "
-          "is the ground's");
-    } else if (ivflg == 1 || ivflg == -1) {
-      Refuse(card, 67, 68,
-             fmt::format("IVFLG {}: the ground's motion seen from the vehicle", ivflg),
-             "VINITL and VEHPOS reverse the card's motion, and VINO12, which gives its "
-             "direction, is not in the reference; write the vehicle's own motion with IVFLG 0");
-    }
-  }
-
-  // C.2.a 71-72, MSEG: 0 ends the list with the primary vehicle; above NSEG, the next vehicle
-  // segment (ATB's STOP 6 when out of order); 1 to NSEG, a body segment whose motion the card
-  // prescribes. False after the primary vehicle.
-  bool PlaceVehicle(const Card& card, VehicleCard vehicle) {
-    const int segments = static_cast<int>(deck_.segments.size());
-    const int mseg = vehicle.segment;
-    if (mseg == 0) {
-      deck_.vehicles.push_back(std::move(vehicle));
-      return false;
-    }
-    if (mseg < 0 || mseg > kMaxSegments - 1) {
-      Invalid(card, 71, 72, fmt::format("MSEG is {}", mseg),
-              fmt::format("MSEG is 0 (the primary vehicle), a body segment 1 to {} or the next "
-                          "vehicle segment (ATB: STOP 264)",
-                          segments));
-      return false;  // read on as after the primary vehicle: no cascade from the D cards
-    }
-    if (mseg <= segments) {
-      const auto joint = static_cast<std::size_t>(mseg - 2);
-      if (mseg > 1 && joint < deck_.joints.size() && deck_.joints[joint].parent != 0) {
-        Refuse(card, 71, 72,
-               fmt::format("MSEG is {}: segment {} hangs from joint {}, and its motion is "
-                           "prescribed",
-                           mseg, mseg, mseg - 1),
-               "sled prescribes the motion of a reference segment (segment 1, or one that a "
-               "B.3.a JNT of 0 starts), welded to a vehicle of the card's motion; number the "
-               "body from the prescribed segment");
-      } else {
-        Unverified(card, 71, 72,
-                   fmt::format("MSEG is {}: segment {} moves with the card's motion, welded to a "
-                               "vehicle placed at X0 with the card's yaw, pitch and roll, as "
-                               "INPUT_VEHICLE's initial state for it says; its G.2 and G.3.a "
-                               "cards are not used",
-                               mseg, mseg));
-        deck_.prescribed_segments.push_back(std::move(vehicle));
-      }
-    } else if (const int next = segments + static_cast<int>(deck_.vehicles.size()) + 1;
-               mseg != next) {
-      Invalid(card, 71, 72, fmt::format("MSEG is {}", mseg),
-              fmt::format("a vehicle segment takes the next number, {} (ATB: STOP 6)", next));
-    } else {
-      deck_.vehicles.push_back(std::move(vehicle));
-    }
-    return true;
   }
 
   // --- D: surfaces and restraints ----------------------------------------------------------

@@ -101,6 +101,18 @@ TEST(LegacyPrescribedSegment, InvalidAndInexpressibleReferencesAreLocated) {
        "error[E0507]: card C.2.a (vehicle 1), columns 71-72: MSEG is 2: segment 2 "
        "hangs from joint 1"},
   };
+  // Segment 1 prescribed twice: the cart's card (line 28) given MSEG 1 too.
+  {
+    std::string deck = Corpus();
+    const std::string cart = " 2 0 3\nSLED AT 20 MPH";
+    ASSERT_NE(deck.find(cart), std::string::npos);
+    deck.replace(deck.find(cart), cart.size(), " 0 0 1\nSLED AT 20 MPH");
+    const Converted c = ConvertText(deck);
+    EXPECT_TRUE(
+        c.Has("error[E0507]: card C.2.a (vehicle 2), columns 71-72: MSEG is 1: segment 1 "
+              "is prescribed by the C card of line 26 too"))
+        << c.All();
+  }
   for (const auto& [flags, expected] : cases) {
     const Converted c = ConvertText(WithSeatCard(fields + flags));
     EXPECT_TRUE(c.Has(expected)) << flags << "\n" << c.All();
