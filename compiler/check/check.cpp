@@ -507,6 +507,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   if (scenario_statement_) CheckFluids(*scene_scope_);
   CheckInitialConditions();
+  CheckWelds();
   CheckHeldInitialConditions();
   CheckLoadsInThePlane();
   CheckOutputs();

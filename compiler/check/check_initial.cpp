@@ -203,8 +203,12 @@ void InitialChecker::CheckHeldInitialConditions() {
       if (base.kind == FrameRef::Kind::kVehicle) {
         angular = poses.vehicle_angular_velocities[static_cast<std::size_t>(base.index)];
       }
+      // A welded root turns with its base whatever it is given (E0426 refuses another rate).
       for (const InitialCondition& other : scenario_.initial_conditions) {
-        if (root_of(other) == root && other.angular_velocity) angular = *other.angular_velocity;
+        if (constraint.kind != Constraint::Kind::kWelded && root_of(other) == root &&
+            other.angular_velocity) {
+          angular = *other.angular_velocity;
+        }
       }
       const Vec3 moving = *HeldRootVelocity(scenario_, poses, root, angular);
       if (Distance(*initial.velocity, moving) >

@@ -394,12 +394,14 @@ void RestraintChecker::CheckRestraints() {
     const ast::Expr* call = colon ? &colon->value : nullptr;
     // `rolling` is read to be refused (E0422) with its reason; the others are the kinds.
     static const std::vector<std::string> kKinds = {"fixed_point", "fixed_distance", "rolling",
-                                                    "sliding"};
+                                                    "sliding", "welded"};
     if (!call || call->kind != ast::ExprKind::kCall || call->arguments.size() != 1 ||
         !call->arguments[0].name.empty()) {
       Report(DiagnosticKind::kMalformedStatement, call ? call->range : pending.statement->range,
-             "write `constraint NAME : fixed_point(A -> B) { ... }` (or fixed_distance, sliding)",
-             "not a constraint kind", "constraint kinds: fixed_point, fixed_distance, sliding");
+             "write `constraint NAME : fixed_point(A -> B) { ... }` (or fixed_distance, sliding, "
+             "welded)",
+             "not a constraint kind",
+             "constraint kinds: fixed_point, fixed_distance, sliding, welded");
       continue;
     }
     const std::string kind = call->PathText();

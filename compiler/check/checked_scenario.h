@@ -276,7 +276,9 @@ struct Fluid {
 };
 
 struct Constraint {
-  enum class Kind { kFixedPoint, kFixedDistance, kRolling, kSliding };
+  // kWelded: a reference segment moving rigidly with the ground or a vehicle (a segment whose
+  // motion is prescribed, ATB's MSEG); the lowering makes it the root's locked joint to its base.
+  enum class Kind { kFixedPoint, kFixedDistance, kRolling, kSliding, kWelded };
   std::string name;
   Kind kind = Kind::kFixedPoint;
   FrameRef first;

@@ -103,6 +103,9 @@ class InitialChecker : protected virtual CheckContext {
   void CheckInitialConditions();
   // After every initial condition is read: held roots' positions and velocities.
   void CheckHeldInitialConditions();
+  // Welds (check_welds.cpp): each holds one reference segment to the ground or a vehicle, once,
+  // and the segment turns with its base (E0426).
+  void CheckWelds();
 
  private:
   void RefuseUntakenInitial(const InitialCondition& initial, const BoundBlock& bound);

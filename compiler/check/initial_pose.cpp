@@ -73,16 +73,19 @@ Vec3 Cross(const Vec3& a, const Vec3& b) {
 }  // namespace
 
 int HoldingConstraintOf(const CheckedScenario& scenario, int segment) {
-  for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
-    const Constraint& constraint = scenario.constraints[c];
-    if (constraint.kind != Constraint::Kind::kFixedPoint) continue;
-    const bool first = constraint.first.kind == FrameRef::Kind::kSegment &&
-                       constraint.first.index == segment &&
-                       constraint.second.kind != FrameRef::Kind::kSegment;
-    const bool second = constraint.second.kind == FrameRef::Kind::kSegment &&
-                        constraint.second.index == segment &&
-                        constraint.first.kind != FrameRef::Kind::kSegment;
-    if (first || second) return static_cast<int>(c);
+  // A weld first (it holds the orientation too), then a fixed point.
+  for (const Constraint::Kind kind : {Constraint::Kind::kWelded, Constraint::Kind::kFixedPoint}) {
+    for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
+      const Constraint& constraint = scenario.constraints[c];
+      if (constraint.kind != kind) continue;
+      const bool first = constraint.first.kind == FrameRef::Kind::kSegment &&
+                         constraint.first.index == segment &&
+                         constraint.second.kind != FrameRef::Kind::kSegment;
+      const bool second = constraint.second.kind == FrameRef::Kind::kSegment &&
+                          constraint.second.index == segment &&
+                          constraint.first.kind != FrameRef::Kind::kSegment;
+      if (first || second) return static_cast<int>(c);
+    }
   }
   return -1;
 }

@@ -29,8 +29,9 @@ struct InitialPoses {
   Pose Of(const FrameRef& frame) const;
 };
 
-// The fixed-point constraint that holds root segment `segment` at a point of the ground or a
-// vehicle (its joint to that base; the lowering solves it in the tree), or -1.
+// The weld or fixed-point constraint that holds root segment `segment` at a point of the ground
+// or a vehicle (its joint to that base, locked for a weld; the lowering solves it in the tree),
+// or -1. A weld comes first.
 int HoldingConstraintOf(const CheckedScenario& scenario, int segment);
 
 // Yaw about z, then pitch about y, then roll about x (the ATB order).

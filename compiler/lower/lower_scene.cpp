@@ -152,6 +152,9 @@ void LowerConstraints(Lowering& lowering) {
       case Constraint::Kind::kSliding:
         model.constraint_kind.push_back(Model::ConstraintKind::kSliding);
         break;
+      case Constraint::Kind::kWelded:
+        throw std::logic_error(
+            "compiler::Lower: a weld holds a reference segment to its base (E0426 otherwise)");
     }
     model.constraint_first.push_back(lowering.Frame(constraint.first));
     model.constraint_second.push_back(lowering.Frame(constraint.second));

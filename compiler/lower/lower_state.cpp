@@ -192,8 +192,10 @@ void LowerInitialState(Lowering& lowering) {
       const AxisAngle turn = AngleAbout(Eigen::Quaterniond(r_wb.transpose() * r_ws), axis);
       model.q0[qa] = turn.angle;
       const runtime::Vec3 w_base = BaseAngularVelocity(model, base);
+      // A welded root (its joint locked for good) turns with its base.
+      const bool welded = model.joint_locked[s] != 0;
       const runtime::Vec3 w =
-          start.angular_velocity.value ? ToEigen(*start.angular_velocity.value) : w_base;
+          start.angular_velocity.value && !welded ? ToEigen(*start.angular_velocity.value) : w_base;
       model.v0[va] = (r_wb * axis).dot(w - w_base);
       w_world[s] = w_base + model.v0[va] * (r_wb * axis);
       NoteOffPlane(lowering, start.orientation.range, turn.off_axis,
@@ -218,7 +220,10 @@ void LowerInitialState(Lowering& lowering) {
       // The joint's rate is relative to the base: a root that is given no angular velocity
       // turns with its vehicle.
       const runtime::Vec3 w_base = BaseAngularVelocity(model, base);
-      w_world[s] = start.angular_velocity.value ? ToEigen(*start.angular_velocity.value) : w_base;
+      // A welded root (its joint locked for good) turns with its base.
+      const bool welded = model.joint_locked[s] != 0;
+      w_world[s] =
+          start.angular_velocity.value && !welded ? ToEigen(*start.angular_velocity.value) : w_base;
       const runtime::Vec3 w_s = r_ws.transpose() * (w_world[s] - w_base);
       for (std::size_t k = 0; k < 3; ++k) model.v0[va + k] = w_s[k];
       continue;

@@ -204,7 +204,8 @@ void PlanMirrorSymmetry(Lowering& lowering) {
   }
   for (std::size_t c = 0; c < scenario.constraints.size(); ++c) {
     const Constraint& constraint = scenario.constraints[c];
-    const bool holds_a_root = constraint.kind == Constraint::Kind::kFixedPoint &&
+    const bool holds_a_root = (constraint.kind == Constraint::Kind::kFixedPoint ||
+                               constraint.kind == Constraint::Kind::kWelded) &&
                               ((constraint.first.kind == FrameRef::Kind::kSegment &&
                                 constraint.second.kind != FrameRef::Kind::kSegment &&
                                 HoldingConstraintOf(lowering.scenario(), constraint.first.index) ==

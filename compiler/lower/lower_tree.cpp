@@ -125,9 +125,9 @@ void LowerTree(Lowering& lowering) {
     model.segment_source.push_back(lowering.Position(segment.range));
 
     if (j < 0) {
-      // A root floats (a free joint to the ground) unless a fixed-point constraint holds it at
-      // a point of the ground or a vehicle: then that constraint is its ball joint to that base,
-      // solved in the tree rather than as a loop.
+      // A root floats (a free joint to the ground) unless a fixed-point constraint or a weld
+      // holds it at a point of the ground or a vehicle: then that constraint is its ball joint to
+      // that base (locked for a weld), solved in the tree rather than as a loop.
       const int held = HoldingConstraintOf(lowering.scenario(), old);
       lowering.base_constraint.push_back(held);
       model.segment_parent.push_back(-1);
@@ -155,6 +155,12 @@ void LowerTree(Lowering& lowering) {
       model.joint_frame_in_child.push_back(runtime::Mat3::Identity());
       model.joint_axis.push_back(runtime::Vec3::Zero());
       runtime::AppendPlainJointCharacteristics(model);
+      if (held >= 0 && lowering.scenario().constraints[static_cast<std::size_t>(held)].kind ==
+                           Constraint::Kind::kWelded) {
+        // A weld: the joint to the base locked for good (no unlock level), so the segment moves
+        // rigidly with its base at its initial relative orientation.
+        model.joint_locked.back() = 7;
+      }
       model.joint_source.emplace_back();
     } else {
       const Joint& joint = lowering.joint(j);

@@ -69,9 +69,18 @@ void ReadConstraints(DeckFields& fields, int count, int bags) {
     const auto first = fields.FrameOf(card, 7, 12, kq1, bags, "KQ1, the first segment");
     const auto second = fields.FrameOf(card, 13, 18, kq2, bags, "KQ2, the second segment");
     if (!first || !second) continue;
-    if (first->kind != DeckFrame::Kind::kSegment && second->kind != DeckFrame::Kind::kSegment) {
+    // A body segment whose motion a C card prescribes (MSEG) moves as told, as vehicles do.
+    const auto prescribed = [&](const DeckFrame& frame) {
+      if (frame.kind != DeckFrame::Kind::kSegment) return true;
+      for (const VehicleCard& vehicle : fields.deck().prescribed_segments) {
+        if (vehicle.segment == frame.index) return true;
+      }
+      return false;
+    };
+    if (prescribed(*first) && prescribed(*second)) {
       fields.Invalid(card, 7, 18, "both KQ1 and KQ2 have prescribed motion",
-                     "a constraint holds a body segment: name one at least");
+                     "a constraint holds a body segment whose motion is free (not a C card's "
+                     "MSEG): name one at least");
       continue;
     }
     if (first->kind == second->kind && first->index == second->index) {

@@ -91,6 +91,9 @@ struct VehicleCard {
   std::string title;
   Vec3 orientation{}, position{};
   double speed = 0, duration = 0;
+  // MSEG: 0 the primary vehicle, above NSEG a further vehicle segment, 1 to NSEG a body segment
+  // whose motion the card prescribes (Deck::prescribed_segments).
+  int segment = 0;
 };
 
 struct PlaneCard {
@@ -338,6 +341,9 @@ struct Deck {
   std::vector<SegmentCard> segments;
   std::vector<JointCard> joints;
   std::vector<VehicleCard> vehicles;  // the primary vehicle (MSEG = 0) last, as in the deck
+  // C cards with MSEG a body segment (a reference segment): its motion prescribed by the card.
+  // Not vehicle segments: they take no number among the vehicles (INPUT_VEHICLE).
+  std::vector<VehicleCard> prescribed_segments;
   std::vector<PlaneCard> planes;
   std::vector<BeltCard> belts;
   std::vector<VehicleEllipsoidCard> vehicle_ellipsoids;

@@ -106,6 +106,12 @@ class DeckMapper {
                  bool slip = false);
   void MapBody(ast::Block& scenario);
   void MapVehicles(ast::Block& scenario);
+  ast::Statement VehicleStatement(const VehicleCard& card, const std::string& name);
+  // C cards with MSEG a body segment (map_prescribed.cpp): a vehicle of the card's motion and a
+  // weld of the segment to it.
+  void MapPrescribedSegments(ast::Block& scenario);
+  // The C card that prescribes body segment `segment` (1-based), or null.
+  const VehicleCard* PrescribedCard(int segment) const;
   void MapSurfaces(ast::Block& scenario);
   ast::Statement EllipsoidOn(const VehicleEllipsoidCard& card, const std::string& name,
                              const std::string& frame);
@@ -169,6 +175,7 @@ class DeckMapper {
   std::set<std::string> body_names_;
   std::string body_;
   std::vector<std::string> segments_, joints_, vehicles_, planes_, belts_;
+  std::vector<std::string> prescribed_vehicles_;                    // by Deck::prescribed_segments
   std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
   std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
   std::set<int> placed_extras_;

@@ -8,6 +8,7 @@
 #include "lang/legacy/load_reader.h"
 #include "lang/legacy/output_reader.h"
 #include "lang/legacy/restraint_readers.h"
+#include "lang/legacy/vehicle_reader.h"
 
 #include <algorithm>
 #include <array>
@@ -42,7 +43,6 @@ constexpr int kMaxBelts = 20;
 constexpr int kMaxEllipsoids = 20;
 constexpr int kMaxSprings = 20;
 constexpr int kMaxFunction = 98;
-constexpr int kMaxVehicles = 6;
 constexpr int kMaxContacts = 200;
 constexpr int kMaxHarnesses = 5;
 constexpr int kMaxConstraints = 12;
@@ -62,7 +62,7 @@ class DeckReader : public DeckFields {
   Deck Read() {
     ReadA();
     ReadBody(*this);
-    if (!r_.truncated()) ReadC();
+    if (!r_.truncated()) ReadVehicles(*this);
     if (!r_.truncated()) ReadD();
     if (!r_.truncated()) ReadE();
     if (!r_.truncated()) ReadWindFunctions(*this, wind_functions_);
@@ -201,54 +201,6 @@ class DeckReader : public DeckFields {
                           r_.Where(card, first, last), what, label),
               fmt::format("write one of {}", names));
     return std::string(known.begin()->second);
-  }
-
-  // --- C: vehicles -------------------------------------------------------------------------
-  void ReadC() {
-    for (int v = 0; v < kMaxVehicles && !r_.truncated(); ++v) {
-      const Card title = r_.Next(fmt::format("C.1 (vehicle {})", v + 1), {"(A80)"});
-      const Card card = r_.Next(fmt::format("C.2.a (vehicle {})", v + 1), {"(8F6.0,I6,2F6.0,3I2)"});
-      VehicleCard vehicle;
-      vehicle.line = card.line;
-      vehicle.title = r_.Text(title, 1, 80);
-      vehicle.orientation = Triple(card, 1, 6, "yaw, pitch and roll of the vehicle");
-      vehicle.speed = r_.Real(card, 19, 24, "VIPS, the initial speed in mph");
-      vehicle.duration = r_.Real(card, 25, 30, "VTIME, the pulse duration");
-      vehicle.position = Triple(card, 31, 6, "X0, the initial position");
-      const int points = r_.Integer(card, 49, 54, "NATAB, the number of table points");
-      r_.Real(card, 55, 60, "AT0, the table's start time");
-      r_.Real(card, 61, 66, "ADT, the table's spacing");
-      const int ivflg = r_.Integer(card, 67, 68, "IVFLG, the reference flag");
-      r_.Integer(card, 69, 70, "IVREF, the reference segment");
-      const int mseg = r_.Integer(card, 71, 72, "MSEG, the vehicle segment");
-      if (points != 0) {
-        Refuse(card, 49, 54, fmt::format("NATAB is {}: a tabulated pulse", points),
-               "the layout of the C.3 table cards is not documented; convert the pulse into a "
-               "`motion = table(...)` by hand");
-      } else {
-        Unverified(card, 19, 30,
-                   fmt::format("a half-sine pulse: VIPS is read in mph (the V.3 input "
-                               "description's unit, 1 mph = 0.44704 m/s) and VTIME in {} "
-                               "(UNITT); its direction AX and frequency come from VINO12, which "
-                               "the reference does not have; sled assumes an initial velocity "
-                               "VIPS along the vehicle's x axis (turned by its yaw and pitch) "
-                               "and a half-sine of duration VTIME along its -x that brings it "
-                               "to rest",
-                               deck_.units.time));
-      }
-      if (ivflg != 0) {
-        Refuse(card, 67, 68, fmt::format("IVFLG is {}: motion relative to a segment", ivflg),
-               "sled's vehicles move relative to the ground");
-      }
-      if (vehicle.duration <= 0 && points == 0) {
-        Invalid(card, 25, 30, fmt::format("VTIME is {}", vehicle.duration),
-                "a half-sine pulse needs a positive duration");
-      }
-      deck_.vehicles.push_back(std::move(vehicle));
-      if (mseg == 0) return;
-      Refuse(card, 71, 72, fmt::format("MSEG is {}: a prescribed segment", mseg),
-             "sled prescribes the motion of vehicles, not of body segments");
-    }
   }
 
   // --- D: surfaces and restraints ----------------------------------------------------------

@@ -128,6 +128,10 @@ void DeckMapper::NameEverything() {
     const std::string title = vehicle.title.substr(0, vehicle.title.find_first_of(" ,;:"));
     vehicles_.push_back(NameOf(title, "vehicle", taken_, "vehicle"));
   }
+  for (const VehicleCard& prescribed : deck_.prescribed_segments) {
+    const std::string title = prescribed.title.substr(0, prescribed.title.find_first_of(" ,;:"));
+    prescribed_vehicles_.push_back(NameOf(title, "vehicle", taken_, "vehicle"));
+  }
   for (const PlaneCard& plane : deck_.planes)
     planes_.push_back(NameOf(plane.title, "plane", taken_, "plane"));
   for (const BeltCard& belt : deck_.belts) {
@@ -423,22 +427,26 @@ void DeckMapper::MapBody(ast::Block& scenario) {
 
 void DeckMapper::MapVehicles(ast::Block& scenario) {
   for (std::size_t v = 0; v < deck_.vehicles.size(); ++v) {
-    const VehicleCard& card = deck_.vehicles[v];
-    ast::Statement vehicle = Declaration(
-        "vehicle", Path(vehicles_[v]),
-        CardComment("C.2.a", card.line) + (card.title.empty() ? "" : ": " + card.title));
-    if (!IsZero(card.position)) Add(vehicle, Attribute("position", Vector(card.position, L)));
-    if (!IsZero(card.orientation))
-      Add(vehicle, Attribute("orientation", Vector(card.orientation, "deg")));
-    if (card.speed != 0) {
-      Add(vehicle, Attribute("velocity", Vector(VehicleVelocity(card), kVipsUnit)));
-      Add(vehicle,
-          Attribute("motion", Call("half_sine", {{"delta_v", Number(card.speed, kVipsUnit)},
-                                                 {"duration", Number(card.duration, T)},
-                                                 {"axis", ast::MakeNegation(Path("x"))}})));
-    }
-    scenario.statements.push_back(std::move(vehicle));
+    scenario.statements.push_back(VehicleStatement(deck_.vehicles[v], vehicles_[v]));
   }
+  MapPrescribedSegments(scenario);
+}
+
+// `vehicle NAME { position  orientation  velocity  motion }` of a C card.
+ast::Statement DeckMapper::VehicleStatement(const VehicleCard& card, const std::string& name) {
+  ast::Statement vehicle =
+      Declaration("vehicle", Path(name),
+                  CardComment("C.2.a", card.line) + (card.title.empty() ? "" : ": " + card.title));
+  if (!IsZero(card.position)) Add(vehicle, Attribute("position", Vector(card.position, L)));
+  if (!IsZero(card.orientation))
+    Add(vehicle, Attribute("orientation", Vector(card.orientation, "deg")));
+  if (card.speed != 0) {
+    Add(vehicle, Attribute("velocity", Vector(VehicleVelocity(card), kVipsUnit)));
+    Add(vehicle, Attribute("motion", Call("half_sine", {{"delta_v", Number(card.speed, kVipsUnit)},
+                                                        {"duration", Number(card.duration, T)},
+                                                        {"axis", ast::MakeNegation(Path("x"))}})));
+  }
+  return vehicle;
 }
 
 void DeckMapper::MapFunctions(ast::Block& scenario) {
@@ -523,6 +531,7 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
 
 void DeckMapper::MapInitial(ast::Block& scenario) {
   for (const InitialCard& card : deck_.initial_positions) {
+    if (PrescribedCard(card.segment)) continue;  // placed by its C card (MapPrescribedSegments)
     const auto index = static_cast<std::size_t>(card.segment - 1);
     const std::string target = card.segment == 1 ? body_ : body_ + "." + segments_[index];
     ast::Statement initial = Declaration("initial", Path(target), CardComment("G.2", card.line));

@@ -49,7 +49,9 @@ void DeckMapper::MapPostures(ast::Block& scenario) {
     const OrientationCard& card = card_of(s);
     if (s > deck_.joints.size()) break;               // B.1's NJNT was wrong: reported there
     if (s == 0 || deck_.joints[s - 1].parent == 0) {  // a reference segment: from the ground
-      world[s] = YawPitchRoll(card.angles);
+      // A prescribed one (MSEG) is turned by its C card, not by G.3.a.
+      const VehicleCard* prescribed = PrescribedCard(static_cast<int>(s + 1));
+      world[s] = YawPitchRoll(prescribed ? prescribed->orientation : card.angles);
       continue;
     }
     const JointCard& joint = deck_.joints[s - 1];
