@@ -336,10 +336,6 @@ class BodyReader : public DeckFields {
     const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
     joint.flexure = Spring(card, 1);
     joint.twist = Spring(card, 37);
-    if (joint.twist.energy_loss != 0 && joint.twist.energy_loss != joint.flexure.energy_loss) {
-      Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
-             "sled's joints take one `energy_loss`; give both springs the same coefficient");
-    }
     if (joint.type == JointType::kEuler && joint.twist.stop != 0) {
       Refuse(card, 61, 72,
              fmt::format("a torsion stop angle ({} deg) of an Euler joint", joint.twist.stop),
@@ -364,10 +360,6 @@ class BodyReader : public DeckFields {
         Refuse(spin, 25, 36, fmt::format("a spin stop angle ({} deg)", joint.spin.stop),
                "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
                "25-36 blank");
-      }
-      if (joint.spin.energy_loss != 0 && joint.spin.energy_loss != joint.flexure.energy_loss) {
-        Refuse(spin, 19, 24, "a spin energy-dissipation coefficient unlike the flexure's",
-               "sled's joints take one `energy_loss`; give the springs the same coefficient");
       }
     }
   }
