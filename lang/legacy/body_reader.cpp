@@ -457,7 +457,9 @@ class BodyReader : public DeckFields {
                 fmt::format("ATB requires it above zero for every joint (STOP 294), in deg/{} "
                             "(even without Coulomb friction)",
                             deck_.units.time));
-      } else if (coulomb != 0 && full > 0 && k == 0) {
+      } else if (coulomb != 0 && full > 0 && (k == 0 || full != joint.coulomb_rate)) {
+        // sled's ramp does not depend on the rate, so an axis whose rate differs from the first
+        // axis's converts to the same `coulomb`, approximated alike.
         Approximated(
             card, 7, 18,
             fmt::format("Coulomb friction of {} {}*{} reaching its full torque at {} "
@@ -483,7 +485,7 @@ class BodyReader : public DeckFields {
         joint.coulomb = coulomb;
         joint.restitution = restitution;
       } else if (viscous != joint.viscous || coulomb != joint.coulomb ||
-                 restitution != joint.restitution || (coulomb != 0 && full != joint.coulomb_rate)) {
+                 restitution != joint.restitution) {
         Refuse(card, 1, 60, "damping of this Euler joint axis unlike the first axis's (B.5.a)",
                "sled's `viscous`, `coulomb` and `restitution` act alike on the three axes of an "
                "Euler joint; give B.5.b and B.5.c the values of B.5.a");

@@ -206,7 +206,7 @@ TEST(LegacyPhysicalChecks, EachJointSpringKeepsItsOwnEnergyCoefficient) {
   lines[b3a - 1].replace(13, 1, "0");  // JTYPE 0: a ball joint, which has no B.4.b or B.5.b-c
   const std::size_t b4b = LineStarting(lines, "   0.5    0.    0.    0.          0.   10.");
   lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(b4b - 1));
-  const std::size_t b5b = LineStarting(lines, "  0.05    0.    1.") + 1;
+  const std::size_t b5b = LineStarting(lines, "  0.05   0.2    1.") + 1;
   lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(b5b - 1),
               lines.begin() + static_cast<std::ptrdiff_t>(b5b + 1));
   const std::size_t b4a = LineStarting(lines, "    2.    0.    0.   0.4         60.");
@@ -257,10 +257,30 @@ TEST(LegacyPhysicalChecks, FullCoulombRateIsRequiredAndItsRampApproximated) {
 // `viscous` holds them only when they equal B.5.a's.
 TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
   std::vector<std::string> lines = CorpusDeck("head_and_ball");
-  const std::size_t b5a = LineStarting(lines, "  0.05    0.    1.");
+  const std::size_t b5a = LineStarting(lines, "  0.05   0.2    1.");
   lines[b5a].replace(0, 6, "   0.1");
   const Converted c = ConvertText(Join(lines));
   EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:1-60: error[E0507]: card B.5.b (joint 1)", b5a + 1)))
+      << c.All();
+}
+
+// The rate of full Coulomb friction (VISC(3)) may differ per Euler axis: sled's `coulomb` ramp
+// does not use it, so each axis whose rate differs is approximated at its own card (W0504) and
+// the joint converts with the one friction torque the three cards share.
+TEST(LegacyPhysicalChecks, EulerAxesWithAnotherFullCoulombRateConvertApproximated) {
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
+  const std::size_t b5a = LineStarting(lines, "  0.05   0.2    1.");
+  for (std::size_t k = 0; k < 3; ++k) lines[b5a - 1 + k].replace(6, 6, "    2.");
+  lines[b5a].replace(12, 6, "    5.");  // B.5.b: full friction at 5 deg/s, B.5.a and B.5.c at 1
+  Converted c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a))) << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a + 1))) << c.All();
+  EXPECT_FALSE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a + 2))) << c.All();
+  EXPECT_NE(c.text.find("coulomb = 2 N*m\n"), std::string::npos) << c.text;
+  lines[b5a + 1].replace(6, 6, "    3.");  // B.5.c: another friction torque
+  c = ConvertText(Join(lines));
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:1-60: error[E0507]: card B.5.c (joint 1)", b5a + 2)))
       << c.All();
 }
 
