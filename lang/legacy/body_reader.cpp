@@ -348,10 +348,6 @@ class BodyReader : public DeckFields {
     const Card card = r_.Next(fmt::format("B.4.a (joint {})", j), {"(2(4F6.0,F12.0))"});
     joint.flexure = Spring(card, 1);
     joint.twist = Spring(card, 37);
-    if (joint.twist.energy_loss != 0 && joint.twist.energy_loss != joint.flexure.energy_loss) {
-      Refuse(card, 55, 60, "a torsion energy-dissipation coefficient unlike the flexure's",
-             "sled's joints take one `energy_loss`; give both springs the same coefficient");
-    }
     if (joint.type == JointType::kEuler && joint.twist.stop != 0) {
       Refuse(card, 61, 72,
              fmt::format("a torsion stop angle ({} deg) of an Euler joint", joint.twist.stop),
@@ -376,10 +372,6 @@ class BodyReader : public DeckFields {
         Refuse(spin, 25, 36, fmt::format("a spin stop angle ({} deg)", joint.spin.stop),
                "sled's Euler joint has one `stop`, from the B.4.a flexure stop; leave columns "
                "25-36 blank");
-      }
-      if (joint.spin.energy_loss != 0 && joint.spin.energy_loss != joint.flexure.energy_loss) {
-        Refuse(spin, 19, 24, "a spin energy-dissipation coefficient unlike the flexure's",
-               "sled's joints take one `energy_loss`; give the springs the same coefficient");
       }
     }
   }
@@ -486,7 +478,9 @@ class BodyReader : public DeckFields {
                 fmt::format("ATB requires it above zero for every joint (STOP 294), in deg/{} "
                             "(even without Coulomb friction)",
                             deck_.units.time));
-      } else if (coulomb != 0 && full > 0 && k == 0) {
+      } else if (coulomb != 0 && full > 0 && (k == 0 || full != joint.coulomb_rate)) {
+        // sled's ramp does not depend on the rate, so an axis whose rate differs from the first
+        // axis's converts to the same `coulomb`, approximated alike.
         Approximated(
             card, 7, 18,
             fmt::format("Coulomb friction of {} {}*{} reaching its full torque at {} "
@@ -512,7 +506,7 @@ class BodyReader : public DeckFields {
         joint.coulomb = coulomb;
         joint.restitution = restitution;
       } else if (viscous != joint.viscous || coulomb != joint.coulomb ||
-                 restitution != joint.restitution || (coulomb != 0 && full != joint.coulomb_rate)) {
+                 restitution != joint.restitution) {
         Refuse(card, 1, 60, "damping of this Euler joint axis unlike the first axis's (B.5.a)",
                "sled's `viscous`, `coulomb` and `restitution` act alike on the three axes of an "
                "Euler joint; give B.5.b and B.5.c the values of B.5.a");

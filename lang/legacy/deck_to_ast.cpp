@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -315,8 +316,16 @@ void DeckMapper::AddSpring(ast::Statement& joint, const char* attribute, const J
       Add(joint, Attribute(attribute, std::move(*function)));
     }
   } else if (HasSpring(spring)) {
-    Add(joint, Attribute(attribute, slip ? SpringPolynomial(spring, F, L)
-                                         : SpringPolynomial(spring, F + "*" + L, "deg")));
+    ast::Statement polynomial =
+        Attribute(attribute, slip ? SpringPolynomial(spring, F, L)
+                                  : SpringPolynomial(spring, F + "*" + L, "deg"));
+    // Each B.4 spring has its own energy-dissipation coefficient: the function's own
+    // `energy_loss`, so a spring with none does not take another's as the joint's would give it.
+    if (spring.energy_loss != 0) {
+      polynomial.block = std::make_unique<ast::Block>();
+      Add(polynomial, Attribute("energy_loss", Number(spring.energy_loss)));
+    }
+    Add(joint, std::move(polynomial));
   }
 }
 
@@ -401,8 +410,6 @@ void DeckMapper::MapBody(ast::Block& scenario) {
       AddSpring(joint, "flexure", card.flexure, slip);
       if (card.type == JointType::kBall) AddSpring(joint, "twist", card.twist);
     }
-    if (card.flexure.energy_loss != 0)
-      Add(joint, Attribute("energy_loss", Number(card.flexure.energy_loss)));
     if (card.flexure.stop != 0)
       Add(joint, Attribute("stop", Number(card.flexure.stop, coordinate_unit)));
     if (card.type == JointType::kBall && card.twist.stop != 0)

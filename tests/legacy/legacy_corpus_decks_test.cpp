@@ -89,6 +89,10 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   if (field == "joint_frame_in_child") return Rows(m.joint_frame_in_child.at(i));
   if (field == "joint_function_at")
     return at(m.joint_function.at(i).at(static_cast<std::size_t>(args.front())));
+  if (field == "joint_function_energy_loss") {  // args: the axis (0, 1, 2)
+    const std::int32_t f = m.joint_function.at(i).at(static_cast<std::size_t>(args.front()));
+    return {m.functions.energy_loss.at(static_cast<std::size_t>(f))};
+  }
   if (field == "ellipsoid_semi_axes") return Of(c.ellipsoid_semi_axes.at(i));
   if (field == "ellipsoid_center") return Of(c.ellipsoid_center.at(i));
   if (field == "ellipsoid_degree") return {c.ellipsoid_degree.at(i)};
@@ -202,6 +206,7 @@ std::vector<Expectation> ReadExpectations(const fs::path& path, std::string* opt
     double value = 0;
     while (words >> value) row.values.push_back(value);
     const std::size_t args = row.field == "joint_function_at"                     ? 2
+                             : row.field == "joint_function_energy_loss"          ? 1
                              : row.field.size() > 3 && row.field.ends_with("_at") ? 1
                                                                                   : 0;
     row.args.assign(row.values.begin(), row.values.begin() + static_cast<std::ptrdiff_t>(args));

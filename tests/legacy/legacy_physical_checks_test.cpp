@@ -173,7 +173,7 @@ TEST(LegacyPhysicalChecks, TwoPointsOnOneSegmentAreTwoColumnsAndCheckClean) {
 // without a word: they are refused at their columns.
 TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
   std::vector<std::string> lines = CorpusDeck("head_and_ball");
-  const std::size_t b4a = LineStarting(lines, "    2.    0.    0.    0.         60.");
+  const std::size_t b4a = LineStarting(lines, "    2.    0.    0.   0.4         60.");
   lines[b4a - 1] += "         40.";
   lines[b4a] = "   0.5    0.    0.    0.         30.   10.    0.    0.";
   const Converted c = ConvertText(Join(lines));
@@ -184,6 +184,39 @@ TEST(LegacySilentlyDropped, EulerTorsionAndSpinStopsAreRefused) {
       << c.All();
   EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:25-36: error[E0507]: card B.4.b (joint 1)", b4a + 1)))
       << c.All();
+}
+
+// Each B.4 spring has its own energy-dissipation coefficient (INPUT_JOINTS reads five numbers
+// per spring): the corpus's NECK gives 0.4, 0.2 and 0, which become each function's own
+// `energy_loss`, not one joint `energy_loss` that the spin spring would take too. A ball joint
+// whose flexure has one and whose twist has none: the twist keeps all its energy.
+TEST(LegacyPhysicalChecks, EachJointSpringKeepsItsOwnEnergyCoefficient) {
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
+  Converted c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_NE(c.text.find("precession = polynomial(0, 2 N*m/deg) {\n        energy_loss = 0.4\n"),
+            std::string::npos)
+      << c.text;
+  EXPECT_NE(c.text.find("nutation = polynomial(0, 1 N*m/deg) {\n        energy_loss = 0.2\n"),
+            std::string::npos)
+      << c.text;
+  EXPECT_NE(c.text.find("spin = polynomial(0, 0.5 N*m/deg)\n"), std::string::npos) << c.text;
+  EXPECT_EQ(c.text.find("\n      energy_loss"), std::string::npos) << c.text;
+  const std::size_t b3a = LineStarting(lines, "NECK     1   4");
+  lines[b3a - 1].replace(13, 1, "0");  // JTYPE 0: a ball joint, which has no B.4.b or B.5.b-c
+  const std::size_t b4b = LineStarting(lines, "   0.5    0.    0.    0.          0.   10.");
+  lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(b4b - 1));
+  const std::size_t b5b = LineStarting(lines, "  0.05   0.2    1.") + 1;
+  lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(b5b - 1),
+              lines.begin() + static_cast<std::ptrdiff_t>(b5b + 1));
+  const std::size_t b4a = LineStarting(lines, "    2.    0.    0.   0.4         60.");
+  lines[b4a - 1].replace(54, 6, "    0.");
+  c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_NE(c.text.find("flexure = polynomial(0, 2 N*m/deg) {\n        energy_loss = 0.4\n"),
+            std::string::npos)
+      << c.text;
+  EXPECT_NE(c.text.find("twist = polynomial(0, 1 N*m/deg)\n"), std::string::npos) << c.text;
 }
 
 // G.2's IREF4 names a frame with prescribed motion (ATB stops otherwise, STOP 223).
@@ -224,10 +257,30 @@ TEST(LegacyPhysicalChecks, FullCoulombRateIsRequiredAndItsRampApproximated) {
 // `viscous` holds them only when they equal B.5.a's.
 TEST(LegacyPhysicalChecks, EulerAxesDampedUnlikeTheFirstAreRefused) {
   std::vector<std::string> lines = CorpusDeck("head_and_ball");
-  const std::size_t b5a = LineStarting(lines, "  0.05    0.    1.");
+  const std::size_t b5a = LineStarting(lines, "  0.05   0.2    1.");
   lines[b5a].replace(0, 6, "   0.1");
   const Converted c = ConvertText(Join(lines));
   EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:1-60: error[E0507]: card B.5.b (joint 1)", b5a + 1)))
+      << c.All();
+}
+
+// The rate of full Coulomb friction (VISC(3)) may differ per Euler axis: sled's `coulomb` ramp
+// does not use it, so each axis whose rate differs is approximated at its own card (W0504) and
+// the joint converts with the one friction torque the three cards share.
+TEST(LegacyPhysicalChecks, EulerAxesWithAnotherFullCoulombRateConvertApproximated) {
+  std::vector<std::string> lines = CorpusDeck("head_and_ball");
+  const std::size_t b5a = LineStarting(lines, "  0.05   0.2    1.");
+  for (std::size_t k = 0; k < 3; ++k) lines[b5a - 1 + k].replace(6, 6, "    2.");
+  lines[b5a].replace(12, 6, "    5.");  // B.5.b: full friction at 5 deg/s, B.5.a and B.5.c at 1
+  Converted c = ConvertText(Join(lines));
+  EXPECT_EQ(c.errors, 0) << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a))) << c.All();
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a + 1))) << c.All();
+  EXPECT_FALSE(c.Has(fmt::format("deck.ain:{}:7-18: warning[W0504]", b5a + 2))) << c.All();
+  EXPECT_NE(c.text.find("coulomb = 2 N*m\n"), std::string::npos) << c.text;
+  lines[b5a + 1].replace(6, 6, "    3.");  // B.5.c: another friction torque
+  c = ConvertText(Join(lines));
+  EXPECT_TRUE(c.Has(fmt::format("deck.ain:{}:1-60: error[E0507]: card B.5.c (joint 1)", b5a + 2)))
       << c.All();
 }
 
