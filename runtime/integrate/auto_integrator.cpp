@@ -112,7 +112,7 @@ AdvanceResult AutoIntegrator::Step(double t_stop) {
     Switch(first);
   }
   const auto start = std::chrono::steady_clock::now();
-  const AdvanceResult result = active().Step(t_stop);
+  AdvanceResult result = active().Step(t_stop);
   mode_wall_seconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.status != IntegratorStatus::kOk) return result;

@@ -19,7 +19,6 @@
 namespace sled::runtime {
 namespace {
 
-using testing::MaxAbsDifference;
 using testing::Tolerance;
 
 // Runs `auto` on `system` from y0 at t = 0 to t_end at the tolerance tol.
