@@ -56,7 +56,8 @@ const IntegratorStats& AutoIntegrator::stats() const {
 bool AutoIntegrator::ShouldSwitch() {
   if (!stiff_) {
     stiff_steps_ = explicit_.stiffness_ratio() > kStiffRatio ? stiff_steps_ + 1 : 0;
-    return steps_in_mode_ >= explicit_min_steps_ && stiff_steps_ >= kStiffSteps;
+    return steps_in_mode_ >= explicit_min_steps_ && stiff_steps_ >= kStiffSteps &&
+           WorthHandingOver();
   }
   // Is the exponential method's step short enough that dopri5, at its stable step, is cheaper?
   const double rate = exponential_.stiff_rate();
@@ -71,6 +72,12 @@ bool AutoIntegrator::ShouldSwitch() {
   // exponential steps in 8 stints instead of 42 (4,446 evaluations instead of 4,540).
   if (steps_in_mode_ == 1 && exponential_.step_size() * rate <= kNotStiff) return true;
   return steps_in_mode_ >= kMinSteps && settled_steps_ >= kSettleSteps;
+}
+
+bool AutoIntegrator::WorthHandingOver() const {
+  // dopri5's steps to the end at its present, stability-bound step.
+  const double left = options_.end_time - explicit_.time();
+  return left > kWorthSteps * explicit_.step_size();
 }
 
 void AutoIntegrator::Switch(double first_step) {
@@ -105,7 +112,7 @@ AdvanceResult AutoIntegrator::Step(double t_stop) {
     Switch(first);
   }
   const auto start = std::chrono::steady_clock::now();
-  const AdvanceResult result = active().Step(t_stop);
+  AdvanceResult result = active().Step(t_stop);
   mode_wall_seconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (result.status != IntegratorStatus::kOk) return result;

@@ -144,6 +144,8 @@ struct IntegratorOptions {
   double max_step = 0.0;      // 0: no limit beyond the output step
   double initial_step = 0.0;  // 0: chosen by the integrator
   double event_tolerance = 1e-12;
+  // Where the run ends (infinity: not known). `auto` weighs a switch against the time left.
+  double end_time = std::numeric_limits<double>::infinity();
 };
 
 struct IntegratorStats {

@@ -75,6 +75,7 @@ IntegratorOptions IntegratorOptionsOf(const Model& model) {
   options.min_step = model.min_step;
   options.max_step = model.max_step;
   options.initial_step = model.initial_step;
+  options.end_time = model.end_time;
   return options;
 }
 

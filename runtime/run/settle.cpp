@@ -125,7 +125,9 @@ SettleSummary Settle(const Model& model, Data& data) {
   MultibodySystem system(held, settling);
   std::vector<double> y(system.size());
   system.Store(y);
-  integrator->Reset(system, t0, y, IntegratorOptionsOf(model));
+  IntegratorOptions options = IntegratorOptionsOf(model);
+  options.end_time = model.start_time;  // the pre-simulation's end
+  integrator->Reset(system, t0, y, options);
 
   std::vector<double> forces;
   std::vector<double> previous;

@@ -19,7 +19,6 @@
 namespace sled::runtime {
 namespace {
 
-using testing::MaxAbsDifference;
 using testing::Tolerance;
 
 // Runs `auto` on `system` from y0 at t = 0 to t_end at the tolerance tol.
@@ -106,29 +105,30 @@ TEST(AutoIntegrator, SwitchesToTheExponentialMethodWhileStiffAndBack) {
 
 constexpr double kDecayRate = 1e4;  // c / m = k / m [1/s, 1/s^2] of the test below
 
+// stiff_decay's block: x'' = -(c x' + k x) / m, decay rates near c / m = 1e4 and k / c = 1 1/s;
+// its structured Jacobian is the spring and the damper.
+class StiffDecay : public OdeSystem {
+ public:
+  std::size_t size() const override { return 2; }
+  bool Derivative(double, std::span<const double> y, std::span<double> dy) override {
+    dy[0] = y[1];
+    dy[1] = -kDecayRate * (y[1] + y[0]);
+    return true;
+  }
+  std::size_t StructuredRank() const override { return 1; }
+  bool StructuredJacobianAt(double, std::span<const double>, std::span<const double>, double,
+                            StructuredJacobian& jacobian) override {
+    jacobian.nilpotent.push_back({0, 1, 1.0});
+    jacobian.stiff_rate = kDecayRate;
+    jacobian.AddColumns(Eigen::Vector2d(0, 1), Eigen::Vector2d(-kDecayRate, -kDecayRate));
+    return true;
+  }
+};
+
 TEST(AutoIntegrator, HandsAStiffDecayOverWithinItsFirstStepsAndMatchesTheClosedForm) {
-  // stiff_decay's block: x'' = -(c x' + k x) / m, decay rates near c / m = 1e4 and k / c = 1
-  // 1/s, from x = 0.1 m at 5 m/s; its structured Jacobian is the spring and the damper. Once the
-  // fast decay has relaxed (about 1 ms) dopri5's steps are held by stability; auto must hand
-  // over then, not after a tenth of the run, and land on the closed form.
-  class StiffDecay : public OdeSystem {
-   public:
-    std::size_t size() const override { return 2; }
-    bool Derivative(double, std::span<const double> y, std::span<double> dy) override {
-      dy[0] = y[1];
-      dy[1] = -kDecayRate * (y[1] + y[0]);
-      return true;
-    }
-    std::size_t StructuredRank() const override { return 1; }
-    bool StructuredJacobianAt(double, std::span<const double>, std::span<const double>, double,
-                              StructuredJacobian& jacobian) override {
-      jacobian.nilpotent.push_back({0, 1, 1.0});
-      jacobian.stiff_rate = kDecayRate;
-      jacobian.AddColumns(Eigen::Vector2d(0, 1), Eigen::Vector2d(-kDecayRate, -kDecayRate));
-      return true;
-    }
-  };
-  // x = A e^(r1 t) + B e^(r2 t), r = (-c +- sqrt(c^2 - 4 m k)) / (2 m).
+  // StiffDecay from x = 0.1 m at 5 m/s. Once the fast decay has relaxed (about 1 ms) dopri5's steps
+  // are held by stability; auto must hand over then, not after a tenth of the run, and land on the
+  // closed form. x = A e^(r1 t) + B e^(r2 t), r = (-c +- sqrt(c^2 - 4 m k)) / (2 m).
   const double root = std::sqrt(kDecayRate * kDecayRate - 4 * kDecayRate);
   const double r1 = (-kDecayRate + root) / 2, r2 = (-kDecayRate - root) / 2;
   const double x0 = 0.1, v0 = 5.0, t_end = 2.0;
@@ -150,6 +150,34 @@ TEST(AutoIntegrator, HandsAStiffDecayOverWithinItsFirstStepsAndMatchesTheClosedF
     EXPECT_LT(std::abs(automatic.state()[0] - exact), 100 * tol * x0);
     // dopri5 alone needs h < 3.3e-4 s all run long: over 6,000 steps.
     EXPECT_LT(s.steps, 600);
+  }
+}
+
+TEST(AutoIntegrator, KeepsDopri5WhenTheRunEndsWithinAFewOfItsStableSteps) {
+  // The stiff decay again, to 4 ms: after the 1 ms transient and dopri5's minimum of 10 steps
+  // (2.6 ms at 1e-6) the rest of the run is about 4 of dopri5's stable steps (3.3e-4 s), fewer
+  // than kWorthSteps, and an exponential step costs several of dopri5's: auto keeps dopri5,
+  // step for step. Told nothing of the end (end_time infinite), it hands over as above.
+  const double y0[] = {0.1, 5.0};
+  const double t_end = 0.004;
+  for (const bool end_known : {true, false}) {
+    StiffDecay a, b;
+    IntegratorOptions options = Tolerance(1e-6);
+    if (end_known) options.end_time = t_end;
+    AutoIntegrator automatic;
+    DormandPrince dopri5;
+    automatic.Reset(a, 0.0, y0, options);
+    dopri5.Reset(b, 0.0, y0, options);
+    ASSERT_EQ(automatic.Advance(t_end).status, IntegratorStatus::kOk);
+    ASSERT_EQ(dopri5.Advance(t_end).status, IntegratorStatus::kOk);
+    if (end_known) {
+      EXPECT_EQ(automatic.stats().switches, 0);
+      EXPECT_EQ(automatic.stats().steps, dopri5.stats().steps);
+      EXPECT_EQ(automatic.state()[0], dopri5.state()[0]);
+    } else {
+      EXPECT_EQ(automatic.stats().switches, 1);
+      EXPECT_TRUE(automatic.stiff_mode());
+    }
   }
 }
 
