@@ -1,8 +1,8 @@
 // `unloading = atb(energy_return = R, permanent_set = G)`: ATB's unloading law on a function
 // (runtime/forces/atb_unloading.h), its factors each a number or a function of the largest
-// deflection. A named function's factors may be functions declared after it, so while the
-// named functions are defined (CheckContext::DefineFunction) the law is read once they all are
-// (ResolvePendingAtbLaws).
+// deflection; optionally an inertial spike (`spike`, `spike_end`) and the origin D0 (`origin`). A
+// named function's factors may be functions declared after it, so while the named functions are
+// defined (CheckContext::DefineFunction) the law is read once they all are (ResolvePendingAtbLaws).
 #include <fmt/format.h>
 
 #include "compiler/check/context.h"
@@ -12,7 +12,8 @@ namespace {
 
 constexpr std::string_view kFormHelp =
     "write `unloading = atb(energy_return = R, permanent_set = G)`, each a number or a function "
-    "of the largest deflection";
+    "of the largest deflection, with `spike = S  spike_end = D` for an inertial spike and "
+    "`origin = D0` for where the function starts";
 
 }  // namespace
 
@@ -64,13 +65,58 @@ void CheckContext::ReadAtbLaw(Scope& scope, const ast::Statement& law, const ast
   const Dimension ratio = dim::kDimensionless;
   const std::string form_help(kFormHelp);
   bool ok = true;
+  const ast::Argument* spike_end = nullptr;
   for (const ast::Argument& argument : call.arguments) {
-    const bool is_return = argument.name == "energy_return";
-    if (!is_return && argument.name != "permanent_set") {
+    const std::string_view name = argument.name;
+    if (name == "spike_end" || name == "origin") {
+      // Deflections (the function's argument): where the spike ends, where the function starts.
+      const auto value = ExpectQuantity(scope, *argument.value, function.argument, name);
+      if (!value) {
+        ok = false;
+        continue;
+      }
+      if (name == "origin") {
+        function.atb_origin = *value;
+        continue;
+      }
+      spike_end = &argument;
+      function.atb_spike_end = *value;
+      if (!(*value > 0)) {
+        Report(DiagnosticKind::kValueOutOfRange, argument.value->range,
+               "the inertial spike's end is not above zero", "out of range",
+               "`spike_end` is the deflection at which ATB drops the spike: above zero");
+        ok = false;
+      }
+      continue;
+    }
+    if (name == "spike") {
+      // A force of the same argument, added to the loading force while it lasts.
+      const auto id =
+          ExpectFunction(scope, law, *argument.value, function.argument, function.result, name);
+      if (!id) {
+        ok = false;
+        continue;
+      }
+      // ATB evaluates the spike as written: unloading attributes on it would be ignored.
+      const Function& spike = scenario_.functions[static_cast<std::size_t>(*id)];
+      if (spike.energy_loss > 0 || spike.permanent_set > 0 || spike.unload_slope ||
+          spike.atb_unloading) {
+        Report(DiagnosticKind::kUnloadingNotApplied, argument.value->range,
+               "the inertial spike does not unload by its own attributes", "a spike that unloads",
+               "the spike is added to the loading force as written and unloads with the "
+               "function it is added to: remove the spike's unloading attributes");
+        ok = false;
+        continue;
+      }
+      function.atb_spike = *id;
+      continue;
+    }
+    const bool is_return = name == "energy_return";
+    if (!is_return && name != "permanent_set") {
       Report(DiagnosticKind::kUnknownArgument,
-             argument.name.empty() ? argument.value->range : argument.name_range,
-             argument.name.empty() ? std::string("`atb` takes named arguments")
-                                   : fmt::format("`atb` takes no argument `{}`", argument.name),
+             name.empty() ? argument.value->range : argument.name_range,
+             name.empty() ? std::string("`atb` takes named arguments")
+                          : fmt::format("`atb` takes no argument `{}`", name),
              "unknown argument", form_help);
       ok = false;
       continue;
@@ -102,6 +148,16 @@ void CheckContext::ReadAtbLaw(Scope& scope, const ast::Statement& law, const ast
   if (ok && function.energy_return < 0) {
     Report(DiagnosticKind::kMissingArgument, call.range, "`atb` needs `energy_return`",
            "no energy return", form_help);
+    ok = false;
+  }
+  // A spike and its end go together: ATB drops the spike at its end, and has no default.
+  if (ok && (function.atb_spike >= 0) != (spike_end != nullptr)) {
+    Report(DiagnosticKind::kMissingArgument, call.range,
+           function.atb_spike >= 0 ? "`atb` with `spike` needs `spike_end`"
+                                   : "`atb` with `spike_end` needs `spike`",
+           "spike without its end",
+           "give the inertial spike as `spike = FUNCTION  spike_end = DEFLECTION`: ATB adds the "
+           "spike to the loading force until the deflection first reaches its end");
     ok = false;
   }
   function.atb_unloading = ok;

@@ -49,6 +49,11 @@ struct Function {
   bool atb_unloading = false;
   int energy_return = -1;
   int atb_permanent_set = -1;
+  // ATB's inertial spike (a function added to the loading force until the largest deflection
+  // reaches atb_spike_end; -1: none) and the origin D0 of the loading energy and permanent set.
+  int atb_spike = -1;
+  double atb_spike_end = 0.0;
+  double atb_origin = 0.0;
   SourceRange range;
 };
 

@@ -51,6 +51,10 @@ std::string FunctionText(const CheckedScenario& s, FunctionId id) {
   if (f.atb_unloading) {
     out += fmt::format(" unload(atb energy_return f{} permanent_set f{})", f.energy_return,
                        f.atb_permanent_set);
+    if (f.atb_spike >= 0) {
+      out += fmt::format(" spike(f{} end {})", f.atb_spike, f.atb_spike_end);
+    }
+    if (f.atb_origin != 0) out += fmt::format(" origin({})", f.atb_origin);
   }
   return out;
 }

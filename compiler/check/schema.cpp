@@ -208,7 +208,8 @@ std::vector<BlockSpec> MakeSpecs() {
                              "slope of the unloading line relative to the loading slope"),
                     Typed("unloading", V::kUnloading,
                           "ATB's law: atb(energy_return = R, permanent_set = G), each a number "
-                          "or a function of the largest deflection")},
+                          "or a function of the largest deflection; spike = S, spike_end = D for "
+                          "an inertial spike, origin = D0 for where the function starts")},
                    {}});
   specs.push_back(
       {BlockKind::kContact,

@@ -51,13 +51,17 @@ std::int32_t Lowering::TorqueFunction(FunctionId id, double joint_energy_loss) {
 }
 
 std::int32_t Lowering::AppendFunction(const compiler::Function& f, double energy_loss) {
-  // ATB's factors are functions of their own, appended first.
+  // ATB's factors and spike are functions of their own, appended first.
   const std::int32_t atb_return = f.atb_unloading ? Function(f.energy_return) : -1;
   const std::int32_t atb_set = f.atb_unloading ? Function(f.atb_permanent_set) : -1;
+  const std::int32_t atb_spike = f.atb_unloading ? Function(f.atb_spike) : -1;
   runtime::FunctionTable& table = model_.functions;
   const auto id_in_model = static_cast<std::int32_t>(table.size());
   table.atb_return.push_back(atb_return);
   table.atb_set.push_back(atb_set);
+  table.atb_spike.push_back(atb_spike);
+  table.atb_spike_end.push_back(atb_spike >= 0 ? f.atb_spike_end : 0.0);
+  table.atb_origin.push_back(f.atb_unloading ? f.atb_origin : 0.0);
   table.constant.push_back(f.kind == compiler::Function::Kind::kConstant ? f.constant : 0.0);
   table.energy_loss.push_back(energy_loss);
   table.permanent_set.push_back(f.permanent_set);

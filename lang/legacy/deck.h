@@ -29,6 +29,9 @@ struct Ref {
 // each a function of the largest deflection; number 0: none (R = 1, G = 0: elastic).
 struct UnloadingRefs {
   Ref r_factor, g_factor;
+  // NF(2) > 0: ATB's inertial spike, added to the loading force until the deflection first
+  // reaches the spike function's E.2 D3 (DEF_NEW_QUADRATIC, DEF_NEW_CUBIC); 0: none.
+  Ref spike;
   // Negative NF(2), NF(3), NF(4): ATB's rate-dependent force F2(D) F3(D') + F4(D')
   // (FUNC_RATE_DEP), the functions |NF|; number 0: none. Only with no spike, R or G.
   Ref rate_scaled_force, rate_scale, rate_force;
@@ -223,6 +226,10 @@ struct FunctionCard {
   double first_part_end = 0;                      // E.2 |D1|: where ATB ends the first part
   std::vector<double> coefficients;               // A0..A5
   std::vector<std::pair<double, double>> points;  // (D, F(D))
+  // E.2 D0 (where ATB starts the function's integral and its permanent set), D3 and D4 (read by
+  // the uses that give them a meaning), with their columns for messages.
+  double origin = 0, d3 = 0, d4 = 0;
+  SourceRange origin_where, d3_where, d4_where;
 };
 
 struct ContactCard {

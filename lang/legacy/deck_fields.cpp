@@ -72,13 +72,8 @@ void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Re
                                      UnloadingRefs* unloading) {
   *force = Reference(card, first, first + 3, "the force-deflection function");
   const int spike = r_.Integer(card, first + 4, first + 7, "the inertial-spike function");
-  if (spike > 0) {
-    Refuse(card, first + 4, first + 7, fmt::format("the inertial-spike function is {}", spike),
-           "ATB adds this function to the loading force until the deflection passes the spike "
-           "function's E.2 D3 and then drops it (DEF_NEW_QUADRATIC, DEF_NEW_CUBIC); how the "
-           "spike enters the force at first contact is in FRCDFL, which the reference does not "
-           "have, so it cannot be converted; leave the field 0 and model the spike by hand");
-  }
+  // ATB's inertial spike: added to the loading force until its E.2 D3 (map_unloading.cpp).
+  if (spike > 0) unloading->spike = Ref{spike, r_.Range(card, first + 4, first + 7), card.label};
   Ref* factors[] = {&unloading->r_factor, &unloading->g_factor};
   const char* names[] = {"the R-factor function", "the G-factor function"};
   for (int i = 0; i < 2; ++i) {
@@ -94,7 +89,7 @@ void DeckFields::ReadFunctionNumbers(const Card& card, int first, Ref* force, Re
               "function",
               "ATB's rate-dependent force (FUNC_RATE_DEP) takes NF(2) to NF(4) all negative or "
               "zero; it cannot be used with an inertial spike or R and G factors");
-      unloading->r_factor.number = unloading->g_factor.number = 0;
+      unloading->r_factor.number = unloading->g_factor.number = unloading->spike.number = 0;
     } else {
       ReadRateTerms(card, first, spike, unloading);
     }

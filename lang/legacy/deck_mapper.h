@@ -70,10 +70,16 @@ class DeckMapper {
     }
   };
   // The unloading of a force function (map_unloading.cpp): elastic, or ATB's law with the R
-  // and G factors of the card that uses it.
+  // and G factors of the card that uses it, its inertial spike (the spike's declared name, and
+  // its end, E.2 D3) and the force function's origin (E.2 D0, map_function_fields.cpp), both in
+  // `argument_unit` (the deflection's, or none for a webbing's strain).
   struct FunctionUnloading {
     bool atb = false;
     FactorValue r{1.0, {}}, g{0.0, {}};
+    FactorValue spike{0.0, {}};
+    double spike_end = 0;
+    double origin = 0;
+    std::string argument_unit;
   };
   // The name under which a function is declared for one kind of use (its units depend on it)
   // and one unloading (ATB's R and G factors of the card that uses it).
@@ -84,6 +90,14 @@ class DeckMapper {
   // The unloading of a force function of `use` under a card's R and G factors; empty after a
   // report.
   std::optional<FunctionUnloading> Unloading(const UnloadingRefs& refs, Use use);
+  // The inertial spike of a card (NF(2) > 0): its declaration and end into `unloading`; false
+  // after a report.
+  bool AddSpike(const Ref& spike, Use use, FunctionUnloading& unloading);
+  // E.2's D0, D3 and D4 of `function` in `use` (map_function_fields.cpp): D0 as the origin of
+  // ATB's law where ATB integrates the function, ignored where no argument reaches below it,
+  // refused elsewhere; D3 as a spike's end; D4 refused. False after a refusal.
+  bool CheckFunctionFields(const FunctionCard& function, const Ref& ref, Use use,
+                           FunctionUnloading& unloading);
   // `unloading = atb(...)` in a function's block, when it has ATB's law.
   void AddUnloading(ast::Statement& statement, const FunctionUnloading& unloading);
   // A contact's `rate_scaled_force`, `rate_scale` and `rate_force` from ATB's rate-dependent
@@ -179,8 +193,13 @@ class DeckMapper {
   std::map<int, std::string> vehicle_ellipsoid_names_;              // by 1-based vehicle
   std::map<std::pair<int, std::string>, std::string> extra_names_;  // (M, frame) -> name
   std::set<int> placed_extras_;
-  // (number, use, ATB's law, R, G) -> the declared name
-  std::map<std::tuple<int, int, bool, FactorValue, FactorValue>, std::string> function_names_;
+  // (number, use, ATB's law, R, G, spike) -> the declared name
+  std::map<std::tuple<int, int, bool, FactorValue, FactorValue, FactorValue>, std::string>
+      function_names_;
+  // A spike's declaration is under way: its D3 is its end, not refused.
+  bool declaring_spike_ = false;
+  // (function, E.2 field) already reported, once for all its uses.
+  std::set<std::pair<int, int>> reported_fields_;
   std::vector<FunctionUse> uses_;
   std::set<int> used_;
   std::vector<std::pair<std::string, std::string>> contact_outputs_;

@@ -430,6 +430,13 @@ class DeckReader : public DeckFields {
       const Card e2 = r_.Next(fmt::format("E.2 ({})", label), {"(6F12.0)", 5});
       double d[5];
       for (int i = 0; i < 5; ++i) d[i] = r_.Real(e2, 12 * i + 1, 12 * i + 12, "D0..D4");
+      // D0, D3 and D4 mean something only in some uses: the mapper judges them there.
+      function.origin = d[0];
+      function.d3 = d[3];
+      function.d4 = d[4];
+      function.origin_where = r_.Range(e2, 1, 12);
+      function.d3_where = r_.Range(e2, 37, 48);
+      function.d4_where = r_.Range(e2, 49, 60);
       if (d[1] == 0) {
         function.form = FunctionCard::Form::kConstant;
         function.constant = d[2];
@@ -437,17 +444,8 @@ class DeckReader : public DeckFields {
         function.form = d[1] > 0 ? FunctionCard::Form::kPolynomial : FunctionCard::Form::kTable;
         function.first_part_end = std::fabs(d[1]);
         ReadFunctionPart(function, d[1] > 0, label);
-        if (d[2] != 0) {
-          Refuse(e2, 25, 36, "a second part of the function (D2 is not zero)",
-                 "ATB continues the function from |D1| to |D2| with a second polynomial (D2 > 0) "
-                 "or table (D2 < 0) (EVALFD_INTEGRAL); a sled function is one polynomial or one "
-                 "table: merge the parts into one table by hand");
-          if (d[2] > 0)
-            r_.Next(fmt::format("E.3 ({}, second part)", label), {"(6F12.0)"});
-          else
-            SkipTable(label);
-        }
-        if (std::fabs(d[1]) != 1) {
+        const bool merged = d[2] != 0 && ReadSecondPart(function, e2, d[1], d[2], label);
+        if (std::fabs(d[1]) != 1 && !merged) {
           Unverified(e2, 13, 24,
                      fmt::format("D1 is {}: ATB's integral of the function (EVALFD_INTEGRAL, the "
                                  "loading energy of an R factor) ends its first part at |D1| and "
@@ -455,22 +453,6 @@ class DeckReader : public DeckFields {
                                  "evaluates the function, is not in the reference)",
                                  d[1], d[1] > 0 ? "polynomial" : "table"));
         }
-      }
-      if (d[0] != 0) {
-        Refuse(e2, 1, 12, fmt::format("D0 is {}", d[0]),
-               "D0 is where ATB starts the function: its integral (the loading energy of an R "
-               "factor) runs from D0 and its permanent deflection is D0 + G (x_max - D0) "
-               "(EVALFD_INTEGRAL, DEF_NEW_QUADRATIC); what its value is below D0 is in EVALFD, "
-               "which the reference does not have: shift the function to start at 0 by hand");
-      }
-      if (d[3] != 0 || d[4] != 0) {
-        Refuse(e2, 37, 60, fmt::format("D3 is {} and D4 is {}", d[3], d[4]),
-               "ATB reads D3 of an inertial-spike function as the deflection where the spike "
-               "ends (DEF_NEW_CUBIC), D3 of a contact's friction function as the restitution "
-               "of its first-contact impulse and D4 as the friction of a rolling constraint "
-               "(PLSEGF), D4 of a plane contact's force function as the share of the "
-               "penetration by which the force's point moves off the deepest point (PLELP); "
-               "none of these has a counterpart in sled: leave them 0");
       }
       auto same = std::find_if(deck_.functions.begin(), deck_.functions.end(),
                                [&](const FunctionCard& f) { return f.number == number; });
@@ -513,9 +495,78 @@ class DeckReader : public DeckFields {
     }
   }
 
-  void SkipTable(const std::string& label) {
-    FunctionCard scratch;
-    ReadFunctionPart(scratch, false, label + ", second part");
+  // E.2 D2 not 0: ATB's second part from |D1| to |D2| (EVALFD_INTEGRAL), a polynomial (D2 > 0)
+  // or a table (D2 < 0). Two tables that meet at |D1| are one table: the first's rows below
+  // |D1|, the value there, the second's rows above it up to |D2|; true when merged so. Any other
+  // pair is refused (a sled function is one polynomial or one table).
+  bool ReadSecondPart(FunctionCard& function, const Card& e2, double d1, double d2,
+                      const std::string& label) {
+    FunctionCard second;
+    ReadFunctionPart(second, d2 > 0, label + ", second part");
+    const double joint = std::fabs(d1), end = std::fabs(d2);
+    std::string why;
+    if (d1 > 0 || d2 > 0) {
+      why =
+          "a polynomial part: a sled function is one polynomial or one table; merge the parts "
+          "into one table by hand";
+    } else if (!(end > joint)) {
+      why = fmt::format("|D2| = {} does not lie beyond |D1| = {}", end, joint);
+    } else if (!Covers(function.points, joint) || second.points.empty() ||
+               second.points.front().first > joint || second.points.back().first <= joint) {
+      why = fmt::format("the tables do not both reach |D1| = {}, where ATB joins them", joint);
+    } else {
+      const double left = Interpolate(function.points, joint);
+      const double right = Interpolate(second.points, joint);
+      if (std::fabs(left - right) > 1e-9 * std::max(std::fabs(left), std::fabs(right))) {
+        why = fmt::format(
+            "the first table gives {} at |D1| = {} and the second {}: a jump, which "
+            "a sled table cannot have",
+            left, joint, right);
+      }
+    }
+    if (!why.empty()) {
+      Refuse(e2, 25, 36, "a second part of the function (D2 is not zero)",
+             "ATB continues the function from |D1| to |D2| with a second polynomial (D2 > 0) or "
+             "table (D2 < 0) (EVALFD_INTEGRAL); it converts when both parts are tables that meet "
+             "at |D1|, not here: " +
+                 why);
+      return false;
+    }
+    std::vector<std::pair<double, double>> rows;
+    for (const auto& row : function.points) {
+      if (row.first < joint) rows.push_back(row);
+    }
+    rows.emplace_back(joint, Interpolate(function.points, joint));
+    for (const auto& row : second.points) {
+      if (row.first > joint && row.first < end) rows.push_back(row);
+    }
+    if (second.points.back().first >= end) rows.emplace_back(end, Interpolate(second.points, end));
+    function.points = std::move(rows);
+    function.first_part_end = end;
+    if (function.points.back().first != end) {
+      Unverified(e2, 25, 36,
+                 fmt::format("the second table ends at {}, before |D2| = {}: ATB's integral of "
+                             "the function (the loading energy of an R factor) stops at its "
+                             "last row; sled's table goes on at its last slope",
+                             function.points.back().first, end));
+    }
+    return true;
+  }
+
+  // The table's rows reach from at or below x to at or above it.
+  static bool Covers(const std::vector<std::pair<double, double>>& rows, double x) {
+    return !rows.empty() && rows.front().first <= x && rows.back().first >= x;
+  }
+
+  // The table's value at x, linear between its rows (x within them).
+  static double Interpolate(const std::vector<std::pair<double, double>>& rows, double x) {
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+      if (x > rows[k].first) continue;
+      const auto& [x0, y0] = rows[k - 1];
+      const auto& [x1, y1] = rows[k];
+      return y0 + (y1 - y0) * (x - x0) / (x1 - x0);
+    }
+    return rows.back().second;
   }
 
   // --- F: allowed contacts -----------------------------------------------------------------

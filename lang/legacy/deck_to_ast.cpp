@@ -177,10 +177,10 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
                                                  const UnloadingRefs& factors) {
   const FunctionCard* function = Function(ref);
   if (function == nullptr) return std::nullopt;
-  const auto unloading = Unloading(factors, use);
-  if (!unloading) return std::nullopt;
+  auto unloading = Unloading(factors, use);
+  if (!unloading || !CheckFunctionFields(*function, ref, use, *unloading)) return std::nullopt;
   auto key = std::make_tuple(function->number, static_cast<int>(use), unloading->atb, unloading->r,
-                             unloading->g);
+                             unloading->g, unloading->spike);
   auto found = function_names_.find(key);
   if (found == function_names_.end()) {
     const bool load = use == Use::kLoadForce || use == Use::kLoadTorque;

@@ -6,7 +6,9 @@
 // force at G x_max through (x_max, f(x_max)) gives back R of the loading energy, and reloading
 // climbs a cubic to the loading function at x_max. A constant factor is written as a number,
 // one that changes with x_max as a function of the force function's argument (the deflection
-// of a contact, the strain of a webbing) to a ratio, declared from its E cards.
+// of a contact, the strain of a webbing) to a ratio, declared from its E cards. An inertial
+// spike (NF(2)) is added to the loading force until the deflection first reaches the spike
+// function's D3: `spike = NAME  spike_end = D3` in the same law.
 #include <fmt/format.h>
 
 #include "lang/legacy/ast_pieces.h"
@@ -26,8 +28,43 @@ std::optional<DeckMapper::FactorValue> DeckMapper::Factor(const Ref& ref, Use us
   return FactorValue{0.0, declared->PathText()};
 }
 
+bool DeckMapper::AddSpike(const Ref& spike, Use use, FunctionUnloading& unloading) {
+  if (spike.number <= 0) return true;
+  const FunctionCard* function = Function(spike);
+  if (function == nullptr) return false;
+  if (!(function->d3 > 0)) {
+    Report(DiagnosticKind::kDeckNotExpressible, Ref{spike.number, function->d3_where, "E.2"},
+           fmt::format("card E.2: function {}, the inertial spike of card {}, has D3 = {}",
+                       spike.number, spike.card, function->d3),
+           "ATB drops the spike at the first largest deflection past its end: the spike "
+           "function's D3 when it is above 0 (DEF_NEW_CUBIC); with D3 at 0 or below the end is "
+           "set in FRCDFL, which the reference does not have. Give the spike's end as D3");
+    return false;
+  }
+  Report(DiagnosticKind::kDeckUnverifiedField, spike,
+         fmt::format("card {}: the inertial spike (function {}) is added to the loading force "
+                     "until the largest deflection reaches its D3 = {}, then dropped, as the V.3 "
+                     "description says; FRCDFL, which sets that end and evaluates the loading "
+                     "curve, is not in the reference",
+                     spike.card, spike.number, function->d3),
+         "compare the converted run with ATB's where the spike matters");
+  declaring_spike_ = true;
+  auto declared = FunctionFor(spike, use);
+  declaring_spike_ = false;
+  if (!declared) return false;
+  unloading.atb = true;
+  unloading.spike = FactorValue{0.0, declared->PathText()};
+  unloading.spike_end = function->d3;
+  return true;
+}
+
 std::optional<DeckMapper::FunctionUnloading> DeckMapper::Unloading(const UnloadingRefs& refs,
                                                                    Use use) {
+  // A spike puts the function under ATB's law even when it is elastic (R = 1): ATB then
+  // unloads along its loading curve, the function plus the spike while it lasts.
+  FunctionUnloading spiked;
+  spiked.argument_unit = use == Use::kBelt ? "" : L;
+  if (!AddSpike(refs.spike, use, spiked)) return std::nullopt;
   const auto r = Factor(refs.r_factor, use, 1.0);
   if (!r) return std::nullopt;
   if (r->function.empty() && (r->constant < 0 || r->constant > 1)) {
@@ -48,7 +85,7 @@ std::optional<DeckMapper::FunctionUnloading> DeckMapper::Unloading(const Unloadi
                          refs.g_factor.card, refs.g_factor.number),
              "give an R factor below 1 for a contact that loses energy");
     }
-    return FunctionUnloading{};
+    return spiked;
   }
   const auto g = Factor(refs.g_factor, use, 0.0);
   if (!g) return std::nullopt;
@@ -60,7 +97,10 @@ std::optional<DeckMapper::FunctionUnloading> DeckMapper::Unloading(const Unloadi
            "including, 1 (ATB divides by 1 - G)");
     return std::nullopt;
   }
-  return FunctionUnloading{true, *r, *g};
+  spiked.atb = true;
+  spiked.r = *r;
+  spiked.g = *g;
+  return spiked;
 }
 
 void DeckMapper::AddUnloading(ast::Statement& statement, const FunctionUnloading& unloading) {
@@ -71,6 +111,13 @@ void DeckMapper::AddUnloading(ast::Statement& statement, const FunctionUnloading
   std::vector<std::pair<std::string, ast::Expr>> arguments;
   arguments.emplace_back("energy_return", factor(unloading.r));
   arguments.emplace_back("permanent_set", factor(unloading.g));
+  if (!unloading.spike.function.empty()) {
+    arguments.emplace_back("spike", Path(unloading.spike.function));
+    arguments.emplace_back("spike_end", Number(unloading.spike_end, unloading.argument_unit));
+  }
+  if (unloading.origin != 0) {
+    arguments.emplace_back("origin", Number(unloading.origin, unloading.argument_unit));
+  }
   Add(statement, Attribute("unloading", Call("atb", std::move(arguments))));
 }
 

@@ -2,11 +2,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "runtime/forces/functions.h"
 
 namespace sled::runtime {
 namespace {
+
+// The inertial spike still added to the loading force (-1: none, or dropped).
+std::int32_t ActiveSpike(const FunctionTable& functions, std::int32_t id, const LoadingHistory& h) {
+  const auto f = static_cast<std::size_t>(id);
+  const bool given = f < functions.atb_spike.size() && f < functions.atb_spike_end.size();
+  return h.spike_dropped || !given ? -1 : functions.atb_spike[f];
+}
+
+double Origin(const FunctionTable& functions, std::int32_t id) {
+  const auto f = static_cast<std::size_t>(id);
+  return f < functions.atb_origin.size() ? functions.atb_origin[f] : 0.0;
+}
+
+// ATB's loading curve: the function plus the inertial spike while it lasts.
+double LoadingForce(const FunctionTable& functions, std::int32_t id, double x,
+                    const LoadingHistory& h) {
+  return EvaluateFunction(functions, id, x) +
+         EvaluateFunction(functions, ActiveSpike(functions, id, h), x);
+}
+
+double LoadingSlope(const FunctionTable& functions, std::int32_t id, double x,
+                    const LoadingHistory& h) {
+  return FunctionSlope(functions, id, x) +
+         FunctionSlope(functions, ActiveSpike(functions, id, h), x);
+}
 
 double Quadratic(const LoadingHistory& h, double u) {
   return u * (h.quadratic[0] + u * h.quadratic[1]);
@@ -51,17 +77,26 @@ void DefineQuadratic(LoadingHistory& h, double top, double force, double returne
 void NewLargestDeflection(const FunctionTable& functions, std::int32_t id, double x,
                           LoadingHistory& h) {
   const auto f = static_cast<std::size_t>(id);
+  // ATB drops the spike for good at the first largest deflection past its end (DINER).
+  if (ActiveSpike(functions, id, h) >= 0 && x >= functions.atb_spike_end[f]) {
+    h.spike_dropped = true;
+  }
   h.max_deflection = x;
-  h.max_force = EvaluateFunction(functions, id, x);
+  h.max_force = LoadingForce(functions, id, x, h);
   h.unloading = true;
   h.energy_return = EvaluateFunction(functions, functions.atb_return[f], x);
   // ATB compares R with 1 exactly: only then does it unload along f.
   h.elastic = h.energy_return == 1.0;
   h.permanent = 0.0;
   if (h.elastic) return;
+  // The permanent set and the loading energy (of the function alone) count from the origin D0.
   const std::int32_t set = f < functions.atb_set.size() ? functions.atb_set[f] : -1;
-  h.permanent = set >= 0 ? EvaluateFunction(functions, set, x) * x : 0.0;
-  DefineQuadratic(h, x, h.max_force, h.energy_return * IntegrateFunction(functions, id, x));
+  const double origin = Origin(functions, id);
+  const double share = set >= 0 ? EvaluateFunction(functions, set, x) : 0.0;
+  h.permanent = origin + share * (x - origin);
+  const double energy =
+      IntegrateFunction(functions, id, x) - IntegrateFunction(functions, id, origin);
+  DefineQuadratic(h, x, h.max_force, h.energy_return * energy);
 }
 
 // A cubic (in s = x - x1) with a zero of its slope inside (0, dx) whose value there is below zero.
@@ -87,7 +122,7 @@ void TurnToReload(const FunctionTable& functions, std::int32_t id, double x, Loa
   const double y1 = Quadratic(h, x1 - h.permanent);
   const double y1_slope = QuadraticSlope(h, x1 - h.permanent);
   const double y2 = h.max_force;
-  const double y2_slope = FunctionSlope(functions, id, h.max_deflection);
+  const double y2_slope = LoadingSlope(functions, id, h.max_deflection, h);
   // Value and slope of the quadratic at x1, value and slope of f at x_max.
   const double r13 = (y2 - y1 - y1_slope * dx) / (dx * dx);
   const double r23 = (y2_slope - y1_slope) / dx;
@@ -121,20 +156,30 @@ std::int32_t AtbReturnFunction(const FunctionTable& functions, std::int32_t id) 
 
 double AtbForce(const FunctionTable& functions, std::int32_t id, double x,
                 const LoadingHistory& h) {
-  if (h.elastic || x >= h.max_deflection) return EvaluateFunction(functions, id, x);
+  if (h.elastic || x >= h.max_deflection) return LoadingForce(functions, id, x, h);
   if (!h.unloading && x > h.cubic_start) return Cubic(h.cubic, x - h.cubic_start);
   return x > h.permanent ? Quadratic(h, x - h.permanent) : 0.0;
 }
 
 double AtbSlope(const FunctionTable& functions, std::int32_t id, double x,
                 const LoadingHistory& h) {
-  if (h.elastic || x >= h.max_deflection) return FunctionSlope(functions, id, x);
+  if (h.elastic || x >= h.max_deflection) return LoadingSlope(functions, id, x, h);
   if (!h.unloading && x > h.cubic_start) return CubicSlope(h.cubic, x - h.cubic_start);
   return x > h.permanent ? QuadraticSlope(h, x - h.permanent) : 0.0;
 }
 
-double AtbTurnFunction(double x, double rate, const LoadingHistory& h) {
-  if (x > h.max_deflection) return rate;
+std::int32_t AtbSpikeFunction(const FunctionTable& functions, std::int32_t id) {
+  const auto f = static_cast<std::size_t>(id);
+  return id >= 0 && f < functions.atb_spike.size() ? functions.atb_spike[f] : -1;
+}
+
+double AtbSpikeEnd(const FunctionTable& functions, std::int32_t id, const LoadingHistory& h) {
+  if (ActiveSpike(functions, id, h) < 0) return std::numeric_limits<double>::infinity();
+  return functions.atb_spike_end[static_cast<std::size_t>(id)];
+}
+
+double AtbTurnFunction(double x, double rate, const LoadingHistory& h, double spike_end) {
+  if (x > h.max_deflection) return std::min(rate, spike_end - x);
   if (h.elastic) return 1.0;
   if (h.unloading) return std::min(-rate, x - h.permanent);
   return x > h.cubic_start ? rate : 1.0;

@@ -3,13 +3,16 @@
 // permanent_set = G)`. R and G are functions of the largest deflection x_max, evaluated where a
 // new x_max is set (a constant is the usual case).
 //
-// - Loading beyond x_max follows f.
-// - At a new x_max with R(x_max) = 1 the function unloads along f (elastic).
+// - Loading beyond x_max follows f, plus the inertial spike s (ATB's NF(2)) until the first
+//   x_max at or past the spike's end, where ATB drops it for good (DEF_NEW_QUADRATIC).
+// - At a new x_max with R(x_max) = 1 the function unloads along its loading curve (elastic).
 // - Otherwise it unloads along the quadratic Q(u) = A1 u + A2 u^2, u = x - x_g, from zero force
-//   at x_g = G x_max to (x_max, f(x_max)) whose area is R times the loading energy
-//   E = integral of f from 0 to x_max: A1 = 2 / d (3 R E / d - f(x_max)), d = x_max - x_g. A
-//   negative A1 is taken as 0 (then Q returns f d / 3, more than R E); a negative A2 makes Q the
-//   straight line to (x_max, f(x_max)) (then f d / 2, less). Below x_g the force is zero.
+//   at x_g = D0 + G (x_max - D0) to (x_max, F(x_max)), F the loading curve (f plus the spike
+//   while it lasts), whose area is R times the loading energy E = integral of f (without the
+//   spike) from D0 to x_max, D0 the function's origin (0 unless given): A1 = 2 / d (3 R E / d -
+//   f(x_max)), d = x_max - x_g. A negative A1 is taken as 0 (then Q returns f d / 3, more than R
+//   E); a negative A2 makes Q the straight line to (x_max, f(x_max)) (then f d / 2, less). Below
+//   x_g the force is zero.
 // - Where it turns to reload, at x_t (no lower than x_g), it reloads along the cubic C from
 //   (x_t, Q(x_t)) with Q's slope to (x_max, f(x_max)) with f's slope there; a cubic whose lowest
 //   point between the two is below zero force becomes the straight line between them.
@@ -25,6 +28,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 
 #include "runtime/forces/force_deflection.h"
 #include "runtime/model/model.h"
@@ -40,11 +44,19 @@ double AtbForce(const FunctionTable& functions, std::int32_t id, double x,
 double AtbSlope(const FunctionTable& functions, std::int32_t id, double x,
                 const LoadingHistory& history);
 
+// The inertial spike of the force function `id` under ATB's law, -1 without one.
+std::int32_t AtbSpikeFunction(const FunctionTable& functions, std::int32_t id);
+
+// Where the inertial spike still on the loading curve drops (infinity: none, or dropped).
+double AtbSpikeEnd(const FunctionTable& functions, std::int32_t id, const LoadingHistory& history);
+
 // The event function of a turn: the deflection rate while loading beyond x_max or reloading, so
-// it falls through zero where the deflection turns; while unloading the smaller of minus the
-// rate and x - x_g (falls through zero where the deflection turns to reload, or passes x_g);
-// 1 where no turn changes the history. `x` is the signed deflection (below zero: apart).
-double AtbTurnFunction(double x, double rate, const LoadingHistory& history);
+// it falls through zero where the deflection turns (loading, also where it reaches
+// `spike_end`, the end of an inertial spike); while unloading the smaller of minus the rate and
+// x - x_g (falls through zero where the deflection turns to reload, or passes x_g); 1 where no
+// turn changes the history. `x` is the signed deflection (below zero: apart).
+double AtbTurnFunction(double x, double rate, const LoadingHistory& history,
+                       double spike_end = std::numeric_limits<double>::infinity());
 
 // At a turn at deflection x (clamped to zero and above, as ATB does): a new x_max, the turn to
 // reload, or the turn back while reloading, by the branch the history is on.

@@ -42,7 +42,9 @@ bool HasHysteresis(const FunctionTable& functions, std::int32_t id) {
 
 double TurnEventFunction(const FunctionTable& functions, std::int32_t id, double x, double rate,
                          const LoadingHistory& history) {
-  if (AtbReturnFunction(functions, id) >= 0) return AtbTurnFunction(x, rate, history);
+  if (AtbReturnFunction(functions, id) >= 0) {
+    return AtbTurnFunction(x, rate, history, AtbSpikeEnd(functions, id, history));
+  }
   return x > history.max_deflection ? rate : 1.0;
 }
 

@@ -46,6 +46,8 @@ struct LoadingHistory {
   double quadratic[2] = {0.0, 0.0};
   double cubic_start = 0.0;
   double cubic[4] = {0.0, 0.0, 0.0, 0.0};
+  // ATB's inertial spike has been dropped: a largest deflection reached its end.
+  bool spike_dropped = false;
 };
 
 // F(x) under the committed history.

@@ -56,6 +56,12 @@ struct FunctionTable {
   // G = 0). atb_return -1 (or empty): the function unloads by the parameters above instead.
   std::vector<std::int32_t> atb_return;
   std::vector<std::int32_t> atb_set;
+  // ATB's law only (each per function, or empty: none): the inertial spike, a function added to
+  // the loading force until a largest deflection reaches atb_spike_end (-1: none), and the
+  // origin D0 from which ATB integrates the loading energy and measures the permanent set.
+  std::vector<std::int32_t> atb_spike;
+  std::vector<double> atb_spike_end;
+  std::vector<double> atb_origin;
   std::vector<double> points_x;
   std::vector<double> points_y;
   std::vector<double> coefficients;

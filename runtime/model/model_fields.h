@@ -127,6 +127,9 @@ enum FieldCheck : unsigned {
   X(FunctionUnload, functions.unload_slope, Physics, None, kNonNegative)                   \
   X(FunctionUnload, functions.atb_return, Physics, Function, kOrNone)                      \
   X(FunctionUnload, functions.atb_set, Physics, Function, kOrNone)                         \
+  X(FunctionUnload, functions.atb_spike, Physics, Function, kOrNone)                       \
+  X(FunctionUnload, functions.atb_spike_end, Physics, None, kPlain)                        \
+  X(FunctionUnload, functions.atb_origin, Physics, None, kPlain)                           \
   X(FunctionPoint, functions.points_x, Physics, None, kPlain)                              \
   X(FunctionPoint, functions.points_y, Physics, None, kPlain)                              \
   X(Coefficient, functions.coefficients, Physics, None, kPlain)                            \

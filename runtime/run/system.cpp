@@ -15,6 +15,7 @@
 #include "runtime/dynamics/constraints.h"
 #include "runtime/dynamics/dynamics.h"
 #include "runtime/dynamics/joint.h"
+#include "runtime/forces/atb_unloading.h"
 #include "runtime/forces/force_deflection.h"
 #include "runtime/forces/forces.h"
 #include "runtime/forces/functions.h"
@@ -99,8 +100,12 @@ MultibodySystem::MultibodySystem(const Model& model, Data& data)
         {model.contacts.pair_impulse[k] ? EventKind::kContactImpulse : EventKind::kContactTouch,
          k});
     if (data.contacts.hysteresis[k]) events_.push_back({EventKind::kContactTurn, k});
-    for (const double row : TableKinks(model.functions, model.contacts.pair_function[k])) {
-      if (row > 0) events_.push_back({EventKind::kContactKink, k, 0.0, row});
+    // (An inertial spike's rows are kinks of the loading curve too.)
+    const std::int32_t force = model.contacts.pair_function[k];
+    for (const std::int32_t f : {force, AtbSpikeFunction(model.functions, force)}) {
+      for (const double row : TableKinks(model.functions, f)) {
+        if (row > 0) events_.push_back({EventKind::kContactKink, k, 0.0, row});
+      }
     }
   }
   for (std::size_t k = 0; k < model.contacts.npair(); ++k) {

@@ -17,10 +17,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::ReadDeckFile;
-
 constexpr double kInch = 0.0254;
 
 // The corpus deck with its D.6 card (KQTYPE 2, KQ1, KQ2, RK1, RK2) replaced by `d6`.

@@ -15,8 +15,10 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "legacy_test_deck.h"
@@ -28,9 +30,6 @@ namespace sled::lang::legacy {
 namespace {
 
 namespace fs = std::filesystem;
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::ReadDeckFile;
 
 const fs::path kCorpus = fs::path(SLED_SOURCE_ROOT) / "tests/legacy/corpus";
 
@@ -132,6 +131,25 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
   };
   if (field == "pair_energy_return_at") return factor(c.pair_function.at(i), true);
   if (field == "pair_permanent_set_at") return factor(c.pair_function.at(i), false);
+  // ATB's inertial spike of a contact's force function (at a deflection), its end, and the
+  // function's origin D0.
+  auto per_function = [&](const auto& values, std::int32_t function) {
+    const auto f = static_cast<std::size_t>(function);
+    using Value = typename std::decay_t<decltype(values)>::value_type;
+    return f < values.size() ? std::optional<Value>(values[f]) : std::nullopt;
+  };
+  if (field == "pair_spike_at") {
+    const auto spike = per_function(m.functions.atb_spike, c.pair_function.at(i));
+    return spike && *spike >= 0 ? at(*spike) : std::vector<double>{};
+  }
+  if (field == "pair_spike_end") {
+    const auto end = per_function(m.functions.atb_spike_end, c.pair_function.at(i));
+    return end ? std::vector<double>{*end} : std::vector<double>{};
+  }
+  if (field == "pair_origin") {
+    const auto origin = per_function(m.functions.atb_origin, c.pair_function.at(i));
+    return origin ? std::vector<double>{*origin} : std::vector<double>{};
+  }
   if (field == "pair_rate_scaled_force_at") return at(c.pair_rate_scaled_force.at(i));
   if (field == "pair_rate_scale_at") return at(c.pair_rate_scale.at(i));
   if (field == "pair_rate_force_at") return at(c.pair_rate_force.at(i));

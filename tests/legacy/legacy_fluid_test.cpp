@@ -13,13 +13,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::Join;
-using deck_testing::Lines;
-using deck_testing::LineStarting;
-using deck_testing::ReadDeckFile;
-
 std::string Corpus() {
   return ReadDeckFile(std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/wind_and_water.ain");
 }

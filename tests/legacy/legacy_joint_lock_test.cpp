@@ -16,13 +16,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::Join;
-using deck_testing::Lines;
-using deck_testing::LineStarting;
-using deck_testing::ReadDeckFile;
-
 const std::string kDeck = std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain";
 
 // two_segments' lines, and the number of HIP's B.3.a line and of its B.5.a line.

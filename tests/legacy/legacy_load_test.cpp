@@ -20,9 +20,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-
 constexpr double kPound = 4.4482216152605;  // N
 constexpr double kInch = 0.0254;            // m
 // BOXS: 10 lb over G = 386.088 in/s^2; its moment about z 4 lb*s^2*in.

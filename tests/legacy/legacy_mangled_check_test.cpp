@@ -15,12 +15,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::kLegacyDir;
-using deck_testing::Lines;
-using deck_testing::ReadDeckFile;
-
 // A number's span in a fixed-column line: a run of characters that can be part of a Fortran
 // number, bounded by blanks.
 struct Span {

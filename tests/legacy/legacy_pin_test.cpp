@@ -15,13 +15,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::Join;
-using deck_testing::Lines;
-using deck_testing::LineStarting;
-using deck_testing::ReadDeckFile;
-
 constexpr double kPoundInch = 4.4482216152605 * 0.0254;  // N*m
 
 struct PinDeck {

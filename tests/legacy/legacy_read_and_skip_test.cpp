@@ -16,12 +16,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::Join;
-using deck_testing::Lines;
-using deck_testing::LineStarting;
-using deck_testing::ReadDeckFile;
-
 // seated_occupant has a D.4 airbag, converted only with --approximate-airbags.
 Converted ConvertLines(const std::vector<std::string>& lines) {
   ConvertOptions options;

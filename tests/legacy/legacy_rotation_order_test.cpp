@@ -17,13 +17,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::Join;
-using deck_testing::Lines;
-using deck_testing::LineStarting;
-using deck_testing::ReadDeckFile;
-
 const std::string kDeck = std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/two_segments.ain";
 
 Eigen::Matrix3d About(const Eigen::Vector3d& axis, double degrees) {

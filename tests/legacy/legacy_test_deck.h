@@ -114,3 +114,16 @@ void ExpectEveryCutIsReported(const std::string& deck, ConvertFunction convert,
 }
 
 }  // namespace sled::lang::legacy::deck_testing
+
+namespace sled::lang::legacy {
+
+// Every legacy test lives in sled::lang::legacy: the helpers by their short names there.
+using deck_testing::Converted;
+using deck_testing::ConvertText;
+using deck_testing::Join;
+using deck_testing::kLegacyDir;
+using deck_testing::Lines;
+using deck_testing::LineStarting;
+using deck_testing::ReadDeckFile;
+
+}  // namespace sled::lang::legacy

@@ -11,11 +11,6 @@
 namespace sled::lang::legacy {
 namespace {
 
-using deck_testing::Converted;
-using deck_testing::ConvertText;
-using deck_testing::kLegacyDir;
-using deck_testing::ReadDeckFile;
-
 // Converts and compiles one of examples/legacy/ (with --approximate-airbags, as its tests do).
 Compilation CompileDeck(const std::string& name) {
   ConvertOptions options;

@@ -142,7 +142,7 @@ TEST(LegacyUnloading, WhatSledCannotExpressIsRefusedAtItsColumns) {
     std::string f3, f4;
     const char* expected;
   } cases[] = {
-      {"   3", "   0", "   0", r, g, ":21-24: error[E0507]"},  // the inertial spike
+      {"   3", "   0", "   0", r, g, ":37-48: error[E0507]"},  // a spike without its end D3
       {"  -3", "   4", "   0", r, g, ":21-32: error[E0512]"},  // rate terms beside R
       {"   0", "   3", "   4", Constant(3, "R 1.5", "1.5"), g, ":25-28: error[E0512]"},
       {"   0", "   3", "   4", r, Constant(4, "G 1", "1."), ":29-32: error[E0512]"},

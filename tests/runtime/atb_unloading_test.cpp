@@ -174,5 +174,90 @@ TEST(AtbUnloading, TurnEventsFallThroughZeroWhereTheHistoryMustChange) {
   EXPECT_EQ(TurnEventFunction(f, id, 0.05, 1.5, h), 1.5);   // reloading: the rate
 }
 
+// Gives function `id` ATB's inertial spike `spike` ending at `end` and the origin D0 (the other
+// functions none: the arrays are per function).
+void SetSpikeAndOrigin(FunctionTable& f, std::int32_t id, std::int32_t spike, double end,
+                       double origin) {
+  f.atb_spike.assign(f.size(), -1);
+  f.atb_spike_end.assign(f.size(), 0.0);
+  f.atb_origin.assign(f.size(), 0.0);
+  const auto at = static_cast<std::size_t>(id);
+  f.atb_spike[at] = spike;
+  f.atb_spike_end[at] = end;
+  f.atb_origin[at] = origin;
+}
+
+TEST(AtbUnloading, TheSpikeLoadsWithTheFunctionUntilALargestDeflectionPassesItsEnd) {
+  // f = k x plus a spike of 500 N ending at 0.05 m, R = 0.6, G = 0.25. Loaded to x_max = 0.04 m
+  // (before the end): F(x_max) = 4000 + 500 N, the energy of f alone 80 J, x_g = 0.01 m,
+  // d = 0.03 m: A1 = 2/d (3 R E / d - F) = 20000 N/m, A2 = (F / d - A1) / d = 13e6/3 N/m^2,
+  // whose area A1 d^2 / 2 + A2 d^3 / 3 = 9 + 39 J is R E = 48 J.
+  FunctionTable f;
+  const std::int32_t spike = AddConstant(f, 500.0);
+  const std::int32_t id = AddAtbLine(f, AddConstant(f, 0.6), AddConstant(f, 0.25));
+  SetSpikeAndOrigin(f, id, spike, 0.05, 0.0);
+  LoadingHistory h;
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.03, h), 3500.0);
+  EXPECT_DOUBLE_EQ(LoadingUnloadingSlope(f, id, 0.03, h), kStiffness);
+  UpdateLoadingHistory(f, id, 0.04, h);
+  EXPECT_FALSE(h.spike_dropped);
+  EXPECT_DOUBLE_EQ(h.max_force, 4500.0);
+  EXPECT_NEAR(h.quadratic[0], 20000.0, 1e-8);
+  EXPECT_NEAR(h.quadratic[1], 13e6 / 3, 1e-6);
+  EXPECT_NEAR(Returned(f, id, h), 48.0, 1e-9);
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.045, h), 5000.0);  // loading on, spike still
+  // The turn event falls through zero where the deflection reaches the spike's end.
+  EXPECT_DOUBLE_EQ(TurnEventFunction(f, id, 0.045, 1.0, h), 0.05 - 0.045);
+  EXPECT_LT(TurnEventFunction(f, id, 0.051, 1.0, h), 0.0);
+  UpdateLoadingHistory(f, id, 0.051, h);
+  EXPECT_TRUE(h.spike_dropped);
+  EXPECT_DOUBLE_EQ(h.max_force, 5100.0);  // f alone from here on
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.06, h), 6000.0);
+  EXPECT_EQ(TurnEventFunction(f, id, 0.06, 1.0, h), 1.0);  // the rate: no spike left to drop
+}
+
+TEST(AtbUnloading, AnElasticSpikeLoadsAndUnloadsAlongTheFunctionPlusTheSpike) {
+  // R = 1: ATB unloads along its loading curve, which holds the spike until its end.
+  FunctionTable f;
+  const std::int32_t spike = testing::AddTableFunction(f, {{0, 800}, {0.1, 0}});
+  f.atb_return.push_back(-1);
+  f.atb_set.push_back(-1);
+  const std::int32_t id = AddAtbLine(f, AddConstant(f, 1.0), -1);
+  SetSpikeAndOrigin(f, id, spike, 0.05, 0.0);
+  LoadingHistory h;
+  UpdateLoadingHistory(f, id, 0.04, h);
+  EXPECT_TRUE(h.elastic);
+  // k x + 800 (1 - x / 0.1) at 0.02 m on the way down: 2000 + 640 N; slope k - 8000 N/m.
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.02, h), 2640.0);
+  EXPECT_DOUBLE_EQ(LoadingUnloadingSlope(f, id, 0.02, h), kStiffness - 8000.0);
+  UpdateLoadingHistory(f, id, 0.05, h);  // reaches the end: dropped, k x alone both ways
+  EXPECT_DOUBLE_EQ(LoadingUnloadingForce(f, id, 0.02, h), 2000.0);
+}
+
+TEST(AtbUnloading, TheOriginStartsTheLoadingEnergyAndThePermanentSet) {
+  // D0 = 0.01 m, f = k x, R = 0.6, G = 0.25, x_max = 0.1 m: x_g = D0 + G (x_max - D0) =
+  // 0.0325 m, E = k (x_max^2 - D0^2) / 2 = 495 J, so the quadratic returns R E = 297 J:
+  // d = 0.0675 m, A1 = 2/d (3 R E / d - f(x_max)) = 2/d (13200 - 10000) N.
+  FunctionTable f;
+  const std::int32_t id = AddAtbLine(f, AddConstant(f, 0.6), AddConstant(f, 0.25));
+  SetSpikeAndOrigin(f, id, -1, 0.0, 0.01);
+  LoadingHistory h;
+  UpdateLoadingHistory(f, id, 0.1, h);
+  EXPECT_NEAR(h.permanent, 0.0325, 1e-15);
+  EXPECT_NEAR(h.quadratic[0], 2 / 0.0675 * 3200, 1e-8);
+  EXPECT_NEAR(Returned(f, id, h), 297.0, 1e-9);
+  EXPECT_EQ(LoadingUnloadingForce(f, id, 0.03, h), 0.0);  // below x_g
+  // Without G the force reaches zero at D0 itself; d = 0.09 m makes A1 negative, clamped to 0,
+  // so the quadratic returns f(x_max) d / 3 = 300 J (more than R E, ATB's clamp).
+  FunctionTable g;
+  const std::int32_t no_set = AddAtbLine(g, AddConstant(g, 0.6), -1);
+  SetSpikeAndOrigin(g, no_set, -1, 0.0, 0.01);
+  LoadingHistory h0;
+  UpdateLoadingHistory(g, no_set, 0.1, h0);
+  EXPECT_NEAR(h0.permanent, 0.01, 1e-15);
+  EXPECT_EQ(h0.quadratic[0], 0.0);
+  EXPECT_NEAR(Returned(g, no_set, h0), 300.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace sled::runtime

@@ -34,6 +34,8 @@ struct Contact {
   double permanent_set = 0.0;
   double atb_return = -1.0;  // ATB's law with these constant R and G when R >= 0
   double atb_set = 0.0;
+  double atb_spike = 0.0;  // ATB's inertial spike, a constant force, until atb_spike_end (m)
+  double atb_spike_end = 0.0;
   bool damping_as_rate_terms = false;  // the damping given as ATB's rate-dependent force
 };
 
@@ -67,6 +69,14 @@ runtime::Model SphereOnFloor(double mass, double radius, double inertia, const C
   if (atb) {
     append({c.atb_return});
     append({c.atb_set});
+  }
+  if (atb && c.atb_spike != 0) {
+    const std::int32_t spike = append({c.atb_spike});
+    f.atb_spike.assign(f.size(), -1);
+    f.atb_spike_end.assign(f.size(), 0.0);
+    f.atb_origin.assign(f.size(), 0.0);
+    f.atb_spike[0] = spike;
+    f.atb_spike_end[0] = c.atb_spike_end;
   }
   // The damping as ATB's rate terms: F2(d) F3(d') + F4(d') = 2 N * (c/4 d' / N) + c/2 d'.
   const double damping = c.damping_as_rate_terms ? 0.0 : c.damping;
@@ -203,6 +213,31 @@ TEST_P(ContactVerification, AtbUnloadingReturnsRAndLeavesAtThePermanentSet) {
   EXPECT_NEAR(data.contacts.history[0].max_deflection, x_max, 1e-6 * x_max);
   EXPECT_NEAR(data.contacts.history[0].permanent, 0.25 * x_max, 1e-6 * x_max);
   EXPECT_NEAR(data.energy.Absorbed(), 0.4 * 2.0, 1e-6);
+}
+
+TEST_P(ContactVerification, AtbSpikeTakesItsWorkOnceAndDropsAtItsEnd) {
+  // No gravity: a 1 kg sphere meets a 1e5 N/m floor at 2 m/s (2 J) with an elastic ATB law
+  // (R = 1) and an inertial spike of 500 N. Ending at 2 mm, the spike takes 500 N * 2 mm = 1 J
+  // and drops: x_max = sqrt(2 * 1 J / k), and the function alone gives back k x_max^2 / 2 = 1 J,
+  // so the sphere leaves at sqrt(2) m/s. Ending at 10 mm, beyond x_max = (sqrt(s^2 + 4 k J) - s)
+  // / k for k x^2 / 2 + s x = 2 J, the spike stays and gives its work back: it leaves at 2 m/s.
+  const double k = 1e5, s = 500.0;
+  for (const double end : {0.002, 0.01}) {
+    Contact c;
+    c.atb_return = 1.0;
+    c.atb_spike = s;
+    c.atb_spike_end = end;
+    const runtime::Model model = ImpactAt2MetresPerSecond(c);
+    runtime::Data data = runtime::MakeData(model);
+    const double speed = SpeedAfter50ms(model, data, GetParam());
+    const bool drops = end < 0.005;
+    const double x_max =
+        drops ? std::sqrt(2 * 1.0 / k) : (std::sqrt(s * s + 4 * 0.5 * k * 2.0) - s) / k;
+    EXPECT_NEAR(speed, drops ? std::sqrt(2.0) : 2.0, 1e-6) << end;
+    EXPECT_NEAR(data.contacts.history[0].max_deflection, x_max, 1e-6 * x_max) << end;
+    EXPECT_EQ(data.contacts.history[0].spike_dropped, drops) << end;
+    EXPECT_NEAR(data.energy.Absorbed(), drops ? 1.0 : 0.0, 1e-6) << end;
+  }
 }
 
 TEST_P(ContactVerification, SpringDamperContactFollowsTheDampedOscillator) {
