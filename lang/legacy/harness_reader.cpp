@@ -234,7 +234,11 @@ class HarnessReader {
       point.anchor = {reference[0] + offset[0], reference[1] + offset[1], reference[2] + offset[2]};
       point.segment = Ref{ks, r_.Range(card, 1, 4), card.label};
       if (point.tie == 0 && point.friction.number != 0) {
-        f_.Refuse(card, 33, 36, "friction at an anchor that is not a tie point",
+        f_.Refuse(card, 33, 36,
+                  "friction at an anchor that is not a tie point: ATB's HSETC gives an end with "
+                  "a friction function the stick-or-slip conditions of a point (the force across "
+                  "it against the friction times the force along its normal), and HBELT caps "
+                  "the force the end passes on by the same law",
                   "sled's anchors hold the webbing; only tie points (KS above 100) let it pass "
                   "with the harness's friction");
       } else if (point.tie != 0 && point.friction.number != 0 && npd != 0 && preferred != Vec3{}) {
