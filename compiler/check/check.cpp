@@ -39,6 +39,7 @@ const std::vector<std::pair<EntityKind, std::string_view>> kEntityNames = {
     {EntityKind::kHarness, "harness"},   {EntityKind::kAirbag, "airbag"},
     {EntityKind::kSpring, "spring"},     {EntityKind::kConstraint, "constraint"},
     {EntityKind::kLoad, "load"},         {EntityKind::kParameter, "parameter"},
+    {EntityKind::kActuator, "actuator"},
 };
 
 std::string JoinPath(const std::vector<std::string>& parts, std::size_t from, char separator) {
@@ -503,6 +504,7 @@ CheckedScenario Checker::Run(const ast::File& file) {
   CheckContacts();
   CheckRestraints();
   CheckLoads();
+  CheckActuators();
   scenario_.has_scenario = scenario_statement_ != nullptr;
   if (scenario_statement_) CheckRunSettings(*scene_scope_, scenario_bound_);
   if (scenario_statement_) CheckFluids(*scene_scope_);

@@ -170,6 +170,8 @@ CheckContext::BoundBlock SceneChecker::DeclareFileContents(Scope& scope, const a
       declare_named(scenario_.constraints, *statement, EntityKind::kConstraint, constraints_);
     } else if (keyword == "load") {
       declare_named(scenario_.loads, *statement, EntityKind::kLoad, loads_);
+    } else if (keyword == "actuator") {
+      declare_named(scenario_.actuators, *statement, EntityKind::kActuator, actuators_);
     } else if (keyword == "segment") {
       if (declare_named(scenario_.segments, *statement, EntityKind::kSegment, segments_)) {
         const int index = static_cast<int>(scenario_.segments.size()) - 1;

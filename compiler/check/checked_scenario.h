@@ -265,6 +265,18 @@ struct AppliedLoad {
   SourceRange range;
 };
 
+// An `actuator` (runtime/forces/actuators.h): a PID torque about a pin joint's axis that drives
+// its angle towards `target`; the gains are functions of the target angle, SI units.
+struct Actuator {
+  std::string name;
+  int joint = -1;
+  FunctionId target = -1;        // time -> angle
+  FunctionId proportional = -1;  // angle -> torque per angle
+  FunctionId derivative = -1;    // angle -> torque per angular rate; -1: none
+  FunctionId integral = -1;      // angle -> torque per angle*time; -1: none
+  SourceRange range;
+};
+
 // A `wind` or `water` block (runtime/forces/fluid_forces.h): the fluid and the segments whose
 // contact ellipsoids it acts on; SI units.
 struct Fluid {
@@ -461,6 +473,7 @@ struct CheckedScenario {
   std::vector<Airbag> airbags;
   std::vector<SpringDamper> springs;
   std::vector<AppliedLoad> loads;
+  std::vector<Actuator> actuators;
   std::vector<Fluid> fluids;
   std::vector<Constraint> constraints;
   std::vector<InitialCondition> initial_conditions;

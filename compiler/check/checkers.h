@@ -71,6 +71,8 @@ class LoadChecker : protected virtual CheckContext {
 
  protected:
   void CheckLoads();
+  // `actuator NAME on JOINT { ... }`: a pin joint, a target and gains (check_actuators.cpp).
+  void CheckActuators();
   // Under `symmetry planar`, loads must act in the plane (after CheckRunSettings).
   void CheckLoadsInThePlane();
 };

@@ -37,6 +37,7 @@ enum class EntityKind {
   kSpring,
   kConstraint,
   kLoad,
+  kActuator,
   kParameter,
 };
 
@@ -295,8 +296,8 @@ class CheckContext {
   };
   std::vector<PendingBody> bodies_;
   std::vector<Pending> vehicles_, planes_, ellipsoids_, contacts_, belts_, harnesses_, airbags_,
-      springs_, loads_, constraints_, initials_, outputs_, functions_, segments_, joints_,
-      joint_overrides_;
+      springs_, loads_, actuators_, constraints_, initials_, outputs_, functions_, segments_,
+      joints_, joint_overrides_;
   int current_body_ = -1;  // the body whose block DeclareFileContents is reading
   std::vector<const ast::Statement*> run_blocks_;  // time, integrator, restart, settle, symmetry
   const ast::Statement* scenario_statement_ = nullptr;

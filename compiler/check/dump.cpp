@@ -175,6 +175,11 @@ std::string Dump(const CheckedScenario& s) {
                      FunctionText(s, l.force), V(l.direction), V(l.point),
                      FunctionText(s, l.torque), V(l.axis), l.in_segment ? "segment" : "ground"));
   }
+  for (const Actuator& a : s.actuators) {
+    line(fmt::format("actuator {} joint #{} target {} proportional {} derivative {} integral {}",
+                     a.name, a.joint, FunctionText(s, a.target), FunctionText(s, a.proportional),
+                     FunctionText(s, a.derivative), FunctionText(s, a.integral)));
+  }
   for (const Fluid& f : s.fluids) {
     std::string segments;
     for (int segment : f.segments) segments += fmt::format(" #{}", segment);

@@ -81,6 +81,8 @@ std::vector<BlockSpec> MakeSpecs() {
       {"spring", BlockKind::kSpring, "a spring-damper between two frames"},
       {"load", BlockKind::kLoad,
        "an applied force or torque, a function of time, on a segment or across a joint"},
+      {"actuator", BlockKind::kActuator,
+       "a PID torque that drives a pin joint's angle towards a target, a function of time"},
       {"wind", BlockKind::kWind,
        "air moving at a speed that is a function of time: drag on the segments' ellipsoids"},
       {"water", BlockKind::kWater,
@@ -290,6 +292,17 @@ std::vector<BlockSpec> MakeSpecs() {
               "with the segment")},
        {}});
   specs.push_back(
+      {BlockKind::kActuator,
+       {Function("target", d::kTime, d::kAngle, "the target angle against time", true),
+        Function("proportional", d::kAngle, d::kRotationalStiffness,
+                 "torque per radian of angle error, against the target angle", true),
+        Function("derivative", d::kAngle, d::kRotationalDamping,
+                 "torque per rad/s of rate error, against the target angle; default none"),
+        Function("integral", d::kAngle, d::kTorque / (d::kAngle * d::kTime),
+                 "torque per rad*s of the error's integral, against the target angle; default "
+                 "none")},
+       {}});
+  specs.push_back(
       {BlockKind::kWind,
        {Function("speed", d::kTime, d::kVelocity, "the air's speed against time"),
         Function("pressure", d::kTime, d::kPressure,
@@ -408,6 +421,8 @@ std::string_view BlockName(BlockKind kind) {
       return "constraint";
     case BlockKind::kLoad:
       return "load";
+    case BlockKind::kActuator:
+      return "actuator";
     case BlockKind::kInitial:
       return "initial";
     case BlockKind::kOutput:
@@ -555,6 +570,9 @@ const std::vector<QuantityName>& AllQuantityNames() {
       {"force", d::kForce},
       {"torque", d::kTorque},
       {"angle", d::kAngle},
+      {"rotational_stiffness", d::kRotationalStiffness},
+      {"rotational_damping", d::kRotationalDamping},
+      {"integral_gain", d::kTorque / (d::kAngle * d::kTime)},
       {"time", d::kTime},
       {"velocity", d::kVelocity},
       {"acceleration", d::kAcceleration},

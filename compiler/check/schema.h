@@ -33,6 +33,7 @@ enum class BlockKind {
   kSpring,
   kConstraint,
   kLoad,
+  kActuator,
   kWind,
   kWater,
   kInitial,

@@ -132,6 +132,34 @@ void LowerLoads(Lowering& lowering) {
   }
 }
 
+// Actuators: on the pin's child segment, with the pin's axis in the parent's frame; an integral
+// gain adds the error's integral to the auxiliary states, starting at zero.
+void LowerActuators(Lowering& lowering) {
+  Model& model = lowering.model();
+  runtime::ActuatorTable& table = model.actuators;
+  for (const Actuator& actuator : lowering.scenario().actuators) {
+    int segment = -1;
+    for (std::size_t s = 0; s < lowering.joint_above.size(); ++s) {
+      if (lowering.joint_above[s] == actuator.joint) segment = static_cast<int>(s);
+    }
+    if (segment < 0) continue;  // the checker refuses what is not a pin
+    const auto s = static_cast<std::size_t>(segment);
+    table.name.push_back(actuator.name);
+    table.source.push_back(lowering.Position(actuator.range));
+    table.segment.push_back(segment);
+    table.axis.push_back((model.joint_frame_in_parent[s] * model.joint_axis[s]).normalized());
+    table.target.push_back(lowering.Function(actuator.target));
+    table.proportional.push_back(lowering.Function(actuator.proportional));
+    table.derivative.push_back(lowering.Function(actuator.derivative));
+    table.integral.push_back(lowering.Function(actuator.integral));
+    table.state_address.push_back(actuator.integral >= 0 ? model.nw : -1);
+    if (actuator.integral >= 0) {
+      model.w0.push_back(0.0);
+      ++model.nw;
+    }
+  }
+}
+
 void LowerConstraints(Lowering& lowering) {
   Model& model = lowering.model();
   for (std::size_t c = 0; c < lowering.scenario().constraints.size(); ++c) {
@@ -334,6 +362,7 @@ void LowerScene(Lowering& lowering) {
   LowerVehicles(lowering);
   LowerSprings(lowering);
   LowerLoads(lowering);
+  LowerActuators(lowering);
   LowerConstraints(lowering);
   LowerRunSettings(lowering);
   LowerOutputs(lowering);

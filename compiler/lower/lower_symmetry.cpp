@@ -194,6 +194,10 @@ void PlanMirrorSymmetry(Lowering& lowering) {
   if (!scenario.loads.empty()) {
     return refuse(fmt::format("load `{}` acts on one side only", scenario.loads.front().name));
   }
+  if (!scenario.actuators.empty()) {
+    return refuse(
+        fmt::format("actuator `{}` drives one side only", scenario.actuators.front().name));
+  }
   for (const Belt& belt : scenario.belts) {
     for (const BeltPoint& point : belt.path) {
       const bool right = point.kind == BeltPoint::Kind::kSegment

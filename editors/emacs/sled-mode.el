@@ -28,7 +28,8 @@
 (defconst sled--declarations
   '("scenario" "import" "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid"
     "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "load" "initial"
-    "override" "output" "time" "integrator" "restart" "settle" "symmetry" "wind" "water"))
+    "override" "output" "time" "integrator" "restart" "settle" "symmetry" "wind" "water"
+    "actuator"))
 
 (defconst sled--font-lock-keywords
   `((,(concat "^[ \t]*" (regexp-opt sled--declarations 'words)

@@ -216,6 +216,17 @@ struct LoadCard {
   bool torque() const { return segment.number < 0; }
 };
 
+// F.10 (D.1.b NRTORQ of them): a PID actuator on pin joint `joint` (INPUT_ROBOTICS), its torque
+// (ACTUATOR_TORQUE) P(th0) (th - th0) - D(th0) (th' - th0') - I(th0) S with th0 = target(time),
+// th the pin's angle (JNTFNC: x1 x x2 along the axis), th' the rate (w1 - w2) along the axis and
+// S ATB's running sum of (th - th0) dt; APPLY adds it to `base` (the joint's proximal or distal
+// segment) and its opposite to the other.
+struct ActuatorCard {
+  std::uint32_t line = 0;
+  Ref joint, base, target, proportional, derivative, integral;
+  bool base_is_proximal = true;
+};
+
 struct FunctionCard {
   std::uint32_t line = 0;
   SourceRange where;  // E.1 columns 1-4
@@ -358,7 +369,8 @@ struct Deck {
   std::uint32_t symmetry_line = 0;
   std::vector<Ref> symmetry;  // per segment
   std::vector<SpringCard> springs;
-  std::vector<LoadCard> loads;  // D.9
+  std::vector<LoadCard> loads;          // D.9
+  std::vector<ActuatorCard> actuators;  // F.10
   std::vector<ConstraintCard> constraints;
   std::vector<AirbagCard> airbags;
   std::vector<FunctionCard> functions;

@@ -30,6 +30,9 @@ class DeckMapper {
   // a contact's or a webbing's force function (its argument), to a ratio.
   // kRateScaledForce, kRateScale, kRateForce: F2(D), F3(D'), F4(D') of ATB's rate-dependent
   // contact force.
+  // kActuatorTarget: an F.10 target angle against time; kActuatorProportional, ...Derivative,
+  // ...Integral: its gains against the target angle, each also Negated (the values' signs
+  // turned, for the side APPLY puts ATB's torque on).
   enum class Use {
     kContact,
     kBelt,
@@ -41,7 +44,14 @@ class DeckMapper {
     kBeltFactor,
     kRateScaledForce,
     kRateScale,
-    kRateForce
+    kRateForce,
+    kActuatorTarget,
+    kActuatorProportional,
+    kActuatorDerivative,
+    kActuatorIntegral,
+    kActuatorProportionalNegated,
+    kActuatorDerivativeNegated,
+    kActuatorIntegralNegated
   };
 
   DeckMapper(const Deck& deck, DiagnosticConsumer& diagnostics)
@@ -137,6 +147,9 @@ class DeckMapper {
   // D.9 (map_loads.cpp): `load NAME on SEGMENT { force  direction  point  frame = segment }`, or
   // a `torque` about an `axis`.
   void MapLoads(ast::Block& scenario);
+  // F.10 (map_loads.cpp): `actuator NAME on JOINT { target  proportional  derivative  integral }`
+  // with the signs of ATB's APPLY and JNTFNC.
+  void MapActuators(ast::Block& scenario);
   // `at FIRST = ...` and `at SECOND = ...` of a spring or constraint.
   void AddAttachments(ast::Statement& statement, const std::string& first, const Vec3& at_first,
                       const std::string& second, const Vec3& at_second);
@@ -164,6 +177,12 @@ class DeckMapper {
   void MapFunctions(ast::Block& scenario);
   ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name,
                                    const FunctionUnloading& unloading);
+  // A function's declaration with its signature in the deck's units, its values times `sign`.
+  ast::Statement FunctionDeclaration(const FunctionCard& function, const std::string& name,
+                                     const std::string& argument_unit,
+                                     const std::string& result_unit, const char* argument,
+                                     const char* result, double sign,
+                                     const FunctionUnloading& unloading);
   void MapInitial(ast::Block& scenario);
   // G.3.a of the segments that hang from joints (and B.4.b's Euler angles): `initial JOINT {
   // angles = ... }` where the deck's orientations turn a joint (map_posture.cpp).

@@ -70,11 +70,11 @@ class DeckReader : public DeckFields {
     if (!r_.truncated()) ReadF();
     if (unknown_layout_) return std::move(deck_);  // F.7.c or F.9.h cards of unknown layout
     if (!r_.truncated()) ReadInitialConditions(*this, bags_);
-    if (!r_.truncated()) ReadOutputRequests(*this, bags_);
+    if (!r_.truncated()) ReadOutputRequests(*this, bags_, actuators_);
     if (!r_.truncated() && !r_.OnlyBlankLinesRemain()) {
       const Card card = r_.Next("after H.10", {"(A80)"});
       r_.Report(DiagnosticKind::kDeckExtraCards, card, 1, 80,
-                fmt::format("line {} follows the last card ATB V.3 reads (H.10; H.11 only with "
+                fmt::format("line {} follows the last card ATB V.3 reads (H.10, or H.11 with "
                             "joint actuators)",
                             card.line),
                 "remove the lines after the H.10 cards, or check the H cards' counts");

@@ -98,6 +98,7 @@ ast::File DeckMapper::Map() {
   MapSurfaces(body);
   MapRestraints(body);
   MapLoads(body);
+  MapActuators(body);
   MapWind(body);
   MapWater(body);
   MapFunctions(body);
@@ -186,11 +187,13 @@ std::optional<ast::Expr> DeckMapper::FunctionFor(const Ref& ref, Use use,
     const bool load = use == Use::kLoadForce || use == Use::kLoadTorque;
     // An applied load's function may take either sign: it pushes against its direction.
     if (!load) CheckSign(*function, ref, use);
-    const bool factor = !load && use != Use::kContact && use != Use::kBelt && use != Use::kJoint &&
-                        use != Use::kSlip;
+    const bool actuator = use >= Use::kActuatorTarget;
+    const bool factor = !load && !actuator && use != Use::kContact && use != Use::kBelt &&
+                        use != Use::kJoint && use != Use::kSlip;
     std::string name =
         NameOf(function->title, fmt::format("function_{}", function->number), taken_,
-               factor                                                                ? "factor"
+               actuator ? (use == Use::kActuatorTarget ? "target" : "gain")
+               : factor ? "factor"
                : use == Use::kContact || use == Use::kSlip || use == Use::kLoadForce ? "force"
                : use == Use::kJoint || use == Use::kLoadTorque                       ? "torque"
                                                                                      : "webbing");
@@ -476,9 +479,46 @@ void DeckMapper::MapFunctions(ast::Block& scenario) {
   for (auto& statement : statements) scenario.statements.push_back(std::move(statement));
 }
 
+namespace {
+
+// An F.10 function's signature in the deck's units: the target angle (degrees, JNTFNC) against
+// time, or a gain against the target angle, and whether its values change sign.
+struct ActuatorSignature {
+  std::string argument_unit, result_unit;
+  const char* argument;
+  const char* result;
+  double sign;
+};
+
+ActuatorSignature ActuatorSignatureOf(DeckMapper::Use use, const std::string& force,
+                                      const std::string& length, const std::string& time_unit) {
+  using Use = DeckMapper::Use;
+  const std::string torque = force + "*" + length;
+  const double sign = use >= Use::kActuatorProportionalNegated ? -1.0 : 1.0;
+  switch (use) {
+    case Use::kActuatorTarget:
+      return {time_unit, "deg", "time", "angle", 1.0};
+    case Use::kActuatorProportional:
+    case Use::kActuatorProportionalNegated:
+      return {"deg", torque + "/deg", "angle", "rotational_stiffness", sign};
+    case Use::kActuatorDerivative:
+    case Use::kActuatorDerivativeNegated:
+      return {"deg", torque + "*" + time_unit + "/deg", "angle", "rotational_damping", sign};
+    default:
+      return {"deg", torque + "/deg/" + time_unit, "angle", "integral_gain", sign};
+  }
+}
+
+}  // namespace
+
 ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use use,
                                              const std::string& name,
                                              const FunctionUnloading& unloading) {
+  if (use >= Use::kActuatorTarget) {
+    const ActuatorSignature signature = ActuatorSignatureOf(use, F, L, T);
+    return FunctionDeclaration(function, name, signature.argument_unit, signature.result_unit,
+                               signature.argument, signature.result, signature.sign, unloading);
+  }
   const bool of_time = use == Use::kLoadForce || use == Use::kLoadTorque;
   const bool torque = use == Use::kJoint || use == Use::kLoadTorque;
   const bool ratio =
@@ -498,6 +538,16 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
                          : of_time            ? "time"
                                               : "strain";
   const char* result = ratio ? "ratio" : torque ? "torque" : "force";
+  return FunctionDeclaration(function, name, argument_unit, result_unit, argument, result, 1.0,
+                             unloading);
+}
+
+ast::Statement DeckMapper::FunctionDeclaration(const FunctionCard& function,
+                                               const std::string& name,
+                                               const std::string& argument_unit,
+                                               const std::string& result_unit, const char* argument,
+                                               const char* result, double sign,
+                                               const FunctionUnloading& unloading) {
   ast::Statement statement =
       Declaration("function", Path(name),
                   CardComment("E.1", function.line) +
@@ -509,7 +559,8 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
   signature.push_back(Path(result));
   switch (function.form) {
     case FunctionCard::Form::kConstant:
-      statement.values.push_back(Call("constant", {{"", Number(function.constant, result_unit)}}));
+      statement.values.push_back(
+          Call("constant", {{"", Number(sign * function.constant + 0.0, result_unit)}}));
       break;
     case FunctionCard::Form::kPolynomial: {
       std::vector<std::pair<std::string, ast::Expr>> arguments;
@@ -519,7 +570,7 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
       for (std::size_t k = 0; k < last; ++k) {
         std::string unit = result_unit;
         if (k > 0 && !argument_unit.empty()) unit = CoefficientUnit(result_unit, argument_unit, k);
-        arguments.emplace_back("", Number(function.coefficients[k], unit));
+        arguments.emplace_back("", Number(sign * function.coefficients[k] + 0.0, unit));
       }
       statement.values.push_back(Call("polynomial", std::move(arguments)));
       break;
@@ -527,7 +578,7 @@ ast::Statement DeckMapper::FunctionStatement(const FunctionCard& function, Use u
     case FunctionCard::Form::kTable:
       statement.values.push_back(Call("table", {{"", ast::MakeArrow(std::move(signature))}}));
       for (const auto& [x, y] : function.points) {
-        Add(statement, Row(Number(x, argument_unit), Number(y, result_unit)));
+        Add(statement, Row(Number(x, argument_unit), Number(sign * y + 0.0, result_unit)));
       }
       break;
   }

@@ -120,9 +120,15 @@ class HarnessReader {
                   "give the webbing's force against strain (an E function) in columns 1-4");
       }
       if (friction.number != 0) {
-        f_.Refuse(card, 17, 20, fmt::format("the belt's friction function is {}", friction.number),
-                  "ATB's harness takes its friction at the points (F.8.d.1 columns 33-36), and "
-                  "what a belt's own friction function does is not documented; leave it blank");
+        // INPUT_HARNESS stores it with the webbing's functions of each span (FDINIT), but HBELT
+        // and HSETC read friction from the points' function tables (IBAR(3)) only.
+        f_.Ignored(card, 17, 20,
+                   fmt::format("the belt's friction function {}: ATB stores it with the "
+                               "webbing's functions, but its harness (HBELT, HSETC) takes friction "
+                               "from the points' functions only",
+                               friction.number),
+                   "give the friction at the points (F.8.d.1 columns 33-36); this one is left "
+                   "out, as ATB leaves it out");
       }
       belt.slack = r_.Real(card, 21, 32, "XLONG, the reference slack");
       if (belt.slack < 0) {
@@ -228,7 +234,11 @@ class HarnessReader {
       point.anchor = {reference[0] + offset[0], reference[1] + offset[1], reference[2] + offset[2]};
       point.segment = Ref{ks, r_.Range(card, 1, 4), card.label};
       if (point.tie == 0 && point.friction.number != 0) {
-        f_.Refuse(card, 33, 36, "friction at an anchor that is not a tie point",
+        f_.Refuse(card, 33, 36,
+                  "friction at an anchor that is not a tie point: ATB's HSETC gives an end with "
+                  "a friction function the stick-or-slip conditions of a point (the force across "
+                  "it against the friction times the force along its normal), and HBELT caps "
+                  "the force the end passes on by the same law",
                   "sled's anchors hold the webbing; only tie points (KS above 100) let it pass "
                   "with the harness's friction");
       } else if (point.tie != 0 && point.friction.number != 0 && npd != 0 && preferred != Vec3{}) {

@@ -52,26 +52,52 @@ void ReadAppliedLoads(DeckFields& f, int count) {
 
 int ReadActuatorCount(DeckFields& f, const Card& d1) {
   DeckSource& r = f.source();
-  const int nextcd = r.Integer(d1, 67, 72, "NEXTCD, the joint actuators");
-  if (nextcd == 0) return 0;
-  f.Refuse(d1, 67, 72,
-           fmt::format("NEXTCD is {}: F.10 joint actuators, ATB's PID torques about pin "
-                       "joints, their gains functions of the target angle; ATB's integral term "
-                       "is one sum shared by every actuator, its angle and rate take opposite "
-                       "senses (JNTFNC), and how the torque enters the equations of motion (the "
-                       "caller of JNTFNC) is not in the reference",
-                       nextcd),
-           "drive the joint with a `load NAME on JOINT { torque = ... }` written by hand, or "
-           "set NEXTCD to 0 and remove the D.1.b and F.10 cards");
-  const Card d1b = r.Next("D.1.b", {"(12I6)"});
+  if (r.Integer(d1, 67, 72, "NEXTCD, the joint actuators") == 0) return 0;
+  const Card d1b = r.Next("D.1.b", {"(12I6)", 1});  // ATB reads NRTORQ alone
   return f.Count(d1b, 1, 6, "NRTORQ, the number of joint actuators",
                  static_cast<int>(f.deck().joints.size()));
 }
 
 void ReadActuators(DeckFields& f, int count) {
   DeckSource& r = f.source();
+  Deck& deck = f.deck();
   for (int k = 0; k < count && !r.truncated(); ++k) {
-    r.Next(fmt::format("F.10 (actuator {})", k + 1), {"(6I4)"});
+    const Card card = r.Next(fmt::format("F.10 (actuator {})", k + 1), {"(6I4)"});
+    ActuatorCard actuator;
+    actuator.line = card.line;
+    actuator.joint = f.Reference(card, 1, 4, "ACT_JNT, the joint");
+    actuator.base = f.Reference(card, 5, 8, "BASE_SEG, the base segment");
+    actuator.target = f.Reference(card, 9, 12, "the target angle's function of time");
+    actuator.proportional = f.Reference(card, 13, 16, "the proportional gain's function");
+    actuator.derivative = f.Reference(card, 17, 20, "the derivative gain's function");
+    actuator.integral = f.Reference(card, 21, 24, "the integral gain's function");
+    if (r.truncated()) return;
+    const int joint = actuator.joint.number;
+    if (joint < 1 || joint > static_cast<int>(deck.joints.size())) {
+      f.Invalid(card, 1, 4, fmt::format("ACT_JNT is {}: there is no joint {}", joint, joint),
+                fmt::format("give a joint's number, 1 to {}", deck.joints.size()));
+      continue;
+    }
+    const JointCard& driven = deck.joints[static_cast<std::size_t>(joint - 1)];
+    if (driven.type != JointType::kPin) {
+      f.Invalid(card, 1, 4,
+                fmt::format("joint {} is not a pin joint (JTYPE 1 or -1): ATB stops (STOP 111 in "
+                            "INPUT_ROBOTICS)",
+                            joint),
+                "an actuator drives a pin joint; give one, or make the joint a pin on B.3.a");
+      continue;
+    }
+    const int base = actuator.base.number;
+    if (base != driven.parent && base != joint + 1) {
+      f.Invalid(card, 5, 8,
+                fmt::format("BASE_SEG is {}: neither segment {} nor segment {} of joint {}: ATB "
+                            "stops (STOP 112 in INPUT_ROBOTICS)",
+                            base, driven.parent, joint + 1, joint),
+                "the base segment is the joint's proximal segment (JNT) or its distal one (J + 1)");
+      continue;
+    }
+    actuator.base_is_proximal = base == driven.parent;
+    deck.actuators.push_back(actuator);
   }
 }
 

@@ -16,11 +16,11 @@ inline constexpr int kMaxAppliedLoads = 5;
 void ReadAppliedLoads(DeckFields& fields, int count);
 
 // D.1.a NEXTCD and, when it is not 0, the D.1.b card that follows D.1.a: the number of F.10
-// actuators (NRTORQ, at most the number of joints, as ATB's STOP 110). Actuators are refused at
-// NEXTCD; the count lets the F.10 cards be read past, so that the deck gets no cascade.
+// actuators (NRTORQ, at most the number of joints, as ATB's STOP 110).
 int ReadActuatorCount(DeckFields& fields, const Card& d1);
 
-// The F.10 cards (6I4, after F.9), read and not converted.
+// The F.10 cards (6I4, after F.9, INPUT_ROBOTICS) into the deck's actuators: a joint that is not
+// a pin (STOP 111) or a base segment that is neither of the joint's (STOP 112) is E0512.
 void ReadActuators(DeckFields& fields, int count);
 
 }  // namespace sled::lang::legacy

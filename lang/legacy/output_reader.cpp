@@ -13,7 +13,8 @@ constexpr int kMaxTotalBodies = 5;  // MAX_TOTAL_BODY: H.10 sets
 
 class OutputReader {
  public:
-  OutputReader(DeckFields& fields, int bags) : f_(fields), r_(fields.source()), bags_(bags) {}
+  OutputReader(DeckFields& fields, int bags, int actuators)
+      : f_(fields), r_(fields.source()), bags_(bags), actuators_(actuators) {}
 
   void Read() {
     constexpr OutputCard::Kind kPointKinds[] = {
@@ -31,6 +32,7 @@ class OutputReader {
       }
     }
     if (!r_.truncated()) ReadTotalBodies();
+    if (actuators_ > 0 && !r_.truncated()) ReadActuatorTorques();
   }
 
  private:
@@ -227,13 +229,51 @@ class OutputReader {
     }
   }
 
+  // H.11 (INPUT_H11_CARDS, only when D.1.b's NRTORQ is not 0): (12I6, /, (I12, 10I6)) KSG and
+  // KSG actuator numbers, whose torque histories ATB prints. KSG below 1 stops ATB (STOP 741,
+  // 742). sled writes no actuator output: each request is left out with a W0504 (no value of
+  // the run changes).
+  void ReadActuatorTorques() {
+    Card head = r_.Next("H.11", {"(12I6)", 1});
+    const int count = f_.Count(head, 1, 6, "KSG, the number of actuator torques", kMaxRequests);
+    if (count < 1) {
+      f_.Invalid(head, 1, 6,
+                 "KSG is 0: ATB stops on an H.11 card without an actuator (STOP 741, 742)",
+                 "list at least one actuator's number, 1 to NRTORQ");
+      return;
+    }
+    const int on_first = std::min(count, 11);
+    r_.Extend(head, on_first);
+    std::string listed;
+    for (int k = 0; k < on_first; ++k) {
+      listed += fmt::format("{}{}", k == 0 ? "" : ", ",
+                            r_.Integer(head, 7 + 6 * k, 12 + 6 * k, "an actuator's number"));
+    }
+    if (count > on_first) {
+      const Card more = r_.Next("H.11 (continued)", {"(I12,10I6)", count - on_first, true});
+      for (int k = 0; k < count - on_first; ++k) {
+        const int first = k == 0 ? 1 : 13 + 6 * (k - 1);
+        const int last = k == 0 ? 12 : first + 5;
+        listed += fmt::format(", {}", r_.Integer(more, first, last, "an actuator's number"));
+      }
+    }
+    f_.Approximated(head, 1, 6 + 6 * on_first,
+                    fmt::format("the torque histories of actuators {} (H.11) are not written: "
+                                "sled has no actuator output (no value of the run changes; "
+                                "request `joint_angle` of the driven joints to follow them)",
+                                listed));
+  }
+
   DeckFields& f_;
   DeckSource& r_;
   int bags_;
+  int actuators_;
 };
 
 }  // namespace
 
-void ReadOutputRequests(DeckFields& fields, int bags) { OutputReader(fields, bags).Read(); }
+void ReadOutputRequests(DeckFields& fields, int bags, int actuators) {
+  OutputReader(fields, bags, actuators).Read();
+}
 
 }  // namespace sled::lang::legacy

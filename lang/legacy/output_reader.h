@@ -9,8 +9,8 @@
 
 namespace sled::lang::legacy {
 
-// H.1 to H.10 (H.11 follows only decks with joint actuators, which D.1 refuses). `bags` is D.1's
-// NBAG (airbags take segment numbers between the vehicles and the ground).
-void ReadOutputRequests(DeckFields& fields, int bags);
+// H.1 to H.10, and H.11 when D.1.b's NRTORQ (`actuators`) is not 0. `bags` is D.1's NBAG
+// (airbags take segment numbers between the vehicles and the ground).
+void ReadOutputRequests(DeckFields& fields, int bags, int actuators);
 
 }  // namespace sled::lang::legacy

@@ -7,6 +7,7 @@
 #include "runtime/dynamics/frame_motion.h"
 #include "runtime/dynamics/joint.h"
 #include "runtime/dynamics/vehicle.h"
+#include "runtime/forces/actuators.h"
 #include "runtime/forces/fluid_forces.h"
 #include "runtime/forces/functions.h"
 #include "runtime/forces/joint_hysteresis.h"
@@ -158,6 +159,7 @@ void ComputeElementForces(const Model& model, Data& data) {
   ComputeBeltForces(model, data);
   if (model.airbags.size() > 0) ComputeAirbagForces(model, data);
   if (model.loads.size() > 0) AddAppliedLoads(model, data);
+  if (model.actuators.size() > 0) AddActuatorTorques(model, data);
   if (model.fluids.size() > 0) AddFluidForces(model, data);
 }
 

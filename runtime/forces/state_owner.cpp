@@ -37,6 +37,15 @@ void NameStateOwner(const Model& model, std::size_t component, Failure& failure)
         return;
       }
     }
+    const ActuatorTable& actuators = model.actuators;
+    for (std::size_t k = 0; k < actuators.size(); ++k) {
+      if (w == actuators.state_address[k]) {
+        failure.where = actuators.name[k];
+        failure.source = actuators.source[k];
+        failure.cause += ", in its integral of the angle error";
+        return;
+      }
+    }
   }
 }
 

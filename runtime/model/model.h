@@ -22,6 +22,7 @@
 
 #include "runtime/airbag/airbag_table.h"
 #include "runtime/contact/contact_table.h"
+#include "runtime/forces/actuators.h"
 #include "runtime/forces/applied_loads.h"
 #include "runtime/forces/fluid_forces.h"
 #include "runtime/model/model_types.h"
@@ -202,6 +203,8 @@ struct Model {
   // --- Applied loads: forces and torques that are functions of time
   // (runtime/forces/applied_loads.h).
   LoadTable loads;
+  // --- Joint actuators: PID torques about pin axes (runtime/forces/actuators.h).
+  ActuatorTable actuators;
   // --- Wind and water on segment ellipsoids (runtime/forces/fluid_forces.h).
   FluidTable fluids;
   // --- Drawing only (the animation; the dynamics never reads them): the shapes of the segments

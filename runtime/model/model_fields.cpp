@@ -62,6 +62,8 @@ const char* CountName(ModelCount count) {
       return "airbag_contact";
     case ModelCount::kLoad:
       return "load";
+    case ModelCount::kActuator:
+      return "actuator";
     case ModelCount::kFluid:
       return "fluid";
     case ModelCount::kShape:
@@ -137,6 +139,8 @@ std::size_t CountOf(const Model& m, ModelCount count) {
       return m.airbags.contact_segment.size();
     case ModelCount::kLoad:
       return m.loads.name.size();
+    case ModelCount::kActuator:
+      return m.actuators.name.size();
     case ModelCount::kFluid:
       return m.fluids.medium.size();
     case ModelCount::kShape:

@@ -52,6 +52,7 @@ enum class ModelCount : std::uint8_t {
   kAirbag,          // airbags.name
   kAirbagContact,   // airbags.contact_segment
   kLoad,            // loads.name
+  kActuator,        // actuators.name
   kFluid,           // fluids.medium
   kShape,           // shape_name
   kConstraint,      // constraint_name
@@ -225,6 +226,15 @@ enum FieldCheck : unsigned {
   X(Load, loads.axis, Physics, None, kPlain)                                               \
   X(Load, loads.point, Physics, None, kPlain)                                              \
   X(Load, loads.in_segment, Physics, None, kPlain)                                         \
+  X(Actuator, actuators.name, Physics, None, kPlain)                                       \
+  X(Actuator, actuators.source, Unhashed, None, kPlain)                                    \
+  X(Actuator, actuators.segment, Physics, Segment, kPlain)                                 \
+  X(Actuator, actuators.axis, Physics, None, kPlain)                                       \
+  X(Actuator, actuators.target, Physics, Function, kPlain)                                 \
+  X(Actuator, actuators.proportional, Physics, Function, kPlain)                           \
+  X(Actuator, actuators.derivative, Physics, Function, kOrNone)                            \
+  X(Actuator, actuators.integral, Physics, Function, kOrNone)                              \
+  X(Actuator, actuators.state_address, Physics, Auxiliary, kOrNone)                        \
   X(Fluid, fluids.medium, Physics, None, kPlain)                                           \
   X(Fluid, fluids.segment, Physics, Segment, kPlain)                                       \
   X(Fluid, fluids.center, Physics, None, kPlain)                                           \

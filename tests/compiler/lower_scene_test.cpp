@@ -71,6 +71,41 @@ TEST(LowerScene, SpringsWithoutAFreeLengthTakeTheInitialDistance) {
   ExpectNear(m.vehicle_velocity[0], runtime::Vec3(2, 0, 0), 0);
 }
 
+TEST(LowerScene, ActuatorsActOnThePinsChildAboutItsAxisInTheParent) {
+  // The pin's axis (0, 3, 4) in the parent, made unit. Only the actuator with an integral gain
+  // owns an auxiliary state, starting at zero.
+  const Result r = LowerText(Scene(R"(
+  body b {
+    segment upper { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 }
+    segment lower { mass = 1 kg  inertia = (0.01, 0.01, 0.01) kg*m^2 }
+    joint knee : pin(upper -> lower) {
+      at upper = (0, 0, -0.2) m
+      at lower = (0, 0, 0.2) m
+      axis = (0, 3, 4)
+    }
+  }
+  actuator hold on b.knee { target = 10 deg  proportional = 50 N*m/rad }
+  actuator drive on b.knee {
+    target = table(time -> angle) { 0 s -> 0 deg  1 s -> 90 deg }
+    proportional = 50 N*m/rad
+    derivative = 2 N*m*s/rad
+    integral = 20 N*m/rad/s
+  })"));
+  ASSERT_CHECKED(r);
+  const runtime::Model& m = r.model();
+  const runtime::ActuatorTable& a = m.actuators;
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(m.segment_name[static_cast<std::size_t>(a.segment[0])], "b.lower");
+  ExpectNear(a.axis[0], runtime::Vec3(0, 0.6, 0.8), 1e-12);
+  EXPECT_EQ(a.derivative[0], -1);
+  EXPECT_EQ(a.integral[0], -1);
+  EXPECT_EQ(a.state_address[0], -1);
+  EXPECT_GE(a.integral[1], 0);
+  ASSERT_EQ(m.nw, 1);
+  EXPECT_EQ(a.state_address[1], 0);
+  EXPECT_EQ(m.w0[0], 0.0);
+}
+
 TEST(LowerScene, JointOutputsNameTheChildSegmentInTreeOrder) {
   const Result r = LowerText(Scene(fmt::format(R"(
   body b {{

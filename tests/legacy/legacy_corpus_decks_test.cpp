@@ -193,6 +193,17 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     if (field == "load_point") return Of(l.point.at(row));
     if (field == "load_in_segment") return {static_cast<double>(l.in_segment.at(row))};
   }
+  if (field.rfind("actuator_", 0) == 0) {  // a row of the actuators, by number (F.10 order)
+    const runtime::ActuatorTable& act = m.actuators;
+    const auto row = static_cast<std::size_t>(std::stoul(index));
+    if (field == "actuator_segment") return {static_cast<double>(act.segment.at(row))};
+    if (field == "actuator_axis") return Of(act.axis.at(row));
+    if (field == "actuator_target_at") return at(act.target.at(row));
+    if (field == "actuator_proportional_at") return at(act.proportional.at(row));
+    if (field == "actuator_derivative_at") return at(act.derivative.at(row));
+    if (field == "actuator_integral_at") return at(act.integral.at(row));
+    if (field == "actuator_integrates") return {act.state_address.at(row) >= 0 ? 1.0 : 0.0};
+  }
   if (field == "q0") return {m.q0.at(i)};
   if (field == "v0") return {m.v0.at(i)};
   return {};

@@ -155,19 +155,68 @@ TEST(LegacyLoad, BadSegmentsAreReportedAtTheirColumns) {
   EXPECT_TRUE(many.Has(":12:55-60: error[E0505]")) << many.All();
 }
 
-// D.1.a NEXTCD: F.10 actuators are refused at its columns, and their D.1.b and F.10 cards are
-// read past, so the deck gets that one error and no cascade.
-TEST(LegacyLoad, ActuatorsAreRefusedOnceAndTheirCardsReadPast) {
-  std::vector<std::string> lines = deck_testing::Lines(deck_testing::ReadDeckFile(
-      std::string(SLED_SOURCE_ROOT) + "/tests/legacy/corpus/applied_loads.ain"));
-  const std::size_t d1 = deck_testing::LineStarting(lines, "     0     0     0     0     0     0");
-  lines[d1 - 1].replace(66, 6, "     1");
-  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(d1), "     1");
-  const std::size_t g = deck_testing::LineStarting(lines, "# ---- G cards");
-  lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(g - 1), "   1   1   2   3   4   5");
+// F.10 actuators (corpus `actuators`: HIP driven from its proximal segment, KNEE from its
+// distal one) convert with the signs of ATB's APPLY and JNTFNC: the proximal base keeps P and D
+// and turns I's sign, the distal base turns P's and D's; a moving target with a derivative gain
+// and an integral gain are W0504. ATB's stops are E0512 at their columns: a joint that is not a
+// pin (STOP 111), a base segment that is neither of the joint's (STOP 112), an H.11 card without
+// an actuator (STOP 741); an earlier actuator's integral term (ATB's shared sum) is E0507.
+std::vector<std::string> ActuatorDeck() {
+  return deck_testing::Lines(deck_testing::ReadDeckFile(std::string(SLED_SOURCE_ROOT) +
+                                                        "/tests/legacy/corpus/actuators.ain"));
+}
+
+TEST(LegacyLoad, ActuatorsConvertWithTheSignsOfAtbsApply) {
+  const std::vector<std::string> lines = ActuatorDeck();
   const Converted converted = ConvertText(deck_testing::Join(lines));
-  EXPECT_EQ(converted.errors, 1) << converted.All();
-  EXPECT_TRUE(converted.Has(fmt::format(":{}:67-72: error[E0507]", d1))) << converted.All();
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  const std::size_t first = deck_testing::LineStarting(lines, "   1   1   1   2   3   4");
+  EXPECT_TRUE(converted.text.find("actuator actuator_1 on leg.hip") != std::string::npos)
+      << converted.text;
+  EXPECT_TRUE(converted.text.find("actuator actuator_2 on leg.knee") != std::string::npos)
+      << converted.text;
+  // KNEE's gain -300 - 100 th0 becomes 300 + 100 th0; its rate gain -2 becomes 2.
+  EXPECT_TRUE(
+      converted.text.find("polynomial(angle -> rotational_stiffness, 300 lbf*in/deg, 100") !=
+      std::string::npos)
+      << converted.text;
+  EXPECT_TRUE(converted.text.find("constant(2 lbf*in*s/deg)") != std::string::npos)
+      << converted.text;
+  EXPECT_TRUE(converted.text.find("constant(1000 lbf*in/deg/s)") != std::string::npos)
+      << converted.text;
+  // The moving target's derivative term (actuator 1) and the integral (actuator 2): W0504.
+  EXPECT_TRUE(converted.Has(fmt::format(":{}:17-20: warning[W0504]", first))) << converted.All();
+  EXPECT_TRUE(converted.Has(fmt::format(":{}:21-24: warning[W0504]", first + 1)))
+      << converted.All();
+  // H.11's request is read and left out (W0504).
+  EXPECT_TRUE(converted.Has(fmt::format(":{}:1-12: warning[W0504]", lines.size())))
+      << converted.All();
+}
+
+TEST(LegacyLoad, ActuatorChecksAreAtbsStops) {
+  const std::vector<std::string> deck = ActuatorDeck();
+  const std::size_t first = deck_testing::LineStarting(deck, "   1   1   1   2   3   4");
+  auto with = [&](std::size_t line, const std::string& text) {
+    std::vector<std::string> lines = deck;
+    lines[line - 1] = text;
+    return ConvertText(deck_testing::Join(lines));
+  };
+  // KNEE made a ball joint (JTYPE 0): STOP 111.
+  const std::size_t knee = deck_testing::LineStarting(deck, "KNEE");
+  std::string ball = deck[knee - 1];
+  ball.replace(10, 4, "   0");
+  const Converted not_pin = with(knee, ball);
+  EXPECT_TRUE(not_pin.Has(fmt::format(":{}:1-4: error[E0512]", first + 1))) << not_pin.All();
+  // Actuator 2's base segment 1 is not one of KNEE's (2 and 3): STOP 112.
+  const Converted base = with(first + 1, "   2   1   5   6   8   7");
+  EXPECT_TRUE(base.Has(fmt::format(":{}:5-8: error[E0512]", first + 1))) << base.All();
+  // Actuator 1 with an integral gain: its term would be actuator 2's error in ATB.
+  const Converted shared = with(first, "   1   1   1   2   3   7");
+  EXPECT_TRUE(shared.Has(fmt::format(":{}:21-24: error[E0507]", first))) << shared.All();
+  // H.11 with KSG 0.
+  const Converted no_request = with(deck.size(), "     0");
+  EXPECT_TRUE(no_request.Has(fmt::format(":{}:1-6: error[E0512]", deck.size())))
+      << no_request.All();
 }
 
 }  // namespace

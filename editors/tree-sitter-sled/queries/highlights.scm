@@ -16,14 +16,15 @@
   (#any-of? @keyword
     "scenario" "import" "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid"
     "function" "contact" "belt" "harness" "airbag" "spring" "tension" "constraint" "load" "initial"
-    "override" "output" "time" "integrator" "restart" "settle" "symmetry" "wind" "water"))
+    "override" "output" "time" "integrator" "restart" "settle" "symmetry" "wind" "water"
+    "actuator"))
 
 (statement
   keyword: (identifier) @_declaration
   target: (path (identifier) @type.definition)
   (#any-of? @_declaration
     "param" "let" "body" "segment" "joint" "vehicle" "plane" "ellipsoid" "function" "belt"
-    "harness" "airbag" "spring" "tension" "constraint" "load"))
+    "harness" "airbag" "spring" "tension" "constraint" "load" "actuator"))
 
 ; Any other statement keyword is an attribute (`mass = 11.7 kg`) or an output request.
 (statement
