@@ -145,6 +145,8 @@ class DeckMapper {
   std::string SegmentInFluid(const Ref& ref, const Ref& ellipsoid, std::string_view fluid,
                              std::string_view field);
   void MapWind(ast::Block& scenario);
+  // One wind: the F.7.b cards that name the same wind and drag functions (map_fluids.cpp).
+  void MapOneWind(ast::Block& scenario, const std::vector<const WindCard*>& cards);
   void MapWater(ast::Block& scenario);
   void MapFunctions(ast::Block& scenario);
   ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name,

@@ -79,20 +79,30 @@ bool DeckMapper::IsGround(int number) const {
                                       1;
 }
 
+// One `wind` block for each pair of MWSEG(5) and MWSEG(6) the F.7.b cards name, in the order
+// of their first card: each is an air of its own (sled's winds may be several, each segment in
+// one; ATB's F.7.a puts each segment on one card).
 void DeckMapper::MapWind(ast::Block& scenario) {
-  if (deck_.winds.empty()) return;
-  const WindCard& first = deck_.winds.front();
-  std::vector<std::string> segments;
+  std::vector<std::vector<const WindCard*>> winds;
   for (const WindCard& card : deck_.winds) {
-    if (card.force.number != first.force.number || card.drag.number != first.drag.number) {
-      Report(DiagnosticKind::kDeckNotExpressible,
-             card.force.number != first.force.number ? card.force : card.drag,
-             fmt::format("card {}: a wind or drag function unlike the first F.7.b card's",
-                         card.force.card),
-             "sled's scene has one wind with one drag coefficient: give every F.7.b card the "
-             "same MWSEG(5) and MWSEG(6)");
-      return;
+    auto same = std::find_if(winds.begin(), winds.end(), [&](const auto& wind) {
+      return wind.front()->force.number == card.force.number &&
+             wind.front()->drag.number == card.drag.number;
+    });
+    if (same == winds.end()) {
+      winds.push_back({&card});
+    } else {
+      same->push_back(&card);
     }
+  }
+  for (const auto& cards : winds) MapOneWind(scenario, cards);
+}
+
+void DeckMapper::MapOneWind(ast::Block& scenario, const std::vector<const WindCard*>& cards) {
+  const WindCard& first = *cards.front();
+  std::vector<std::string> segments;
+  for (const WindCard* card_of : cards) {
+    const WindCard& card = *card_of;
     const std::string path = SegmentInFluid(card.segment, card.ellipsoid, "wind", "MWSEG(2)");
     if (path.empty()) return;
     segments.push_back(path);
@@ -124,7 +134,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
       Report(DiagnosticKind::kDeckNotExpressible, first.drag,
              fmt::format("card {}: a drag coefficient that changes with time (wind function {})",
                          first.drag.card, first.drag.number),
-             "sled's wind has one drag coefficient: give the function the same FX on every "
+             "a sled wind has one drag coefficient: give the function the same FX on every "
              "E.6.d card");
       return;
     }

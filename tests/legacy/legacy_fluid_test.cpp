@@ -4,11 +4,14 @@
 // without a cascade from the cards after it.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "legacy_test_deck.h"
+#include "runtime/forces/fluid_forces.h"
+#include "sled/compile.h"
 
 namespace sled::lang::legacy {
 namespace {
@@ -46,6 +49,34 @@ TEST(LegacyFluids, TheCorpusDeckBecomesAWindAndAWaterBlock) {
   EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:13-16: warning[W0504]", f7)))
       << converted.All();
   EXPECT_TRUE(converted.Has("the water's forces are read as buoyancy")) << converted.All();
+}
+
+TEST(LegacyFluids, CardsThatNameOtherFunctionsBecomeWindsOfTheirOwn) {
+  // LOWR's F.7.b card without the drag table (MWSEG(6) = 0, ATB's Cd = 1): a second wind, the
+  // same blast, on LOWR alone; UPPR keeps the first (Cd 0.8). The compiled Model has one row per
+  // ellipsoid with its wind's drag coefficient.
+  const auto [deck, line] = Replaced("   2   2   3   1", "   2   2   3   1   3   0   0");
+  const Converted converted = ConvertText(deck);
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  const std::size_t first = converted.text.find("wind {");
+  ASSERT_NE(first, std::string::npos) << converted.text;
+  const std::size_t second = converted.text.find("wind {", first + 1);
+  ASSERT_NE(second, std::string::npos) << converted.text;
+  EXPECT_NE(converted.text.find("drag = 0.8\n    segments = pair.uppr\n", first), std::string::npos)
+      << converted.text;
+  EXPECT_NE(converted.text.find("direction = (1, 0, 0)\n    segments = pair.lowr\n", second),
+            std::string::npos)
+      << converted.text;
+  Compilation compiled = Compile(Source::Text(converted.text, "winds.sled"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Render();
+  const runtime::FluidTable& fluids = compiled.model().fluids;
+  std::map<std::string, double> drag;
+  for (std::size_t row = 0; row < fluids.size(); ++row) {
+    if (fluids.medium[row] != runtime::FluidTable::Medium::kWind) continue;
+    drag[compiled.model().segment_name.at(static_cast<std::size_t>(fluids.segment[row]))] =
+        fluids.drag[row];
+  }
+  EXPECT_EQ(drag, (std::map<std::string, double>{{"pair.uppr", 0.8}, {"pair.lowr", 1.0}}));
 }
 
 TEST(LegacyFluids, BlockingEllipsoidsAreRefusedWithoutACascade) {
