@@ -39,6 +39,9 @@ void FluidChecker::CheckFluids(Scope& scope) {
                "give the air's `speed` (its drag then depends on the body's motion through it), "
                "or a blast's `pressure` against time (whatever the body's motion)");
       }
+      if (const ast::Expr* carrier = ValueOf(bound, "carried_by")) {
+        fluid.carrier = ResolveFrame(scope, *carrier).value_or(FrameRef{});
+      }
       if (const ast::Expr* direction = ValueOf(bound, "direction")) {
         fluid.direction = ExpectDirection(scope, *direction, "direction").value_or(fluid.direction);
       }

@@ -147,13 +147,25 @@ void DeckMapper::MapOneWind(ast::Block& scenario, const std::vector<const WindCa
                   CardComment("F.7.b", first.line) +
                       fmt::format(", wind function {} (E.6.a, line {})", wind->number, wind->line));
   block.target.reset();
+  // NSR, the frame the wind is given in (WINDY): the velocity wind's V is NSV's velocity less
+  // NSR's, the table's (FX, FY, FZ) are in NSR's axes. sled's `carried_by`: the air at rest in
+  // that frame, its direction in the frame's axes.
   const Ref& reference = wind->reference;
+  std::string carrier;
   if (!IsGround(reference.number)) {
-    Report(DiagnosticKind::kDeckNotExpressible, reference,
-           fmt::format("card {}: NSR is {}: a wind relative to a moving segment", reference.card,
-                       reference.number),
-           "sled's wind is given in the ground frame: set NSR to 0 (the ground)");
-    return;
+    const auto segment_count = static_cast<int>(deck_.segments.size());
+    const auto vehicle_count = static_cast<int>(deck_.vehicles.size());
+    if (reference.number >= 1 && reference.number <= segment_count) {
+      carrier = FrameName({DeckFrame::Kind::kSegment, reference.number});
+    } else if (reference.number > segment_count &&
+               reference.number <= segment_count + vehicle_count) {
+      carrier = FrameName({DeckFrame::Kind::kVehicle, reference.number - segment_count - 1});
+    } else {
+      Report(DiagnosticKind::kDeckNotExpressible, reference,
+             fmt::format("card {}: NSR is {}, an airbag", reference.card, reference.number),
+             "a wind is carried by the ground, a vehicle or a body segment: set NSR to one");
+      return;
+    }
   }
   if (wind->heat_ratio != 0) {
     // The dynamic pressure 0.5 (RK PR / C^2) V^2 of NSV's velocity V: air at rest, of the
@@ -170,8 +182,13 @@ void DeckMapper::MapOneWind(ast::Block& scenario, const std::vector<const WindCa
                        "are equal, along a diagonal of two axes ATB's force is 70.7 % of sled's "
                        "(57.7 % along a diagonal of three) and turned towards the larger "
                        "component; for an ellipsoid that moves unlike NSV the difference is its "
-                       "velocity relative to NSV's",
-                       wind->moving.card, wind->moving.number));
+                       "velocity relative to NSV's{}",
+                       wind->moving.card, wind->moving.number,
+                       carrier.empty() ? ""
+                                       : fmt::format("; V is relative to NSR's centre ({}), "
+                                                     "sled's to NSR's velocity at each "
+                                                     "ellipsoid: the same while NSR does not turn",
+                                                     carrier)));
   } else {
     // A table of the pressure vector against time: one direction, its length the pressure.
     Vec3 direction{1, 0, 0};
@@ -228,6 +245,7 @@ void DeckMapper::MapOneWind(ast::Block& scenario, const std::vector<const WindCa
                        "in the reference)",
                        wind->number));
   }
+  if (!carrier.empty()) Add(block, Attribute("carried_by", Path(carrier)));
   if (drag != 1.0) Add(block, Attribute("drag", Number(drag)));
   Add(block, Names(segments));
   scenario.statements.push_back(std::move(block));

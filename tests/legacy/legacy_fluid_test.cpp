@@ -79,6 +79,31 @@ TEST(LegacyFluids, CardsThatNameOtherFunctionsBecomeWindsOfTheirOwn) {
   EXPECT_EQ(drag, (std::map<std::string, double>{{"pair.uppr", 0.8}, {"pair.lowr", 1.0}}));
 }
 
+TEST(LegacyFluids, AWindGivenInAVehiclesFrameIsCarriedByIt) {
+  // NSR 3, the sled (NSEG 2 + vehicle 1): WINDY turns the table's (FX, FY, FZ) from NSR's axes
+  // (and takes V relative to NSR's velocity): the air is carried by the sled. NSR 1, a body
+  // segment: carried by UPPR. In the Model, each wind row's carrier is that frame.
+  std::vector<std::string> lines = Lines(Corpus());
+  const std::size_t e6b = LineStarting(lines, "   3    BLAST") + 1;
+  for (const auto& [nsr, kind] : {std::pair{3, runtime::FrameRef::Kind::kVehicle},
+                                  std::pair{1, runtime::FrameRef::Kind::kSegment}}) {
+    lines[e6b - 1] = fmt::format("{:12}{:12}{:12}{:12}{:12}", "0.", "0.", "0.", 0, nsr);
+    const Converted converted = ConvertText(Join(lines));
+    ASSERT_EQ(converted.errors, 0) << converted.All();
+    EXPECT_NE(converted.text.find(nsr == 3 ? "carried_by = sled" : "carried_by = pair.uppr"),
+              std::string::npos)
+        << converted.text;
+    Compilation compiled = Compile(Source::Text(converted.text, "carried.sled"));
+    ASSERT_TRUE(compiled.ok()) << compiled.Render();
+    const runtime::FluidTable& fluids = compiled.model().fluids;
+    for (std::size_t row = 0; row < fluids.size(); ++row) {
+      if (fluids.medium[row] != runtime::FluidTable::Medium::kWind) continue;
+      EXPECT_EQ(fluids.carrier[row].kind, kind) << nsr;
+      EXPECT_EQ(fluids.carrier[row].index, 0) << nsr;
+    }
+  }
+}
+
 TEST(LegacyFluids, BlockingEllipsoidsAreRefusedWithoutACascade) {
   const auto [deck, line] = Replaced("   1   1   3   1", "   1   1   3   1   3   4   1 1 1");
   const Converted converted = ConvertText(deck);

@@ -122,6 +122,7 @@ TEST(Wind, TwoWindsEachDragTheirOwnSphere) {
 )",
                                            sphere));
   ASSERT_EQ(run.errors, "");
+  ASSERT_EQ(run.series.rows(), 1001u);
   struct Air {
     const char* along;
     const char* across;
@@ -138,6 +139,47 @@ TEST(Wind, TwoWindsEachDragTheirOwnSphere) {
           << along << " " << t;
       EXPECT_NEAR(ChannelAt(run.series, across, row), 0.0, 1e-12) << across << " " << t;
     }
+  }
+}
+
+TEST(Wind, AirCarriedByAVehicleMovesWithItAndTurnsWithIt) {
+  // A car at 15 m/s along x, its air still in it (`speed = 0`): the sphere, at rest in the
+  // ground, lags the car's air as W / (1 + k W t / m) with W = 15 m/s.
+  const double m = 0.2, r = 0.05, rho = 1.2, w = 15.0;
+  const SceneRun carried = RunText(
+      Sphere(m, r, "(0, 0, 0) m/s^2",
+             fmt::format("vehicle car {{ velocity = ({}, 0, 0) m/s }}\n"
+                         "  wind {{ speed = 0 m/s  direction = x  carried_by = car  density = {} "
+                         "kg/m^3  segments = b.s }}",
+                         w, rho),
+             "(0, 0, 0)", 1.0));
+  ASSERT_EQ(carried.errors, "");
+  ASSERT_EQ(carried.series.rows(), 1001u);
+  const double k = 0.5 * rho * kPi * r * r / m;
+  for (std::size_t row = 0; row < carried.series.rows(); row += 50) {
+    const double t = TimeAt(carried.series, row);
+    EXPECT_NEAR(ChannelAt(carried.series, "b.s.velocity.x [m/s]", row), w - w / (1 + k * w * t),
+                1e-8 * w)
+        << t;
+  }
+  // A blast of 2 kPa along the x of a car yawed 90 degrees pushes along the ground's y with
+  // Cd p pi r^2: y = p pi r^2 t^2 / (2 m).
+  const double p = 2000.0;
+  const SceneRun blast = RunText(Sphere(
+      m, r, "(0, 0, 0) m/s^2",
+      fmt::format("vehicle car {{ velocity = (0, 0, 0) m/s }}\n"
+                  "  initial car {{ orientation = (90, 0, 0) deg }}\n"
+                  "  wind {{ pressure = {} Pa  direction = x  carried_by = car  segments = b.s }}",
+                  p),
+      "(0, 0, 0)", 0.2));
+  ASSERT_EQ(blast.errors, "");
+  ASSERT_EQ(blast.series.rows(), 201u);
+  for (std::size_t row = 0; row < blast.series.rows(); row += 50) {
+    const double t = TimeAt(blast.series, row);
+    EXPECT_NEAR(ChannelAt(blast.series, "b.s.position.y [m]", row),
+                p * kPi * r * r * t * t / (2 * m), 1e-9)
+        << t;
+    EXPECT_NEAR(ChannelAt(blast.series, "b.s.position.x [m]", row), 0.0, 1e-9) << t;
   }
 }
 
