@@ -4,6 +4,8 @@
 // a segment without an ellipsoid or with a hyper-ellipsoid (its volume and projected area are
 // not the ellipsoid's), water without gravity (nothing to float against), either under symmetry
 // (the mirrored or planar half would feel a flow that is not symmetric).
+#include <map>
+
 #include <fmt/format.h>
 
 #include "compiler/check/checkers.h"
@@ -11,6 +13,9 @@
 namespace sled::compiler::internal {
 
 void FluidChecker::CheckFluids(Scope& scope) {
+  // The wind each segment is in: two airs' drags do not add (the drag is quadratic in the
+  // velocity relative to the air), so a segment is in one wind.
+  std::map<int, const ast::Expr*> in_wind;
   for (const ast::Statement* statement : run_blocks_) {
     const bool wind = statement->keyword == "wind";
     if (!wind && statement->keyword != "water") continue;
@@ -33,6 +38,9 @@ void FluidChecker::CheckFluids(Scope& scope) {
                "a wind has a `speed` or a `pressure`, one of them", "not one of the two",
                "give the air's `speed` (its drag then depends on the body's motion through it), "
                "or a blast's `pressure` against time (whatever the body's motion)");
+      }
+      if (const ast::Expr* carrier = ValueOf(bound, "carried_by")) {
+        fluid.carrier = ResolveFrame(scope, *carrier).value_or(FrameRef{});
       }
       if (const ast::Expr* direction = ValueOf(bound, "direction")) {
         fluid.direction = ExpectDirection(scope, *direction, "direction").value_or(fluid.direction);
@@ -74,6 +82,20 @@ void FluidChecker::CheckFluids(Scope& scope) {
                  "the flow acts on a segment's contact ellipsoids: give it an `ellipsoid { "
                  "semi_axes = ... }` of degree 2");
           continue;
+        }
+        if (wind) {
+          const auto [earlier, first] = in_wind.emplace(entity->index, &value);
+          if (!first) {
+            auto diagnostic = lang::MakeDiagnostic(
+                DiagnosticKind::kFluidNotModelled, value.range,
+                fmt::format("segment `{}` is in two winds", segment.name), "in a second wind");
+            diagnostic.labels.push_back({earlier->second->range, "first here", false});
+            diagnostic.help =
+                "a drag is quadratic in the velocity relative to the air, so two winds' do not "
+                "add: give the segment one wind";
+            diagnostics_.Consume(std::move(diagnostic));
+            continue;
+          }
         }
         fluid.segments.push_back(entity->index);
       }

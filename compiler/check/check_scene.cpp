@@ -192,9 +192,10 @@ CheckContext::BoundBlock SceneChecker::DeclareFileContents(Scope& scope, const a
     } else if (keyword == "output") {
       outputs_.push_back({statement, &scope, -1});
     } else {
-      // time, integrator, restart, settle, symmetry: at most one of each.
+      // time, integrator, restart, settle, symmetry, water: at most one of each; several winds
+      // (airs of their own speeds on their own segments, as ATB's F.7.b cards name functions).
       for (const ast::Statement* earlier : run_blocks_) {
-        if (earlier->keyword == keyword) {
+        if (earlier->keyword == keyword && keyword != "wind") {
           auto diagnostic =
               lang::MakeDiagnostic(DiagnosticKind::kDuplicateAttribute, statement->keyword_range,
                                    fmt::format("`{}` is given twice", keyword), "given again here");

@@ -284,7 +284,8 @@ struct Fluid {
   Medium medium = Medium::kWind;
   FunctionId speed = -1;     // wind: time -> speed
   FunctionId pressure = -1;  // wind, instead of a speed: time -> pressure of a blast
-  Vec3 direction{1, 0, 0};   // wind: unit, where the air goes, in the ground frame
+  Vec3 direction{1, 0, 0};   // wind: unit, where the air goes, in the axes of `carrier`
+  FrameRef carrier;          // wind: the frame the air is at rest in but for its speed
   double density = 0.0;
   double drag = 1.0;   // drag coefficient
   double level = 0.0;  // water: height of the surface above the ground origin, against gravity

@@ -308,7 +308,11 @@ std::vector<BlockSpec> MakeSpecs() {
         Function("pressure", d::kTime, d::kPressure,
                  "instead of `speed`: a blast's pressure against time, whatever the body's "
                  "motion"),
-        Vector("direction", d::kDimensionless, "where the air goes, in the ground frame", true),
+        Vector("direction", d::kDimensionless,
+               "where the air goes, in the axes of `carried_by` (the ground's by default)", true),
+        Reference("carried_by", "ground vehicle segment",
+                  "the frame the air is at rest in but for `speed` (a cabin's air moves with its "
+                  "vehicle); default the ground"),
         Positive("density", d::kDensity, "density of the air; default 1.225 kg/m^3"),
         NonNegative("drag", d::kDimensionless, "drag coefficient of the ellipsoids; default 1"),
         References("segments", "segment", "the segments whose contact ellipsoids the wind pushes",

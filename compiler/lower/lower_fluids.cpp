@@ -31,6 +31,7 @@ void LowerFluids(Lowering& lowering) {
         fluids.speed.push_back(speed);
         fluids.pressure.push_back(pressure);
         fluids.direction.push_back(direction);
+        fluids.carrier.push_back(wind ? lowering.Frame(fluid.carrier) : runtime::FrameRef{});
         fluids.level.push_back(wind ? 0.0 : fluid.level);
       }
     }

@@ -310,7 +310,10 @@ struct InitialCard {
 // decide its joint's initial angles (the mapper computes them).
 struct OrientationCard {
   std::uint32_t line = 0;
-  Vec3 angles{}, angular_velocity{};
+  // `angles` are sled's z-y-x angles of the card's turn; `given` the card's yaw, pitch and roll,
+  // turned in the axis order `order` (ID1 to ID3; ATB's default 1, 2, 3).
+  Vec3 angles{}, angular_velocity{}, given{};
+  std::array<int, 3> order{1, 2, 3};
   enum class Reference {
     kGround,     // ID4 0 or the ground's number
     kFrame,      // ID4 > 0: the axes of segment or vehicle `frame` (ATB numbering)

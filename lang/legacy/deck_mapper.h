@@ -18,8 +18,13 @@
 #include "lang/ast/ast.h"
 #include "lang/diagnostics/diagnostic.h"
 #include "lang/legacy/deck.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy::mapping {
+
+// A G.3.a card's yaw, pitch and roll as the deck gives them, for a comment; with the rotation
+// order when it makes sled's z-y-x angles differ from them (map_posture.cpp).
+std::string GivenTurn(const OrientationCard& card);
 
 class DeckMapper {
  public:
@@ -173,6 +178,8 @@ class DeckMapper {
   std::string SegmentInFluid(const Ref& ref, const Ref& ellipsoid, std::string_view fluid,
                              std::string_view field);
   void MapWind(ast::Block& scenario);
+  // One wind: the F.7.b cards that name the same wind and drag functions (map_fluids.cpp).
+  void MapOneWind(ast::Block& scenario, const std::vector<const WindCard*>& cards);
   void MapWater(ast::Block& scenario);
   void MapFunctions(ast::Block& scenario);
   ast::Statement FunctionStatement(const FunctionCard& function, Use use, const std::string& name,
@@ -187,6 +194,9 @@ class DeckMapper {
   // G.3.a of the segments that hang from joints (and B.4.b's Euler angles): `initial JOINT {
   // angles = ... }` where the deck's orientations turn a joint (map_posture.cpp).
   void MapPostures(ast::Block& scenario);
+  // G.3.a angular velocities of the segments that hang from joints (with I3 not 0), given each
+  // segment's axes in the ground's, `world` (map_posture.cpp).
+  void MapJointRates(ast::Block& scenario, const std::vector<Mat>& world);
   void AddOrientation(ast::Statement& initial, std::size_t segment);
   // One H request. KREF 0 is each card's default: H.1 and H.4 in the segment's own axes (sled's
   // default too), the relative H.2, H.3, H.5 and H.6 relative to the primary vehicle.

@@ -632,7 +632,13 @@ void DeckMapper::MapInitial(ast::Block& scenario) {
 void DeckMapper::AddOrientation(ast::Statement& initial, std::size_t segment) {
   if (segment >= deck_.initial_orientations.size()) return;
   const OrientationCard& card = deck_.initial_orientations[segment];
-  if (!IsZero(card.angles)) Add(initial, Attribute("orientation", Vector(card.angles, "deg")));
+  if (!IsZero(card.angles)) {
+    Add(initial, Attribute("orientation", Vector(card.angles, "deg")));
+    if (card.given != card.angles) {  // G.3.a ID1 to ID3: the same turn as sled's z-y-x angles
+      initial.block->statements.back().leading_comments.push_back(
+          {" G.3.a: " + GivenTurn(card), {}, false});
+    }
+  }
   if (!IsZero(card.angular_velocity)) {
     // G.3.a gives it in the segment's own axes, sled's `angular_velocity` is in the ground's.
     const Vec3 w = Turned(card.angles, card.angular_velocity);

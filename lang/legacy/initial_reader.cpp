@@ -5,8 +5,12 @@
 #include "lang/legacy/initial_reader.h"
 
 #include "lang/legacy/equilibrium_reader.h"
+#include "lang/legacy/rotations.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,33 +80,78 @@ class InitialReader : public DeckFields {
       orientation.angles = Triple(card, 1, 10, "yaw, pitch and roll");
       orientation.angles_where = r_.Range(card, 1, 30);
       orientation.angular_velocity = GivenVelocity(card, "angular velocity");
-      for (int i = 0; i < 3; ++i) {
-        const int first = 61 + 3 * i;
-        const int value = r_.Integer(card, first, first + 2, "ID, a rotation order");
-        if (value != 0) {
-          Refuse(card, first, first + 2, fmt::format("ID{} is {}", i + 1, value),
-                 "sled's initial orientations are yaw, pitch, roll (about z, then y, then x); "
-                 "leave columns 61-69 blank (ATB's default order)");
-          break;
-        }
-      }
+      RotationOrder(card, orientation);
       const int segment = static_cast<int>(s) + 1;
       const bool reference =
           std::find(references.begin(), references.end(), segment) != references.end();
       ReadOrientationReference(card, segment, reference, orientation);
-      if (!reference && orientation.angular_velocity != Vec3{}) {
-        Refuse(card, 31, 60,
-               fmt::format("an initial angular velocity of segment {}, which hangs from joint {}",
-                           segment, s),
-               "sled solves a jointed segment's joint rates from an angular velocity in the "
-               "ground frame, and how ATB combines this one with the reference segment's "
-               "(COMPUTE_INIT_ANG_VEL) is not in the reference; leave columns 31-60 blank and "
-               "give `initial BODY.SEGMENT { angular_velocity = ... }` in the scenario");
-        orientation.angular_velocity = Vec3{};
-      }
       deck_.initial_orientations.push_back(orientation);
     }
     if (i1 == 15 && !r_.truncated()) ReadEquilibriumCards(*this, g1);
+  }
+
+  // G.3.a ID1 to ID3 (columns 61-69): the axes, in turn, of the three rotations that take the
+  // segment from its reference frame to its own axes; ID1 = 0 is ATB's default 1, 2, 3
+  // (INPUT_ORIENT). DRCYPR turns about each axis by the angle it pairs with it (yaw about z,
+  // pitch about y, roll about x) and ATB keeps the result untransposed as the segment's
+  // direction cosines, so 1, 2, 3 is R = Rx(roll) Ry(pitch) Rz(yaw): the yaw about the
+  // reference's z first, then the pitch and the roll about its y and x. The angles are
+  // rewritten as the z-y-x angles of that R, sled's yaw, pitch and roll, so every later use of
+  // them (the reference segment's `orientation`, its angular velocity, the joint angles) turns
+  // the segment as ATB does. ID1 < 0 (G.3.b projections) is refused.
+  void RotationOrder(const Card& card, OrientationCard& orientation) {
+    std::array<int, 3> order{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const int first = 61 + 3 * static_cast<int>(i);
+      order[i] = r_.Integer(card, first, first + 2, "ID, a rotation order");
+    }
+    if (order[0] < 0) {
+      Refuse(card, 61, 63, fmt::format("ID1 is {}: the orientation from projections", order[0]),
+             "the G.3.b projection card's reader (INPUT_PROJANG) is not in the reference; give "
+             "the yaw, pitch and roll with ID1 = 0 or an order of axes");
+      return;
+    }
+    if (order[0] == 0) {
+      if (order[1] != 0 || order[2] != 0) {
+        Ignored(card, 61, 69, "ID2 and ID3 without ID1",
+                "ATB takes the default order 1, 2, 3 whenever ID1 is 0 (INPUT_ORIENT); the "
+                "other two are left out");
+      }
+      order = {1, 2, 3};
+    } else if (const auto why = OrderProblem(order)) {
+      Invalid(card, 61, 69, fmt::format("ID1 to ID3 are {}, {}, {}", order[0], order[1], order[2]),
+              std::string(*why));
+      return;
+    }
+    const std::optional<Mat> turn = OrderedYawPitchRoll(orientation.angles, order);
+    if (!turn) {
+      Invalid(card, 61, 69, fmt::format("ID1 to ID3 are {}, {}, {}", order[0], order[1], order[2]),
+              "with a negative number DRCYPR picks the angle by the sum of the three; this sum "
+              "names none");
+      return;
+    }
+    orientation.given = orientation.angles;
+    orientation.order = order;
+    orientation.angles = ZyxDegrees(*turn);
+  }
+
+  // CHECK_ROTATION_ORDER's rules for an order with ID1 > 0 (ATB's STOPs 230 to 232).
+  static std::optional<std::string_view> OrderProblem(const std::array<int, 3>& order) {
+    for (const int id : order) {
+      if (id == 0 || id > 3 || id < -3) {
+        return "each of ID1 to ID3 is an axis, 1 to 3 (x, y, z), ID2 and ID3 maybe negative "
+               "(ATB stops otherwise, STOP 230)";
+      }
+    }
+    const int second = std::abs(order[1]), third = std::abs(order[2]);
+    if (order[0] == second || second == third) {
+      return "two rotations in a row cannot be about the same axis (ATB's STOP 231)";
+    }
+    if (order[0] == third && order[2] != -order[0]) {
+      return "when the first and third axes are the same, the third is negative (ATB's "
+             "STOP 232)";
+    }
+    return std::nullopt;
   }
 
   // G.3.a ID4 (columns 70-72), the frame the yaw, pitch and roll turn from (INPUT_ORIENT,

@@ -79,20 +79,30 @@ bool DeckMapper::IsGround(int number) const {
                                       1;
 }
 
+// One `wind` block for each pair of MWSEG(5) and MWSEG(6) the F.7.b cards name, in the order
+// of their first card: each is an air of its own (sled's winds may be several, each segment in
+// one; ATB's F.7.a puts each segment on one card).
 void DeckMapper::MapWind(ast::Block& scenario) {
-  if (deck_.winds.empty()) return;
-  const WindCard& first = deck_.winds.front();
-  std::vector<std::string> segments;
+  std::vector<std::vector<const WindCard*>> winds;
   for (const WindCard& card : deck_.winds) {
-    if (card.force.number != first.force.number || card.drag.number != first.drag.number) {
-      Report(DiagnosticKind::kDeckNotExpressible,
-             card.force.number != first.force.number ? card.force : card.drag,
-             fmt::format("card {}: a wind or drag function unlike the first F.7.b card's",
-                         card.force.card),
-             "sled's scene has one wind with one drag coefficient: give every F.7.b card the "
-             "same MWSEG(5) and MWSEG(6)");
-      return;
+    auto same = std::find_if(winds.begin(), winds.end(), [&](const auto& wind) {
+      return wind.front()->force.number == card.force.number &&
+             wind.front()->drag.number == card.drag.number;
+    });
+    if (same == winds.end()) {
+      winds.push_back({&card});
+    } else {
+      same->push_back(&card);
     }
+  }
+  for (const auto& cards : winds) MapOneWind(scenario, cards);
+}
+
+void DeckMapper::MapOneWind(ast::Block& scenario, const std::vector<const WindCard*>& cards) {
+  const WindCard& first = *cards.front();
+  std::vector<std::string> segments;
+  for (const WindCard* card_of : cards) {
+    const WindCard& card = *card_of;
     const std::string path = SegmentInFluid(card.segment, card.ellipsoid, "wind", "MWSEG(2)");
     if (path.empty()) return;
     segments.push_back(path);
@@ -124,7 +134,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
       Report(DiagnosticKind::kDeckNotExpressible, first.drag,
              fmt::format("card {}: a drag coefficient that changes with time (wind function {})",
                          first.drag.card, first.drag.number),
-             "sled's wind has one drag coefficient: give the function the same FX on every "
+             "a sled wind has one drag coefficient: give the function the same FX on every "
              "E.6.d card");
       return;
     }
@@ -137,13 +147,25 @@ void DeckMapper::MapWind(ast::Block& scenario) {
                   CardComment("F.7.b", first.line) +
                       fmt::format(", wind function {} (E.6.a, line {})", wind->number, wind->line));
   block.target.reset();
+  // NSR, the frame the wind is given in (WINDY): the velocity wind's V is NSV's velocity less
+  // NSR's, the table's (FX, FY, FZ) are in NSR's axes. sled's `carried_by`: the air at rest in
+  // that frame, its direction in the frame's axes.
   const Ref& reference = wind->reference;
+  std::string carrier;
   if (!IsGround(reference.number)) {
-    Report(DiagnosticKind::kDeckNotExpressible, reference,
-           fmt::format("card {}: NSR is {}: a wind relative to a moving segment", reference.card,
-                       reference.number),
-           "sled's wind is given in the ground frame: set NSR to 0 (the ground)");
-    return;
+    const auto segment_count = static_cast<int>(deck_.segments.size());
+    const auto vehicle_count = static_cast<int>(deck_.vehicles.size());
+    if (reference.number >= 1 && reference.number <= segment_count) {
+      carrier = FrameName({DeckFrame::Kind::kSegment, reference.number});
+    } else if (reference.number > segment_count &&
+               reference.number <= segment_count + vehicle_count) {
+      carrier = FrameName({DeckFrame::Kind::kVehicle, reference.number - segment_count - 1});
+    } else {
+      Report(DiagnosticKind::kDeckNotExpressible, reference,
+             fmt::format("card {}: NSR is {}, an airbag", reference.card, reference.number),
+             "a wind is carried by the ground, a vehicle or a body segment: set NSR to one");
+      return;
+    }
   }
   if (wind->heat_ratio != 0) {
     // The dynamic pressure 0.5 (RK PR / C^2) V^2 of NSV's velocity V: air at rest, of the
@@ -160,8 +182,13 @@ void DeckMapper::MapWind(ast::Block& scenario) {
                        "are equal, along a diagonal of two axes ATB's force is 70.7 % of sled's "
                        "(57.7 % along a diagonal of three) and turned towards the larger "
                        "component; for an ellipsoid that moves unlike NSV the difference is its "
-                       "velocity relative to NSV's",
-                       wind->moving.card, wind->moving.number));
+                       "velocity relative to NSV's{}",
+                       wind->moving.card, wind->moving.number,
+                       carrier.empty() ? ""
+                                       : fmt::format("; V is relative to NSR's centre ({}), "
+                                                     "sled's to NSR's velocity at each "
+                                                     "ellipsoid: the same while NSR does not turn",
+                                                     carrier)));
   } else {
     // A table of the pressure vector against time: one direction, its length the pressure.
     Vec3 direction{1, 0, 0};
@@ -218,6 +245,7 @@ void DeckMapper::MapWind(ast::Block& scenario) {
                        "in the reference)",
                        wind->number));
   }
+  if (!carrier.empty()) Add(block, Attribute("carried_by", Path(carrier)));
   if (drag != 1.0) Add(block, Attribute("drag", Number(drag)));
   Add(block, Names(segments));
   scenario.statements.push_back(std::move(block));

@@ -36,7 +36,25 @@ bool IsIdentity(const Mat& r) {
   return true;
 }
 
+double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 }  // namespace
+
+std::string GivenTurn(const OrientationCard& card) {
+  std::string text = fmt::format("yaw, pitch and roll ({}, {}, {}) deg", card.given[0],
+                                 card.given[1], card.given[2]);
+  if (card.given != card.angles) {
+    text += fmt::format(" turned about axes {}, {}, {} in turn (ID1 to ID3: R = ", card.order[0],
+                        card.order[1], card.order[2]);
+    for (const int id : card.order) {
+      const int axis = id < 0 ? -id : id;
+      const char* names[] = {"x", "y", "z"};
+      text += fmt::format("R{}", names[axis - 1]);
+    }
+    text += ")";
+  }
+  return text;
+}
 
 void DeckMapper::MapPostures(ast::Block& scenario) {
   const std::size_t n = deck_.segments.size();
@@ -124,9 +142,68 @@ void DeckMapper::MapPostures(ast::Block& scenario) {
     ast::Statement initial =
         Declaration("initial", Path(body_ + "." + joints_[s - 1]),
                     CardComment("G.3.a", card.line == 0 ? joint.line : card.line) +
-                        fmt::format(": segment {}'s yaw, pitch and roll ({}, {}, {}) deg {}", s + 1,
-                                    card.angles[0], card.angles[1], card.angles[2], from));
+                        fmt::format(": segment {}'s {} {}", s + 1, GivenTurn(card), from));
     Add(initial, Attribute("angles", Vector(angles, "deg")));
+    scenario.statements.push_back(std::move(initial));
+  }
+  MapJointRates(scenario, world);
+}
+
+// With I3 = 1 (or 2) ATB starts every segment, jointed or not, with its G.3.a angular velocity,
+// in the segment's own axes (COMPUTE_INIT_ANG_VEL: SEG%ANG_VEL is the card's, a blank card
+// zero); with I3 = 0 every segment has the primary vehicle's and the cards are ignored. sled
+// starts a jointed segment with its parent's angular velocity (zero joint rates) unless an
+// `initial SEGMENT { angular_velocity }` in the ground's axes says otherwise, and then solves the
+// joint's rates for it. So a segment whose ATB angular velocity differs from its parent's gets
+// that statement: w_ground = R_segment w_card. A joint that cannot turn that way (a slip joint,
+// a locked one, a pin about another axis) is refused: what ATB does with such a start is not in
+// the reference.
+void DeckMapper::MapJointRates(ast::Block& scenario, const std::vector<Mat>& world) {
+  if (deck_.velocities_from_vehicle) return;
+  const std::size_t n = std::min(world.size(), deck_.initial_orientations.size());
+  std::vector<Vec3> omega(n);  // each segment's angular velocity in the ground's axes, deg/T
+  for (std::size_t s = 0; s < n; ++s) {
+    const OrientationCard& card = deck_.initial_orientations[s];
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t k = 0; k < 3; ++k) omega[s][i] += world[s][i][k] * card.angular_velocity[k];
+    }
+    if (s == 0 || s > deck_.joints.size()) continue;
+    const JointCard& joint = deck_.joints[s - 1];
+    if (joint.parent < 1 || static_cast<std::size_t>(joint.parent) > s) continue;
+    const auto parent = static_cast<std::size_t>(joint.parent - 1);
+    Vec3 relative{};
+    for (std::size_t i = 0; i < 3; ++i) relative[i] = omega[s][i] - omega[parent][i];
+    const double size = std::sqrt(Dot(relative, relative));
+    if (size <= 1e-9 * (1 + std::sqrt(Dot(omega[s], omega[s])))) continue;
+    const Ref where{static_cast<int>(s + 1), card.angles_where, "G.3.a"};
+    std::string cannot;
+    if (joint.type == JointType::kSlip || joint.locked) {
+      cannot = joint.locked ? "a locked joint" : "a slip joint, which does not turn";
+    } else if (joint.type == JointType::kPin) {
+      const Mat parent_axes = Multiply(world[parent], YawPitchRoll(joint.axes_parent));
+      const Vec3 axis{parent_axes[0][1], parent_axes[1][1], parent_axes[2][1]};
+      const double along = Dot(relative, axis);
+      if (std::fabs(std::fabs(along) - size) > 1e-9 * size) {
+        cannot = "a pin, and the difference from its proximal segment's is not about its axis";
+      }
+    }
+    if (!cannot.empty()) {
+      Report(DiagnosticKind::kDeckNotExpressible, where,
+             fmt::format("card G.3.a (segment {}): an angular velocity that joint {}, {}, "
+                         "cannot give it",
+                         s + 1, s, cannot),
+             "give the segment the angular velocity of its proximal segment (as turned by the "
+             "joint only about the axes it turns about)");
+      continue;
+    }
+    ast::Statement initial =
+        Declaration("initial", Path(body_ + "." + segments_[s]),
+                    CardComment("G.3.a", card.line) +
+                        fmt::format(": ({}, {}, {}) deg/{} in segment {}'s axes (I3 = 1), turned "
+                                    "to the ground's",
+                                    card.angular_velocity[0], card.angular_velocity[1],
+                                    card.angular_velocity[2], T, s + 1));
+    Add(initial, Attribute("angular_velocity", Vector(omega[s], "deg/" + T)));
     scenario.statements.push_back(std::move(initial));
   }
 }

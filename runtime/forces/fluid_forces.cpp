@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "runtime/dynamics/frame_motion.h"
 #include "runtime/forces/applied_loads.h"
 #include "runtime/forces/functions.h"
 #include "runtime/model/data.h"
@@ -56,8 +57,9 @@ void AddFluidForces(const Model& model, Data& data) {
     const Vec3 velocity =
         R * (data.velocity[s].tail<3>() + data.velocity[s].head<3>().cross(fluids.center[k]));
     const Mat3 axes = R * fluids.axes[k];
+    const FrameMotion carrier = MotionOf(data, fluids.carrier[k]);
+    const Vec3 along = carrier.rotation * fluids.direction[k];  // world
     if (fluids.pressure[k] >= 0) {
-      const Vec3& along = fluids.direction[k];
       const double area = ProjectedArea(fluids.semi_axes[k], axes.transpose() * along);
       const double pressure = EvaluateFunction(model.functions, fluids.pressure[k], data.time);
       AddAppliedForce(data, s, center, fluids.drag[k] * pressure * area * along, Vec3::Zero());
@@ -65,7 +67,7 @@ void AddFluidForces(const Model& model, Data& data) {
     }
     if (fluids.medium[k] == FluidTable::Medium::kWind) {
       const double speed = EvaluateFunction(model.functions, fluids.speed[k], data.time);
-      const Vec3 air = speed * fluids.direction[k] - velocity;
+      const Vec3 air = speed * along + VelocityAt(carrier, center) - velocity;
       AddAppliedForce(data, s, center,
                       Drag(fluids.density[k], fluids.drag[k], fluids.semi_axes[k], axes, air),
                       Vec3::Zero());

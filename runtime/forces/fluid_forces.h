@@ -1,11 +1,12 @@
 // Wind and water: forces of a moving or still fluid on the contact ellipsoids of the segments a
 // `wind` or `water` block names (ATB's wind forces, F.7, and its water forces, F.9).
 //
-// Wind: the air moves at speed(t) along a fixed direction (ground frame); each ellipsoid feels the
-// drag 0.5 rho Cd A |u| u of the air's velocity u relative to its centre, A the area the ellipsoid
-// presents across u (its projection on the plane normal to u), applied at the centre. A blast
-// given as a pressure p(t) instead pushes with Cd p A along the direction, A across it, whatever
-// the body's motion (ATB's tabulated wind).
+// Wind: the air moves at speed(t) along a direction fixed in its carrier (the ground, a vehicle or
+// a segment: the air at rest in it but for the speed, at the carrier's velocity at each point);
+// each ellipsoid feels the drag 0.5 rho Cd A |u| u of the air's velocity u relative to its
+// centre, A the area the ellipsoid presents across u (its projection on the plane normal to u),
+// applied at the centre. A blast given as a pressure p(t) instead pushes with Cd p A along the
+// direction, A across it, whatever the body's motion (ATB's tabulated wind).
 // Water: still, below a horizontal surface (normal against gravity, `level` above the ground
 // origin along it). Each ellipsoid takes the buoyancy -rho g V_sub at the centroid of its
 // submerged part (a plane cuts an ellipsoid as the affine image of a plane cutting the unit
@@ -37,7 +38,8 @@ struct FluidTable {
   std::vector<double> density;         // of the fluid
   std::vector<std::int32_t> speed;     // wind: time -> speed, into Model::functions; else -1
   std::vector<std::int32_t> pressure;  // wind: time -> a blast's pressure; else -1
-  std::vector<Vec3> direction;         // wind: unit, ground frame; water: up (against gravity)
+  std::vector<Vec3> direction;         // wind: unit, carrier's axes; water: up (against gravity)
+  std::vector<FrameRef> carrier;       // wind: the frame the air is at rest in but for its speed
   std::vector<double> level;           // water: height of the surface along `direction`
   std::size_t size() const { return medium.size(); }
 };

@@ -245,6 +245,7 @@ enum FieldCheck : unsigned {
   X(Fluid, fluids.speed, Physics, Function, kOrNone)                                       \
   X(Fluid, fluids.pressure, Physics, Function, kOrNone)                                    \
   X(Fluid, fluids.direction, Physics, None, kPlain)                                        \
+  X(Fluid, fluids.carrier, Physics, None, kPlain)                                          \
   X(Fluid, fluids.level, Physics, None, kPlain)                                            \
   X(Shape, shape_name, Records, None, kPlain)                                              \
   X(Shape, shape_segment, Records, Segment, kPlain)                                        \

@@ -181,6 +181,10 @@ std::vector<double> ModelValue(const runtime::Model& m, const std::string& field
     if (field == "fluid_drag") return {f.drag.at(row)};
     if (field == "fluid_density") return {f.density.at(row)};
     if (field == "fluid_level") return {f.level.at(row)};
+    if (field == "fluid_carrier") {  // its kind (0 ground, 1 vehicle, 2 segment) and index
+      return {static_cast<double>(f.carrier.at(row).kind),
+              static_cast<double>(f.carrier.at(row).index)};
+    }
   }
   if (field.rfind("load_", 0) == 0) {  // a row of the applied loads, by number (D.9 order)
     const runtime::LoadTable& l = m.loads;

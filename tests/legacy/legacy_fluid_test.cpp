@@ -4,11 +4,14 @@
 // without a cascade from the cards after it.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 
 #include <fmt/format.h>
 
 #include "legacy_test_deck.h"
+#include "runtime/forces/fluid_forces.h"
+#include "sled/compile.h"
 
 namespace sled::lang::legacy {
 namespace {
@@ -39,6 +42,59 @@ TEST(LegacyFluids, TheCorpusDeckBecomesAWindAndAWaterBlock) {
   EXPECT_TRUE(converted.Has(fmt::format("deck.ain:{}:13-16: warning[W0504]", f7)))
       << converted.All();
   EXPECT_TRUE(converted.Has("the water's forces are read as buoyancy")) << converted.All();
+}
+
+TEST(LegacyFluids, CardsThatNameOtherFunctionsBecomeWindsOfTheirOwn) {
+  // LOWR's F.7.b card without the drag table (MWSEG(6) = 0, ATB's Cd = 1): a second wind, the
+  // same blast, on LOWR alone; UPPR keeps the first (Cd 0.8). The compiled Model has one row per
+  // ellipsoid with its wind's drag coefficient.
+  const auto [deck, line] = Replaced("   2   2   3   1", "   2   2   3   1   3   0   0");
+  const Converted converted = ConvertText(deck);
+  ASSERT_EQ(converted.errors, 0) << converted.All();
+  const std::size_t first = converted.text.find("wind {");
+  ASSERT_NE(first, std::string::npos) << converted.text;
+  const std::size_t second = converted.text.find("wind {", first + 1);
+  ASSERT_NE(second, std::string::npos) << converted.text;
+  EXPECT_NE(converted.text.find("drag = 0.8\n    segments = pair.uppr\n", first), std::string::npos)
+      << converted.text;
+  EXPECT_NE(converted.text.find("direction = (1, 0, 0)\n    segments = pair.lowr\n", second),
+            std::string::npos)
+      << converted.text;
+  Compilation compiled = Compile(Source::Text(converted.text, "winds.sled"));
+  ASSERT_TRUE(compiled.ok()) << compiled.Render();
+  const runtime::FluidTable& fluids = compiled.model().fluids;
+  std::map<std::string, double> drag;
+  for (std::size_t row = 0; row < fluids.size(); ++row) {
+    if (fluids.medium[row] != runtime::FluidTable::Medium::kWind) continue;
+    drag[compiled.model().segment_name.at(static_cast<std::size_t>(fluids.segment[row]))] =
+        fluids.drag[row];
+  }
+  EXPECT_EQ(drag, (std::map<std::string, double>{{"pair.uppr", 0.8}, {"pair.lowr", 1.0}}));
+}
+
+TEST(LegacyFluids, AWindGivenInAVehiclesFrameIsCarriedByIt) {
+  // NSR 3, the sled (NSEG 2 + vehicle 1): WINDY turns the table's (FX, FY, FZ) from NSR's axes
+  // (and takes V relative to NSR's velocity): the air is carried by the sled. NSR 1, a body
+  // segment: carried by UPPR. In the Model, each wind row's carrier is that frame.
+  std::vector<std::string> lines = Lines(Corpus());
+  const std::size_t e6b = LineStarting(lines, "   3    BLAST") + 1;
+  for (const auto& [nsr, kind] : {std::pair{3, runtime::FrameRef::Kind::kVehicle},
+                                  std::pair{1, runtime::FrameRef::Kind::kSegment}}) {
+    lines[e6b - 1] = fmt::format("{:12}{:12}{:12}{:12}{:12}", "0.", "0.", "0.", 0, nsr);
+    const Converted converted = ConvertText(Join(lines));
+    ASSERT_EQ(converted.errors, 0) << converted.All();
+    EXPECT_NE(converted.text.find(nsr == 3 ? "carried_by = sled" : "carried_by = pair.uppr"),
+              std::string::npos)
+        << converted.text;
+    Compilation compiled = Compile(Source::Text(converted.text, "carried.sled"));
+    ASSERT_TRUE(compiled.ok()) << compiled.Render();
+    const runtime::FluidTable& fluids = compiled.model().fluids;
+    for (std::size_t row = 0; row < fluids.size(); ++row) {
+      if (fluids.medium[row] != runtime::FluidTable::Medium::kWind) continue;
+      EXPECT_EQ(fluids.carrier[row].kind, kind) << nsr;
+      EXPECT_EQ(fluids.carrier[row].index, 0) << nsr;
+    }
+  }
 }
 
 TEST(LegacyFluids, BlockingEllipsoidsAreRefusedWithoutACascade) {

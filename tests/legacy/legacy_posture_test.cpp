@@ -111,12 +111,5 @@ TEST(LegacyPosture, ReferencesAtbStopsOnAreInvalid) {
   EXPECT_TRUE(WithOrientations(G3a(0, 10, 0, 2), G3a(0, 0, 0)).Has(":70-72: error[E0507]"));
 }
 
-TEST(LegacyPosture, AJointedSegmentsAngularVelocityIsRefused) {
-  // I3 = 1 on this deck: the card's angular velocity would be used, and how ATB combines it
-  // with the reference segment's is not in the reference.
-  const std::string spinning = fmt::format("{:10.1f}{:10.1f}{:10.1f}{:10.1f}", 0.0, 0.0, 0.0, 5.0);
-  EXPECT_TRUE(WithOrientations(G3a(0, 0, 0), spinning).Has(":31-40: error[E0507]"));
-}
-
 }  // namespace
 }  // namespace sled::lang::legacy

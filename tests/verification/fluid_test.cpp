@@ -96,6 +96,102 @@ TEST(Wind, ASphereInASideWindLagsTheAirAsTheQuadraticLawSays) {
   EXPECT_LT(run.summary.energy.relative(), 1e-8);
 }
 
+TEST(Wind, TwoWindsEachDragTheirOwnSphere) {
+  // Sphere b in 20 m/s along y (Cd 1), sphere c in 10 m/s along x (Cd 0.5, air of 1.0 kg/m^3),
+  // no gravity: each lags its own air as W / (1 + k W t / m), k = 0.5 rho Cd pi r^2, and feels
+  // nothing of the other's.
+  const double m = 0.2, r = 0.05;
+  const std::string sphere = fmt::format(
+      "segment s {{ mass = {} kg  inertia = ({}, {}, {}) kg*m^2  ellipsoid {{ semi_axes = ({}, "
+      "{}, {}) m }} }}",
+      m, 0.4 * m * r * r, 0.4 * m * r * r, 0.4 * m * r * r, r, r, r);
+  const SceneRun run = RunText(fmt::format(R"(scenario "two winds" {{
+  gravity = (0, 0, 0) m/s^2
+  time {{ end = 1 s  output_every = 1 ms }}
+  integrator dopri5 {{ tolerance = 1e-10 }}
+  body b {{ {0} }}
+  body c {{ {0} }}
+  initial c {{ position = (0, 1, 0) m }}
+  wind {{ speed = 20 m/s  direction = (0, 1, 0)  density = 1.2 kg/m^3  segments = b.s }}
+  wind {{ speed = 10 m/s  direction = x  density = 1.0 kg/m^3  drag = 0.5  segments = c.s }}
+  output {{
+    velocity b.s at (0, 0, 0) m
+    velocity c.s at (0, 0, 0) m
+  }}
+}}
+)",
+                                           sphere));
+  ASSERT_EQ(run.errors, "");
+  ASSERT_EQ(run.series.rows(), 1001u);
+  struct Air {
+    const char* along;
+    const char* across;
+    double speed, rho, cd;
+  };
+  for (const auto& [along, across, speed, rho, cd] :
+       {Air{"b.s.velocity.y [m/s]", "b.s.velocity.x [m/s]", 20.0, 1.2, 1.0},
+        Air{"c.s.velocity.x [m/s]", "c.s.velocity.y [m/s]", 10.0, 1.0, 0.5}}) {
+    const double k = 0.5 * rho * cd * kPi * r * r / m;
+    for (std::size_t row = 0; row < run.series.rows(); row += 50) {
+      const double t = TimeAt(run.series, row);
+      EXPECT_NEAR(ChannelAt(run.series, along, row), speed - speed / (1 + k * speed * t),
+                  1e-8 * speed)
+          << along << " " << t;
+      EXPECT_NEAR(ChannelAt(run.series, across, row), 0.0, 1e-12) << across << " " << t;
+    }
+  }
+}
+
+TEST(Wind, AirCarriedByAVehicleMovesWithItAndTurnsWithIt) {
+  // A car at 15 m/s along x, its air still in it (`speed = 0`): the sphere, at rest in the
+  // ground, lags the car's air as W / (1 + k W t / m) with W = 15 m/s.
+  const double m = 0.2, r = 0.05, rho = 1.2, w = 15.0;
+  const SceneRun carried = RunText(
+      Sphere(m, r, "(0, 0, 0) m/s^2",
+             fmt::format("vehicle car {{ velocity = ({}, 0, 0) m/s }}\n"
+                         "  wind {{ speed = 0 m/s  direction = x  carried_by = car  density = {} "
+                         "kg/m^3  segments = b.s }}",
+                         w, rho),
+             "(0, 0, 0)", 1.0));
+  ASSERT_EQ(carried.errors, "");
+  ASSERT_EQ(carried.series.rows(), 1001u);
+  const double k = 0.5 * rho * kPi * r * r / m;
+  for (std::size_t row = 0; row < carried.series.rows(); row += 50) {
+    const double t = TimeAt(carried.series, row);
+    EXPECT_NEAR(ChannelAt(carried.series, "b.s.velocity.x [m/s]", row), w - w / (1 + k * w * t),
+                1e-8 * w)
+        << t;
+  }
+  // A blast of 2 kPa along the x of a car yawed 90 degrees pushes along the ground's y with
+  // Cd p pi r^2: y = p pi r^2 t^2 / (2 m).
+  const double p = 2000.0;
+  const SceneRun blast = RunText(Sphere(
+      m, r, "(0, 0, 0) m/s^2",
+      fmt::format("vehicle car {{ velocity = (0, 0, 0) m/s }}\n"
+                  "  initial car {{ orientation = (90, 0, 0) deg }}\n"
+                  "  wind {{ pressure = {} Pa  direction = x  carried_by = car  segments = b.s }}",
+                  p),
+      "(0, 0, 0)", 0.2));
+  ASSERT_EQ(blast.errors, "");
+  ASSERT_EQ(blast.series.rows(), 201u);
+  for (std::size_t row = 0; row < blast.series.rows(); row += 50) {
+    const double t = TimeAt(blast.series, row);
+    EXPECT_NEAR(ChannelAt(blast.series, "b.s.position.y [m]", row),
+                p * kPi * r * r * t * t / (2 * m), 1e-9)
+        << t;
+    EXPECT_NEAR(ChannelAt(blast.series, "b.s.position.x [m]", row), 0.0, 1e-9) << t;
+  }
+}
+
+TEST(Wind, ASegmentInTwoWindsIsRefused) {
+  const SceneRun run = RunText(Sphere(0.2, 0.05, "(0, 0, 0) m/s^2",
+                                      "wind { speed = 20 m/s  direction = y  segments = b.s }\n"
+                                      "  wind { speed = 10 m/s  direction = x  segments = b.s }",
+                                      "(0, 0, 0)", 0.1));
+  EXPECT_NE(run.errors.find("E0425"), std::string::npos) << run.errors;
+  EXPECT_NE(run.errors.find("two winds"), std::string::npos) << run.errors;
+}
+
 // An upright ellipsoid (c vertical) of mass m floating in water of level 0.
 std::string Floating(double m, double z0, double drag) {
   return fmt::format(R"(scenario "float" {{
