@@ -25,10 +25,10 @@ struct EquilibriumVariable {
   std::vector<int> moved_along;  // KSGE
 };
 
-// Moves the G.2 positions and G.3.a angles of `fields.deck()` as EQUILB would, or refuses (E0507) at the G.1.a
-// I1 columns, the G.4 NCON columns or the G.5 field what the conversion cannot reproduce: G.6
-// constraints, a contact segment that hangs from a joint, and the values EQUILB rewrites besides
-// the positions (locked joints' unlock torques, fixed-point constraints).
+// Moves the G.2 positions and G.3.a angles of `fields.deck()` as EQUILB would, or refuses (E0507)
+// at the G.1.a I1 columns, the G.4 NCON columns or the G.5 field what the conversion cannot
+// reproduce: G.6 constraints, a contact segment that hangs from a joint, and the values EQUILB
+// rewrites besides the positions (locked joints' unlock torques, fixed-point constraints).
 void SolveEquilibrium(DeckFields& fields, const Card& g1, const Card& g4, int constraints,
                       const std::vector<EquilibriumVariable>& variables);
 
