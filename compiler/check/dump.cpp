@@ -206,7 +206,7 @@ std::string Dump(const CheckedScenario& s) {
     std::string pairs;
     if (o.contacts.size() > 1) {
       for (int c : o.contacts) pairs += fmt::format(" #{}", c);
-      pairs = " pairs" + pairs;
+      pairs.insert(0, " pairs");
     }
     const std::string relative =
         o.relative_to ? fmt::format(" {} {}", o.expressed_in ? "expressed_in" : "relative_to",
