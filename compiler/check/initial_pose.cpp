@@ -5,43 +5,18 @@
 
 #include <Eigen/Geometry>
 
+#include "lang/geometry/small_vectors.h"
 #include "runtime/contact/contact_geometry.h"
 
 namespace sled::compiler {
 namespace {
 
-Vec3 Apply(const Mat3& m, const Vec3& v) {
-  return {m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2],
-          m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2],
-          m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2]};
-}
-
-Vec3 ApplyTransposed(const Mat3& m, const Vec3& v) {
-  return {m[0][0] * v[0] + m[1][0] * v[1] + m[2][0] * v[2],
-          m[0][1] * v[0] + m[1][1] * v[1] + m[2][1] * v[2],
-          m[0][2] * v[0] + m[1][2] * v[1] + m[2][2] * v[2]};
-}
-
-Mat3 Multiply(const Mat3& a, const Mat3& b) {
-  Mat3 out{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) out[i][j] += a[i][k] * b[k][j];
-    }
-  }
-  return out;
-}
-
-Mat3 Transpose(const Mat3& m) {
-  Mat3 out{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) out[i][j] = m[j][i];
-  }
-  return out;
-}
-
-Vec3 Add(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 Sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+using lang::geometry::Add;
+using lang::geometry::Apply;
+using lang::geometry::ApplyTransposed;
+using lang::geometry::Multiply;
+using lang::geometry::Sub;
+using lang::geometry::Transpose;
 
 Mat3 RotationAbout(const Vec3& axis, double angle) {
   const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;

@@ -14,28 +14,12 @@
 
 #include "lang/legacy/airbag_inflow.h"
 #include "lang/legacy/restraint_readers.h"
+#include "lang/legacy/rotations.h"
 
 namespace sled::lang::legacy {
 namespace {
 
 constexpr int kMaxPanels = 4;
-
-Vec3 Rotated(const Vec3& yaw_pitch_roll_deg, const Vec3& v) {
-  constexpr double kRadians = std::numbers::pi / 180;
-  const double y = yaw_pitch_roll_deg[0] * kRadians, p = yaw_pitch_roll_deg[1] * kRadians,
-               r = yaw_pitch_roll_deg[2] * kRadians;
-  const double cy = std::cos(y), sy = std::sin(y), cp = std::cos(p), sp = std::sin(p),
-               cr = std::cos(r), sr = std::sin(r);
-  // Yaw about z, then pitch about y, then roll about x (ATB's order 3, 2, 1).
-  const double m[3][3] = {{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
-                          {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
-                          {-sp, cp * sr, cp * cr}};
-  Vec3 out{};
-  for (std::size_t i = 0; i < 3; ++i) {
-    for (std::size_t j = 0; j < 3; ++j) out[i] += m[i][j] * v[j];
-  }
-  return out;
-}
 
 class AirbagReader {
  public:
@@ -106,7 +90,9 @@ class AirbagReader {
     // C.G. offset and the point, both turned by the panel's yaw, pitch and roll.
     const Vec3 local{panel_offset[0] + deploy[0], panel_offset[1] + deploy[1],
                      panel_offset[2] + deploy[2]};
-    const Vec3 turned = panel_orientation == Vec3{} ? local : Rotated(panel_orientation, local);
+    const Vec3 turned = panel_orientation == Vec3{}
+                            ? local
+                            : geometry::Apply(YawPitchRoll(panel_orientation), local);
     airbag.deploy_point = {panel_location[0] + turned[0], panel_location[1] + turned[1],
                            panel_location[2] + turned[2]};
     cylinder.gamma = airbag.gamma;

@@ -17,20 +17,18 @@ namespace {
 constexpr int kNewtonIterations = 50;
 constexpr std::size_t kMaxVariables = 10;  // NVAR (INPUT_EQUILB)
 
-Vec3 Plus(const Vec3& a, const Vec3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3 Minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3 Times(double k, const Vec3& a) { return {k * a[0], k * a[1], k * a[2]}; }
-double Dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 Cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 Rotate(const Mat& m, const Vec3& v) { return {Dot(m[0], v), Dot(m[1], v), Dot(m[2], v)}; }
+using geometry::Add;
+using geometry::Apply;
+using geometry::Cross;
+using geometry::Dot;
+using geometry::Scale;
+using geometry::Sub;
 
 // The primary vehicle's pose at the start (the frame of every D.2 plane), identity without one.
 struct Pose {
   Vec3 position{};
   Mat rotation = Identity();
-  Vec3 ToGround(const Vec3& p) const { return Plus(position, Rotate(rotation, p)); }
+  Vec3 ToGround(const Vec3& p) const { return Add(position, Apply(rotation, p)); }
 };
 
 Pose VehiclePose(const VehicleCard& vehicle) {
@@ -372,11 +370,11 @@ class EquilibriumSolver {
         const Vec3 in_card =
             initial.position_vehicle < 0
                 ? move
-                : Rotate(Transpose(YawPitchRoll(
-                             deck_.vehicles[static_cast<std::size_t>(initial.position_vehicle)]
-                                 .orientation)),
-                         move);
-        initial.position = Plus(initial.position, in_card);
+                : Apply(Transpose(YawPitchRoll(
+                            deck_.vehicles[static_cast<std::size_t>(initial.position_vehicle)]
+                                .orientation)),
+                        move);
+        initial.position = Add(initial.position, in_card);
       }
     }
   }
@@ -405,7 +403,7 @@ class EquilibriumSolver {
   // solve assumes the whole footprint on it.
   void CheckClearOfEdges(const EquilibriumVariable& v) {
     const PlaneContactGeometry g = Geometry(v);
-    const Vec3 w = Minus(g.deepest, g.origin);
+    const Vec3 w = Sub(g.deepest, g.origin);
     const double uu = Dot(g.edge_u, g.edge_u), uv = Dot(g.edge_u, g.edge_v);
     const double vv = Dot(g.edge_v, g.edge_v);
     const double det = uu * vv - uv * uv;
@@ -427,7 +425,7 @@ class EquilibriumSolver {
   double PlaneArea(int number) const {
     const PlaneCard& plane = deck_.planes[static_cast<std::size_t>(number) - 1];
     const Vec3 normal =
-        Cross(Minus(plane.corners[1], plane.corners[0]), Minus(plane.corners[2], plane.corners[0]));
+        Cross(Sub(plane.corners[1], plane.corners[0]), Sub(plane.corners[2], plane.corners[0]));
     return std::sqrt(Dot(normal, normal));
   }
 
@@ -444,16 +442,16 @@ class EquilibriumSolver {
                          ? YawPitchRoll(deck_.initial_orientations[s].angles)
                          : Identity();
     const Mat ellipsoid = Multiply(turn, YawPitchRoll(segment.ellipsoid_orientation));
-    const Vec3 center = Plus(position, Rotate(turn, segment.center));
+    const Vec3 center = Add(position, Apply(turn, segment.center));
     const PlaneCard& plane = deck_.planes[static_cast<std::size_t>(v.plane) - 1];
     PlaneContactGeometry g;
     g.origin = vehicle_.ToGround(plane.corners[0]);
-    g.edge_u = Rotate(vehicle_.rotation, Minus(plane.corners[1], plane.corners[0]));
-    g.edge_v = Rotate(vehicle_.rotation, Minus(plane.corners[2], plane.corners[0]));
+    g.edge_u = Apply(vehicle_.rotation, Sub(plane.corners[1], plane.corners[0]));
+    g.edge_v = Apply(vehicle_.rotation, Sub(plane.corners[2], plane.corners[0]));
     const Vec3 normal = Cross(g.edge_u, g.edge_v);
-    g.normal = Times(1 / std::sqrt(Dot(normal, normal)), normal);
+    g.normal = Scale(1 / std::sqrt(Dot(normal, normal)), normal);
     // The ellipsoid's support along -n: reach sqrt(sum (a_i m_i)^2), m = R^T n.
-    const Vec3 m = Rotate(Transpose(ellipsoid), g.normal);
+    const Vec3 m = Apply(Transpose(ellipsoid), g.normal);
     Vec3 scaled{};
     double reach_squared = 0;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -461,8 +459,8 @@ class EquilibriumSolver {
       reach_squared += scaled[i] * m[i];
     }
     const double reach = std::sqrt(reach_squared);
-    g.penetration = reach - Dot(g.normal, Minus(center, g.origin));
-    g.deepest = Minus(center, Rotate(ellipsoid, Times(1 / reach, scaled)));
+    g.penetration = reach - Dot(g.normal, Sub(center, g.origin));
+    g.deepest = Sub(center, Apply(ellipsoid, Scale(1 / reach, scaled)));
     g.radius = *std::max_element(segment.semi_axes.begin(), segment.semi_axes.end());
     return g;
   }

@@ -15,26 +15,6 @@ using mapping::SinDegrees;
 
 }  // namespace
 
-Mat Identity() { return {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; }
-
-Mat Multiply(const Mat& a, const Mat& b) {
-  Mat c{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      for (int k = 0; k < 3; ++k) c[i][j] += a[i][k] * b[k][j];
-    }
-  }
-  return c;
-}
-
-Mat Transpose(const Mat& a) {
-  Mat t{};
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) t[i][j] = a[j][i];
-  }
-  return t;
-}
-
 Mat YawPitchRoll(const Vec3& ypr) {
   const double cy = CosDegrees(ypr[0]), sy = SinDegrees(ypr[0]);
   const double cp = CosDegrees(ypr[1]), sp = SinDegrees(ypr[1]);

@@ -6,15 +6,15 @@
 #include <array>
 #include <optional>
 
+#include "lang/geometry/small_vectors.h"
 #include "lang/legacy/deck.h"
 
 namespace sled::lang::legacy {
 
-using Mat = std::array<std::array<double, 3>, 3>;
-
-Mat Identity();
-Mat Multiply(const Mat& a, const Mat& b);
-Mat Transpose(const Mat& a);
+using Mat = geometry::Mat3;
+using geometry::Identity;
+using geometry::Multiply;
+using geometry::Transpose;
 
 // Rz(yaw) Ry(pitch) Rx(roll), angles in degrees: from the turned frame's axes to the frame's.
 Mat YawPitchRoll(const Vec3& ypr);
