@@ -151,13 +151,7 @@ void PhiFunctions::ComputeBySquaring(const Eigen::Ref<const Eigen::MatrixXd>& z,
   x = std::ldexp(1.0, -s) * z;
   const double x_norm = std::ldexp(norm, -s);
 
-  // Taylor degree d: the first neglected term ||X||^(d+1) / (d+1+p)! below kTruncation.
-  int degree = 0;
-  double term = 1.0;  // ||X||^(d+1) / (d+1+p)! * p!, built up
-  for (degree = 0; degree + p < 39; ++degree) {
-    term *= x_norm / static_cast<double>(degree + 1 + p);
-    if (term < kTruncation) break;
-  }
+  const int degree = PhiTaylorDegree(x_norm, p, 39 - p);
 
   // Horner for phi_p(X) = sum_{j=0..d} X^j / (j+p)!.
   auto top = corner(phi[order]);
@@ -194,6 +188,16 @@ void PhiFunctions::ComputeBySquaring(const Eigen::Ref<const Eigen::MatrixXd>& z,
     // Same-size matrices: swapping exchanges their storage, never allocates.
     for (std::size_t k = 0; k <= order; ++k) phi[k].swap(next_[k]);
   }
+}
+
+int PhiTaylorDegree(double x_norm, int p, int max_degree) {
+  int degree = 0;
+  double term = 1.0;  // x_norm^(d+1) / (d+1+p)! * p!, built up
+  for (; degree < max_degree; ++degree) {
+    term *= x_norm / static_cast<double>(degree + 1 + p);
+    if (term < kTruncation) break;
+  }
+  return degree;
 }
 
 }  // namespace sled::runtime

@@ -97,6 +97,11 @@ inline constexpr std::array<double, 41> kInverseFactorials = [] {
 }();
 }  // namespace detail
 
+// The degree d at which the Taylor series of phi_p, at a scaled norm or spectral radius x_norm,
+// is truncated: the first d whose next term, x_norm^(d+1) / (d+1+p)!, is below 1e-17 of the
+// leading 1/p!, and at most max_degree.
+int PhiTaylorDegree(double x_norm, int p, int max_degree);
+
 // 1/k! for k = 0..40. Inline: the scalar phi-functions of a dense output row call it in their
 // inner loops.
 inline double InverseFactorial(int k) {

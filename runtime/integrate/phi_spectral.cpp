@@ -19,7 +19,6 @@ constexpr double kRecurrenceNorm = 2.0 * (SpectralPhi::kMaxOrder + 2);
 // matrices): at most kSeriesTerms terms, fewer when the next is below the unit roundoff.
 constexpr double kSeriesNorm = 0.5;
 constexpr int kSeriesTerms = 22;
-constexpr double kTruncation = 1e-17;
 
 double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
   double norm = 0.0;
@@ -42,12 +41,7 @@ void ScalarPhi(T z, double norm, int p, T* out) {
   // The degree: the first neglected term |x|^(d+1) / (d+1+p)!, relative to phi_p's leading
   // 1/p!, below the unit roundoff (d = 12 at |x| = 1/2 and p = 5, fewer for smaller |x|).
   const double x_norm = std::ldexp(norm, -s);
-  int degree = 0;
-  double term = 1.0;
-  for (; degree < kSeriesTerms; ++degree) {
-    term *= x_norm / static_cast<double>(degree + 1 + p);
-    if (term < kTruncation) break;
-  }
+  const int degree = PhiTaylorDegree(x_norm, p, kSeriesTerms);
   // phi_p(x) = sum_j x^j / (j + p)! by Horner, then phi_k = x phi_{k+1} + 1/k! downwards.
   T top = InverseFactorial(degree + p);
   for (int j = degree - 1; j >= 0; --j) top = x * top + InverseFactorial(j + p);

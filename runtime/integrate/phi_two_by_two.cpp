@@ -9,10 +9,9 @@ namespace sled::runtime {
 namespace {
 
 // As phi_functions.cpp: the series at a spectral radius of at most kScaledNorm, truncated where
-// the next term falls below kTruncation; two more terms than the scalar series would take, for
-// b's factor j in (x^j)'s N part.
+// the next term falls below 1e-17 (PhiTaylorDegree); two more terms than the scalar series take,
+// for b's factor j in (x^j)'s N part.
 constexpr double kScaledNorm = 0.5;
-constexpr double kTruncation = 1e-17;
 constexpr int kMaxDegree = 30;
 
 // a I + b N.
@@ -50,13 +49,7 @@ void TwoByTwoPhi(const Eigen::Matrix2d& z, double theta, int p, Eigen::Matrix2d*
   const double scale = std::ldexp(theta, -s);
   const Element x{scale * mu, scale};  // theta Z / 2^s = scale mu I + scale N
   const double x_radius = std::ldexp(radius, -s);
-  int degree = 0;
-  double term = 1.0;
-  for (; degree < kMaxDegree; ++degree) {
-    term *= x_radius / static_cast<double>(degree + 1 + p);
-    if (term < kTruncation) break;
-  }
-  degree = std::min(degree + 2, kMaxDegree);
+  const int degree = std::min(PhiTaylorDegree(x_radius, p, kMaxDegree) + 2, kMaxDegree);
 
   Element out[PhiFunctions::kMaxOrder + 1];
   // phi_p(x) = sum_j x^j / (j + p)! by Horner, then phi_k = x phi_{k+1} + 1/k! downwards.
