@@ -52,7 +52,7 @@ double OneNorm(const Eigen::Ref<const Eigen::MatrixXd>& z) {
 }  // namespace
 
 void PhiFunctions::Reserve(Eigen::Index capacity, int p) {
-  const auto count = static_cast<std::size_t>(p + 1);
+  const auto count = static_cast<std::size_t>(p) + 1;
   if (next_.size() < count) next_.resize(count);
   for (std::size_t k = 0; k < count; ++k) {
     if (next_[k].rows() != capacity) next_[k].resize(capacity, capacity);
